@@ -1,0 +1,28 @@
+/* mhplan: SVG drawings of worlds and paths. */
+#ifndef MHPLAN_SVG_H
+#define MHPLAN_SVG_H
+
+#include "World.h"
+
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief A path to draw. */
+    struct SvgPath
+    {
+        std::vector<Vec2> points;
+        std::string label;
+        std::string color{"#d62728"};
+    };
+
+    /** \brief An SVG document of the world (bounds, obstacles, the query's start and goal) and paths, y up. */
+    std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
+                         double pixelsPerMetre = 0.0);
+
+    /** \brief Write text to a file; throws InputError naming the file on failure. */
+    void writeTextFile(const std::string &path, const std::string &text);
+}  // namespace mhplan
+
+#endif

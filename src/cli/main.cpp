@@ -1,0 +1,2 @@
+#include "Commands.h"
+int main() { return 0; }
