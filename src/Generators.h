@@ -21,10 +21,13 @@ namespace mhplan
         int height{32};             ///< grid and maze: cells down
         double cellSize{1.0};       ///< grid and maze: metres per cell
         double density{0.25};       ///< grid: share of blocked cells
-        /** \brief Start and goal: default bottom-left and top-right corners (centre of the corner cell for
-            grids; a margin of maxSize... for geometric worlds the corners inset by the robot radius). */
-        bool cornerQuery{true};
     };
+
+    /** \brief Every generated world has one query "default" from the bottom-left to the top-right corner:
+        the centres of the corner cells for grids, the corners inset by max(robot radius, 2% of the size)
+        for geometric worlds. Random numbers come from a 64-bit Mersenne twister with the given seed and a
+        portable uniform mapping, so a seed gives the same world on every platform. Throws InputError for
+        impossible options (sizes, counts, density out of range). */
 
     /** \brief Random circles, not covering the corner start and goal. */
     World generateCircles(const GeneratorOptions &opt);
@@ -36,6 +39,10 @@ namespace mhplan
     /** \brief A random occupancy grid of the given density whose start and goal corners are connected
         (8-connected, MovingAI rule); resampled (deterministically) until they are. */
     World generateGrid(const GeneratorOptions &opt);
+
+    /** \brief True when the two cells are connected 8-wise under the MovingAI rule (a diagonal move needs both
+        side cells free). */
+    bool gridCellsConnected(const OccupancyGrid &grid, int sx, int sy, int gx, int gy);
 }  // namespace mhplan
 
 #endif

@@ -1,17 +1,27 @@
-/* mhplan CLI: one function per subcommand. */
+/* mhplan CLI: one function per subcommand, dispatched from main.cpp's command table. */
 #ifndef MHPLAN_CLI_COMMANDS_H
 #define MHPLAN_CLI_COMMANDS_H
+
+#include "World.h"
 
 #include <string>
 #include <vector>
 
 namespace mhplan::cli
 {
-    using Args = std::vector<std::string>;
-    int cmdPlan(const Args &args);
-    int cmdGenerate(const Args &args);
-    int cmdWorlds(const Args &args);
-    int cmdPlanners(const Args &args);
+    using Argv = std::vector<std::string>;
+
+    int cmdPlan(const Argv &argv);
+    int cmdGenerate(const Argv &argv);
+    int cmdWorlds(const Argv &argv);
+    int cmdPlanners(const Argv &argv);
+
+    /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */
+    std::string environmentsDir();
+    /** \brief A world argument: an existing file path, or the name of a shipped world (environments/NAME.yaml). */
+    std::string resolveWorldPath(const std::string &arg);
+    /** \brief Every shipped world file (sorted). */
+    std::vector<std::string> shippedWorldFiles();
 }  // namespace mhplan::cli
 
 #endif

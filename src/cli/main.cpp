@@ -1,2 +1,85 @@
+/* mhplan: the command-line program. One table of subcommands; each lives in its own function. */
 #include "Commands.h"
-int main() { return 0; }
+#include "Version.h"
+#include "World.h"
+
+#include <ompl/util/Console.h>
+
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <map>
+
+namespace
+{
+    struct Command
+    {
+        std::function<int(const mhplan::cli::Argv &)> run;
+        const char *usage;
+    };
+
+    const std::map<std::string, Command> &commands()
+    {
+        using namespace mhplan::cli;
+        static const std::map<std::string, Command> table = {
+            {"plan",
+             {cmdPlan, "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
+                       "        [--set key=value]... [--backend auto|analytic|fcl|grid] [--svg FILE]"}},
+            {"generate",
+             {cmdGenerate, "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
+                           "        [--bounds xmin,xmax,ymin,ymax] [--radius R] [--width W] [--height H]\n"
+                           "        [--cell-size S] [--density D] [--name NAME] [--output FILE.yaml|FILE.map]"}},
+            {"worlds", {cmdWorlds, "worlds [WORLD...]   (shipped worlds, or describe and validate the given files)"}},
+            {"planners", {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
+        };
+        return table;
+    }
+
+    void usage(std::ostream &out)
+    {
+        out << "mhplan " << mhplan::version() << " (OMPL " << mhplan::omplVersion()
+            << "): metaheuristic path planners in OMPL\n\nusage:\n";
+        for (const auto &kv : commands())
+            out << "  mhplan " << kv.second.usage << "\n";
+        out << "  mhplan version\n";
+    }
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "help") == 0)
+    {
+        usage(argc < 2 ? std::cerr : std::cout);
+        return argc < 2 ? 1 : 0;
+    }
+    const std::string name = argv[1];
+    if (name == "version" || name == "--version")
+    {
+        std::cout << "mhplan " << mhplan::version() << " (OMPL " << mhplan::omplVersion() << ")\n";
+        return 0;
+    }
+    const auto it = commands().find(name);
+    if (it == commands().end())
+    {
+        std::cerr << "mhplan: unknown command '" << name << "'\n";
+        usage(std::cerr);
+        return 1;
+    }
+    // OMPL's informational chatter goes to stderr-level only when asked.
+    ompl::msg::setLogLevel(std::getenv("MHPLAN_VERBOSE") ? ompl::msg::LOG_DEBUG : ompl::msg::LOG_WARN);
+    try
+    {
+        return it->second.run(mhplan::cli::Argv(argv + 2, argv + argc));
+    }
+    catch (const mhplan::InputError &e)
+    {
+        std::cerr << "mhplan " << name << ": error: " << e.what() << "\n";
+        return 1;
+    }
+    catch (const std::exception &e)
+    {
+        std::cerr << "mhplan " << name << ": internal error: " << e.what() << "\n";
+        return 2;
+    }
+}

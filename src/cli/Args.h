@@ -1,0 +1,53 @@
+/* mhplan CLI: a small argument parser that refuses what it does not know. */
+#ifndef MHPLAN_CLI_ARGS_H
+#define MHPLAN_CLI_ARGS_H
+
+#include "World.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mhplan::cli
+{
+    /** \brief Parsed command line of one subcommand: positionals, single-valued options, repeatable options
+        and flags. Unknown options, missing values and repeated single options raise InputError naming the
+        option and listing the accepted ones. */
+    class Args
+    {
+    public:
+        struct Spec
+        {
+            std::set<std::string> valued;      ///< --name VALUE (at most once)
+            std::set<std::string> repeatable;  ///< --name VALUE (any number of times)
+            std::set<std::string> flags;       ///< --name
+        };
+
+        Args(const std::string &command, const std::vector<std::string> &argv, const Spec &spec);
+
+        const std::vector<std::string> &positional() const { return positional_; }
+        bool has(const std::string &name) const { return values_.count(name) != 0 || flags_.count(name) != 0; }
+        std::string get(const std::string &name, const std::string &fallback = "") const;
+        const std::vector<std::string> &all(const std::string &name) const;
+
+        double number(const std::string &name, double fallback) const;
+        long long integer(const std::string &name, long long fallback) const;
+        /** \brief "x,y" */
+        Vec2 point(const std::string &name) const;
+
+        const std::string &command() const { return command_; }
+
+    private:
+        std::string command_;
+        std::vector<std::string> positional_;
+        std::map<std::string, std::string> values_;
+        std::map<std::string, std::vector<std::string>> repeated_;
+        std::set<std::string> flags_;
+    };
+
+    /** \brief Parse a list of numbers "a,b,c" for option \e name; throws InputError naming the option. */
+    std::vector<double> parseNumberList(const std::string &name, const std::string &text);
+}  // namespace mhplan::cli
+
+#endif
