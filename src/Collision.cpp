@@ -9,7 +9,7 @@
 namespace mhplan
 {
     CollisionModel::CollisionModel(const World &world)
-      : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)), radius_(world.robotRadius)
+        : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)), radius_(world.robotRadius)
     {
     }
 
@@ -19,7 +19,7 @@ namespace mhplan
     }
 
     AnalyticCollisionModel::AnalyticCollisionModel(const World &world)
-      : CollisionModel(world), circles_(world.circles), polygons_(world.polygons)
+        : CollisionModel(world), circles_(world.circles), polygons_(world.polygons)
     {
         if (world.isGrid())
             throw InputError("the analytic collision model handles geometric worlds only; '" + world.name +
@@ -48,8 +48,8 @@ namespace mhplan
         }
         for (const auto &poly : polygons_)
         {
-            if (p.x < poly.bbox.xmin - radius_ || p.x > poly.bbox.xmax + radius_ || p.y < poly.bbox.ymin - radius_ ||
-                p.y > poly.bbox.ymax + radius_)
+            if (p.x < poly.bbox.xmin - radius_ || p.x > poly.bbox.xmax + radius_ ||
+                p.y < poly.bbox.ymin - radius_ || p.y > poly.bbox.ymax + radius_)
                 continue;
             if (pointPolygonSignedDistance(p, poly.vertices) < radius_)
                 return false;
@@ -123,14 +123,14 @@ namespace mhplan
     {
         switch (backend)
         {
-            case CollisionBackend::Auto:
-                return "auto";
-            case CollisionBackend::Analytic:
-                return "analytic";
-            case CollisionBackend::FCL:
-                return "fcl";
-            case CollisionBackend::Grid:
-                return "grid";
+        case CollisionBackend::Auto:
+            return "auto";
+        case CollisionBackend::Analytic:
+            return "analytic";
+        case CollisionBackend::FCL:
+            return "fcl";
+        case CollisionBackend::Grid:
+            return "grid";
         }
         return "auto";
     }
@@ -147,15 +147,15 @@ namespace mhplan
         }
         switch (backend)
         {
-            case CollisionBackend::Analytic:
-                return std::make_shared<AnalyticCollisionModel>(world);
-            case CollisionBackend::FCL:
-                return std::make_shared<FclCollisionModel>(world);
-            case CollisionBackend::Grid:
-                return std::make_shared<GridCollisionModel>(world);
-            case CollisionBackend::Auto:
-                break;
+        case CollisionBackend::Analytic:
+            return std::make_shared<AnalyticCollisionModel>(world);
+        case CollisionBackend::FCL:
+            return std::make_shared<FclCollisionModel>(world);
+        case CollisionBackend::Grid:
+            return std::make_shared<GridCollisionModel>(world);
+        case CollisionBackend::Auto:
+            break;
         }
         throw InputError("no collision back end for world '" + world.name + "'");
     }
-}  // namespace mhplan
+} // namespace mhplan

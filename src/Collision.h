@@ -25,7 +25,7 @@ namespace mhplan
         Implementations are immutable after construction and safe to query from several threads. */
     class CollisionModel
     {
-    public:
+      public:
         explicit CollisionModel(const World &world);
         virtual ~CollisionModel() = default;
 
@@ -47,7 +47,7 @@ namespace mhplan
         double robotRadius() const { return radius_; }
         const Box &bounds() const { return bounds_; }
 
-    protected:
+      protected:
         Box bounds_;
         /** \brief Bounds shrunk by the robot radius: the admissible positions of the disc's centre. */
         Box inner_;
@@ -60,7 +60,7 @@ namespace mhplan
         worlds with few obstacles. */
     class AnalyticCollisionModel : public CollisionModel
     {
-    public:
+      public:
         explicit AnalyticCollisionModel(const World &world);
         double clearance(const Vec2 &p) const override;
         bool isValid(const Vec2 &p) const override;
@@ -68,7 +68,7 @@ namespace mhplan
         double segmentClearance(const Vec2 &a, const Vec2 &b) const override;
         std::string name() const override { return "analytic"; }
 
-    private:
+      private:
         std::vector<Circle> circles_;
         std::vector<Polygon> polygons_;
     };
@@ -91,7 +91,8 @@ namespace mhplan
 
     /** \brief Build the collision model of a world; throws InputError if the back end does not fit the
         world type. */
-    CollisionModelPtr makeCollisionModel(const World &world, CollisionBackend backend = CollisionBackend::Auto);
-}  // namespace mhplan
+    CollisionModelPtr makeCollisionModel(const World &world,
+                                         CollisionBackend backend = CollisionBackend::Auto);
+} // namespace mhplan
 
 #endif

@@ -14,7 +14,7 @@ namespace mhplan
         analytic model), so both models agree to rounding. */
     class FclCollisionModel : public CollisionModel
     {
-    public:
+      public:
         explicit FclCollisionModel(const World &world);
         ~FclCollisionModel() override;
 
@@ -24,10 +24,10 @@ namespace mhplan
         double segmentClearance(const Vec2 &a, const Vec2 &b) const override;
         std::string name() const override { return "fcl"; }
 
-    private:
+      private:
         struct Impl;
         std::unique_ptr<Impl> impl_;
     };
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

@@ -14,13 +14,16 @@ namespace mhplan
         /** Portable uniform numbers (std distributions differ between standard libraries). */
         class PortableRandom
         {
-        public:
+          public:
             explicit PortableRandom(std::uint64_t seed) : engine_(seed) {}
             double uniform01() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
             double uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
-            std::size_t index(std::size_t n) { return static_cast<std::size_t>(uniform01() * static_cast<double>(n)); }
+            std::size_t index(std::size_t n)
+            {
+                return static_cast<std::size_t>(uniform01() * static_cast<double>(n));
+            }
 
-        private:
+          private:
             std::mt19937_64 engine_;
         };
 
@@ -29,10 +32,11 @@ namespace mhplan
             if (!(o.bounds.xmin < o.bounds.xmax) || !(o.bounds.ymin < o.bounds.ymax))
                 throw InputError("generate: bounds need xmin < xmax and ymin < ymax");
             if (o.robotRadius < 0.0)
-                throw InputError("generate: --radius must be >= 0 (got " + std::to_string(o.robotRadius) + ")");
+                throw InputError("generate: --radius must be >= 0 (got " + std::to_string(o.robotRadius) +
+                                 ")");
             if (geometric && (!(o.minSize > 0.0) || o.maxSize < o.minSize))
-                throw InputError("generate: sizes need 0 < --min-size <= --max-size (got " + std::to_string(o.minSize) +
-                                 ", " + std::to_string(o.maxSize) + ")");
+                throw InputError("generate: sizes need 0 < --min-size <= --max-size (got " +
+                                 std::to_string(o.minSize) + ", " + std::to_string(o.maxSize) + ")");
             if (!geometric && (o.width < 2 || o.height < 2 || o.width > 100000 || o.height > 100000))
                 throw InputError("generate: --width and --height must be in [2, 100000]");
             if (!geometric && !(o.cellSize > 0.0))
@@ -43,7 +47,9 @@ namespace mhplan
         {
             const double ix = std::max(o.robotRadius, 0.02 * o.bounds.width());
             const double iy = std::max(o.robotRadius, 0.02 * o.bounds.height());
-            return {"default", {o.bounds.xmin + ix, o.bounds.ymin + iy}, {o.bounds.xmax - ix, o.bounds.ymax - iy}};
+            return {"default",
+                    {o.bounds.xmin + ix, o.bounds.ymin + iy},
+                    {o.bounds.xmax - ix, o.bounds.ymax - iy}};
         }
 
         std::string describe(const char *kind, const GeneratorOptions &o)
@@ -61,14 +67,15 @@ namespace mhplan
             while (placed < count)
             {
                 if (++attempts > maxAttempts)
-                    throw InputError(std::string("generate ") + what + ": could only place " + std::to_string(placed) +
-                                     " of " + std::to_string(count) +
-                                     " obstacles without covering the start or goal; use fewer or smaller ones");
+                    throw InputError(
+                        std::string("generate ") + what + ": could only place " + std::to_string(placed) +
+                        " of " + std::to_string(count) +
+                        " obstacles without covering the start or goal; use fewer or smaller ones");
                 if (accept())
                     ++placed;
             }
         }
-    }  // namespace
+    } // namespace
 
     World generateCircles(const GeneratorOptions &o)
     {
@@ -81,19 +88,21 @@ namespace mhplan
         w.robotRadius = o.robotRadius;
         const Query q = cornerQuery(o);
         std::size_t placed = 0;
-        placeWithRetries(o.count, placed,
-                         [&] {
-                             Circle c;
-                             c.radius = rng.uniform(o.minSize, o.maxSize);
-                             c.center = {rng.uniform(o.bounds.xmin, o.bounds.xmax),
-                                         rng.uniform(o.bounds.ymin, o.bounds.ymax)};
-                             const double keep = c.radius + o.robotRadius;
-                             if (distance(c.center, q.start) <= keep || distance(c.center, q.goal) <= keep)
-                                 return false;
-                             w.circles.push_back(c);
-                             return true;
-                         },
-                         "circles");
+        placeWithRetries(
+            o.count, placed,
+            [&]
+            {
+                Circle c;
+                c.radius = rng.uniform(o.minSize, o.maxSize);
+                c.center = {rng.uniform(o.bounds.xmin, o.bounds.xmax),
+                            rng.uniform(o.bounds.ymin, o.bounds.ymax)};
+                const double keep = c.radius + o.robotRadius;
+                if (distance(c.center, q.start) <= keep || distance(c.center, q.goal) <= keep)
+                    return false;
+                w.circles.push_back(c);
+                return true;
+            },
+            "circles");
         w.queries.push_back(q);
         return w;
     }
@@ -109,21 +118,23 @@ namespace mhplan
         w.robotRadius = o.robotRadius;
         const Query q = cornerQuery(o);
         std::size_t placed = 0;
-        placeWithRetries(o.count, placed,
-                         [&] {
-                             const Vec2 c{rng.uniform(o.bounds.xmin, o.bounds.xmax),
-                                          rng.uniform(o.bounds.ymin, o.bounds.ymax)};
-                             const double width = rng.uniform(o.minSize, o.maxSize);
-                             const double height = rng.uniform(o.minSize, o.maxSize);
-                             const double angle = rng.uniform(0.0, kPi);
-                             Polygon p = makePolygon(rectangleCorners(c, width, height, angle), "rectangle");
-                             if (pointPolygonSignedDistance(q.start, p.vertices) <= o.robotRadius ||
-                                 pointPolygonSignedDistance(q.goal, p.vertices) <= o.robotRadius)
-                                 return false;
-                             w.polygons.push_back(std::move(p));
-                             return true;
-                         },
-                         "rectangles");
+        placeWithRetries(
+            o.count, placed,
+            [&]
+            {
+                const Vec2 c{rng.uniform(o.bounds.xmin, o.bounds.xmax),
+                             rng.uniform(o.bounds.ymin, o.bounds.ymax)};
+                const double width = rng.uniform(o.minSize, o.maxSize);
+                const double height = rng.uniform(o.minSize, o.maxSize);
+                const double angle = rng.uniform(0.0, kPi);
+                Polygon p = makePolygon(rectangleCorners(c, width, height, angle), "rectangle");
+                if (pointPolygonSignedDistance(q.start, p.vertices) <= o.robotRadius ||
+                    pointPolygonSignedDistance(q.goal, p.vertices) <= o.robotRadius)
+                    return false;
+                w.polygons.push_back(std::move(p));
+                return true;
+            },
+            "rectangles");
         w.queries.push_back(q);
         return w;
     }
@@ -155,7 +166,8 @@ namespace mhplan
             {
                 const int nx = cx + dx[d];
                 const int ny = cy + dy[d];
-                if (nx >= 0 && ny >= 0 && nx < mw && ny < mh && !visited[static_cast<std::size_t>(ny) * mw + nx])
+                if (nx >= 0 && ny >= 0 && nx < mw && ny < mh &&
+                    !visited[static_cast<std::size_t>(ny) * mw + nx])
                     options[n++] = d;
             }
             if (n == 0)
@@ -220,11 +232,13 @@ namespace mhplan
     {
         checkCommon(o, false);
         if (!(o.density >= 0.0 && o.density < 1.0))
-            throw InputError("generate grid: --density must be in [0, 1) (got " + std::to_string(o.density) + ")");
+            throw InputError("generate grid: --density must be in [0, 1) (got " + std::to_string(o.density) +
+                             ")");
         for (std::uint64_t attempt = 0; attempt < 1000; ++attempt)
         {
             PortableRandom rng(o.seed + attempt * 0x9E3779B97F4A7C15ULL);
-            auto grid = std::make_shared<OccupancyGrid>(o.width, o.height, o.cellSize, Vec2{o.bounds.xmin, o.bounds.ymin});
+            auto grid = std::make_shared<OccupancyGrid>(o.width, o.height, o.cellSize,
+                                                        Vec2{o.bounds.xmin, o.bounds.ymin});
             for (int iy = 0; iy < o.height; ++iy)
                 for (int ix = 0; ix < o.width; ++ix)
                     grid->setBlocked(ix, iy, rng.uniform01() < o.density);
@@ -233,7 +247,8 @@ namespace mhplan
             if (!gridCellsConnected(*grid, 0, 0, o.width - 1, o.height - 1))
                 continue;
             World w;
-            w.name = "grid_" + std::to_string(o.width) + "x" + std::to_string(o.height) + "_seed" + std::to_string(o.seed);
+            w.name = "grid_" + std::to_string(o.width) + "x" + std::to_string(o.height) + "_seed" +
+                     std::to_string(o.seed);
             std::ostringstream src;
             src << describe("grid", o) << " --density " << o.density;
             if (attempt > 0)
@@ -241,10 +256,12 @@ namespace mhplan
             w.source = src.str();
             w.robotRadius = o.robotRadius;
             w.bounds = grid->bounds();
-            w.queries.push_back({"default", grid->cellCenter(0, 0), grid->cellCenter(o.width - 1, o.height - 1)});
+            w.queries.push_back(
+                {"default", grid->cellCenter(0, 0), grid->cellCenter(o.width - 1, o.height - 1)});
             w.grid = std::move(grid);
             return w;
         }
-        throw InputError("generate grid: no connected map in 1000 attempts at density " + std::to_string(o.density));
+        throw InputError("generate grid: no connected map in 1000 attempts at density " +
+                         std::to_string(o.density));
     }
-}  // namespace mhplan
+} // namespace mhplan

@@ -14,13 +14,13 @@ namespace mhplan
         std::uint64_t seed{1};
         Box bounds{0.0, 10.0, 0.0, 10.0};
         double robotRadius{0.0};
-        std::size_t count{20};      ///< circles, rectangles
-        double minSize{0.2};        ///< circle radius or rectangle side, minimum
-        double maxSize{1.0};        ///< maximum
-        int width{32};              ///< grid and maze: cells across
-        int height{32};             ///< grid and maze: cells down
-        double cellSize{1.0};       ///< grid and maze: metres per cell
-        double density{0.25};       ///< grid: share of blocked cells
+        std::size_t count{20}; ///< circles, rectangles
+        double minSize{0.2};   ///< circle radius or rectangle side, minimum
+        double maxSize{1.0};   ///< maximum
+        int width{32};         ///< grid and maze: cells across
+        int height{32};        ///< grid and maze: cells down
+        double cellSize{1.0};  ///< grid and maze: metres per cell
+        double density{0.25};  ///< grid: share of blocked cells
     };
 
     /** \brief Every generated world has one query "default" from the bottom-left to the top-right corner:
@@ -40,9 +40,9 @@ namespace mhplan
         (8-connected, MovingAI rule); resampled (deterministically) until they are. */
     World generateGrid(const GeneratorOptions &opt);
 
-    /** \brief True when the two cells are connected 8-wise under the MovingAI rule (a diagonal move needs both
-        side cells free). */
+    /** \brief True when the two cells are connected 8-wise under the MovingAI rule (a diagonal move needs
+       both side cells free). */
     bool gridCellsConnected(const OccupancyGrid &grid, int sx, int sy, int gx, int gy);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

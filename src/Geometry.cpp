@@ -34,7 +34,7 @@ namespace mhplan
             return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
                    p.y <= std::max(a.y, b.y);
         }
-    }  // namespace
+    } // namespace
 
     bool segmentsIntersect(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
     {
@@ -211,7 +211,7 @@ namespace mhplan
             out.emplace_back(center.x + c * l.x - s * l.y, center.y + s * l.x + c * l.y);
         return out;
     }
-}  // namespace mhplan
+} // namespace mhplan
 
 namespace mhplan
 {
@@ -251,15 +251,14 @@ namespace mhplan
             std::sort(ts.begin(), ts.end());
             return ts;
         }
-    }  // namespace
+    } // namespace
 
     bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly)
     {
         const std::vector<double> ts = boundaryCrossings(a, b, poly);
         const Vec2 d = b - a;
-        auto strictlyInside = [&](const Vec2 &p) {
-            return pointInPolygon(p, poly) && pointPolygonBoundaryDistance(p, poly) > 0.0;
-        };
+        auto strictlyInside = [&](const Vec2 &p)
+        { return pointInPolygon(p, poly) && pointPolygonBoundaryDistance(p, poly) > 0.0; };
         if (strictlyInside(a) || strictlyInside(b))
             return true;
         for (std::size_t i = 0; i + 1 < ts.size(); ++i)
@@ -307,4 +306,4 @@ namespace mhplan
             best = std::min(best, pointPolygonSignedDistance(a + d * t, poly));
         return best;
     }
-}  // namespace mhplan
+} // namespace mhplan

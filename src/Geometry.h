@@ -24,18 +24,36 @@ namespace mhplan
         bool operator!=(const Vec2 &o) const { return !(*this == o); }
     };
 
-    inline double dot(const Vec2 &a, const Vec2 &b) { return a.x * b.x + a.y * b.y; }
+    inline double dot(const Vec2 &a, const Vec2 &b)
+    {
+        return a.x * b.x + a.y * b.y;
+    }
     /** \brief z-component of the 3D cross product (positive when b is counter-clockwise of a). */
-    inline double cross(const Vec2 &a, const Vec2 &b) { return a.x * b.y - a.y * b.x; }
-    inline double norm(const Vec2 &a) { return std::hypot(a.x, a.y); }
-    inline double squaredNorm(const Vec2 &a) { return a.x * a.x + a.y * a.y; }
-    inline double distance(const Vec2 &a, const Vec2 &b) { return norm(a - b); }
+    inline double cross(const Vec2 &a, const Vec2 &b)
+    {
+        return a.x * b.y - a.y * b.x;
+    }
+    inline double norm(const Vec2 &a)
+    {
+        return std::hypot(a.x, a.y);
+    }
+    inline double squaredNorm(const Vec2 &a)
+    {
+        return a.x * a.x + a.y * a.y;
+    }
+    inline double distance(const Vec2 &a, const Vec2 &b)
+    {
+        return norm(a - b);
+    }
 
     /** \brief Axis-aligned box [xmin, xmax] x [ymin, ymax]. */
     struct Box
     {
         double xmin{0.0}, xmax{0.0}, ymin{0.0}, ymax{0.0};
-        bool contains(const Vec2 &p) const { return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax; }
+        bool contains(const Vec2 &p) const
+        {
+            return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax;
+        }
         bool overlaps(const Box &o) const
         {
             return xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax;
@@ -102,6 +120,6 @@ namespace mhplan
 
     /** \brief Corners of a rectangle of the given centre, size and rotation (radians), counter-clockwise. */
     std::vector<Vec2> rectangleCorners(const Vec2 &center, double width, double height, double angle);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

@@ -13,7 +13,7 @@ namespace mhplan
         an obstacle point: nothing passes through it (so paths cannot squeeze between diagonal walls). */
     class GridCollisionModel : public CollisionModel
     {
-    public:
+      public:
         explicit GridCollisionModel(const World &world);
 
         double clearance(const Vec2 &p) const override;
@@ -24,11 +24,11 @@ namespace mhplan
 
         const OccupancyGrid &grid() const { return *grid_; }
 
-    private:
+      private:
         std::shared_ptr<const OccupancyGrid> grid_;
         /** \brief Distance (in metres) from each cell centre to the nearest blocked cell centre. */
         std::vector<float> edt_;
     };
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

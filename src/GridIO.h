@@ -27,6 +27,6 @@ namespace mhplan
 
     /** \brief A world from a bare grid file (no queries): bounds from the grid, point robot. */
     World gridWorld(const std::string &name, std::shared_ptr<const OccupancyGrid> grid);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

@@ -18,8 +18,8 @@ namespace mhplan
                            const char *field)
         {
             std::ostringstream where;
-            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name << "' field '"
-                  << field << "' (" << p.x << ", " << p.y << ")";
+            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                  << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
             if (!model.inBounds(p))
                 throw InputError(where.str() + " is out of bounds: the robot disc (radius " +
                                  std::to_string(world.robotRadius) + ") must lie inside the world's bounds");
@@ -27,7 +27,7 @@ namespace mhplan
                 throw InputError(where.str() + " is in collision (clearance " +
                                  std::to_string(model.clearance(p)) + ")");
         }
-    }  // namespace
+    } // namespace
 
     void validateQuery(const World &world, const Query &query, const CollisionModel &model)
     {
@@ -82,4 +82,4 @@ namespace mhplan
             out.push_back(statePosition(path.getState(i)));
         return out;
     }
-}  // namespace mhplan
+} // namespace mhplan

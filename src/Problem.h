@@ -25,6 +25,6 @@ namespace mhplan
 
     /** \brief The waypoints of a geometric path. */
     std::vector<Vec2> pathPoints(const ompl::geometric::PathGeometric &path);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

@@ -32,10 +32,10 @@ namespace mhplan
 {
     namespace
     {
-        template <typename P>
-        PlannerAllocator omplAllocator()
+        template <typename P> PlannerAllocator omplAllocator()
         {
-            return [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr { return std::make_shared<P>(si); };
+            return [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+            { return std::make_shared<P>(si); };
         }
 
         bool parseDouble(const std::string &s, double &out)
@@ -57,40 +57,49 @@ namespace mhplan
                 out.push_back(item);
             return out;
         }
-    }  // namespace
+    } // namespace
 
     void registerBuiltinPlanners(PlannerRegistry &r)
     {
         // OMPL's geometric planners that make sense in 2D.
         r.add({"RRT", "ompl", "Rapidly-exploring random tree (LaValle 1998)", omplAllocator<og::RRT>()});
-        r.add({"RRTConnect", "ompl", "Bidirectional RRT (Kuffner & LaValle 2000)", omplAllocator<og::RRTConnect>()});
+        r.add({"RRTConnect", "ompl", "Bidirectional RRT (Kuffner & LaValle 2000)",
+               omplAllocator<og::RRTConnect>()});
         r.add({"RRTstar", "ompl", "Asymptotically optimal RRT* (Karaman & Frazzoli 2011)",
                omplAllocator<og::RRTstar>()});
         r.add({"InformedRRTstar", "ompl", "Informed RRT* (Gammell et al. 2014)",
                omplAllocator<og::InformedRRTstar>()});
-        r.add({"SORRTstar", "ompl", "Sorted informed RRT* (Gammell et al. 2018)", omplAllocator<og::SORRTstar>()});
+        r.add({"SORRTstar", "ompl", "Sorted informed RRT* (Gammell et al. 2018)",
+               omplAllocator<og::SORRTstar>()});
         r.add({"PRM", "ompl", "Probabilistic roadmap (Kavraki et al. 1996)", omplAllocator<og::PRM>()});
         r.add({"PRMstar", "ompl", "Asymptotically optimal PRM* (Karaman & Frazzoli 2011)",
                omplAllocator<og::PRMstar>()});
         r.add({"LazyPRMstar", "ompl", "Lazy PRM* (Bohlin & Kavraki 2000)", omplAllocator<og::LazyPRMstar>()});
-        r.add({"BITstar", "ompl", "Batch informed trees (Gammell et al. 2015)", omplAllocator<og::BITstar>()});
+        // OMPL reserves the name "BITstar" for the r-disc variant and renames its default k-nearest one.
+        r.add({"BITstar", "ompl", "Batch informed trees, k-nearest (Gammell et al. 2015)",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               { return std::make_shared<og::BITstar>(si, "kBITstar"); }});
         r.add({"ABITstar", "ompl", "Advanced BIT* (Strub & Gammell 2020)", omplAllocator<og::ABITstar>()});
-        r.add({"AITstar", "ompl", "Adaptively informed trees (Strub & Gammell 2020)", omplAllocator<og::AITstar>()});
+        r.add({"AITstar", "ompl", "Adaptively informed trees (Strub & Gammell 2020)",
+               omplAllocator<og::AITstar>()});
         r.add({"FMTstar", "ompl", "Fast marching tree (Janson et al. 2015)", omplAllocator<og::FMT>()});
         r.add({"BFMTstar", "ompl", "Bidirectional FMT* (Starek et al. 2015)", omplAllocator<og::BFMT>()});
-        r.add({"KPIECE1", "ompl", "Kinodynamic planning by interior-exterior cell exploration (Sucan & Kavraki)",
+        r.add({"KPIECE1", "ompl",
+               "Kinodynamic planning by interior-exterior cell exploration (Sucan & Kavraki)",
                omplAllocator<og::KPIECE1>()});
         r.add({"EST", "ompl", "Expansive space trees (Hsu et al. 1997)", omplAllocator<og::EST>()});
         r.add({"SBL", "ompl", "Single-query bidirectional lazy planner (Sanchez & Latombe 2003)",
                omplAllocator<og::SBL>()});
-        r.add({"STRIDE", "ompl", "Search tree with resolution independent density estimation (Gipson et al. 2013)",
+        r.add({"STRIDE", "ompl",
+               "Search tree with resolution independent density estimation (Gipson et al. 2013)",
                omplAllocator<og::STRIDE>()});
         // mhplan's planners: one line each (see ompl_planners/).
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()
     {
-        static const PlannerRegistry registry = [] {
+        static const PlannerRegistry registry = []
+        {
             PlannerRegistry r;
             registerBuiltinPlanners(r);
             return r;
@@ -145,7 +154,7 @@ namespace mhplan
             double lo = 0.0, hi = 0.0, v = 0.0;
             if ((parts.size() != 2 && parts.size() != 3) || !parseDouble(parts.front(), lo) ||
                 !parseDouble(parts.back(), hi))
-                return "";  // not a numeric range: nothing to enforce
+                return ""; // not a numeric range: nothing to enforce
             if (!parseDouble(value, v))
                 return "a number in [" + parts.front() + ", " + parts.back() + "]";
             if (v < lo || v > hi)
@@ -170,7 +179,8 @@ namespace mhplan
             if (!ps.hasParam(kv.first))
             {
                 std::ostringstream msg;
-                msg << "planner '" << planner.getName() << "' has no parameter '" << kv.first << "'; its parameters:";
+                msg << "planner '" << planner.getName() << "' has no parameter '" << kv.first
+                    << "'; its parameters:";
                 std::vector<std::string> names;
                 ps.getParamNames(names);
                 if (names.empty())
@@ -194,11 +204,13 @@ namespace mhplan
             }
             catch (const std::invalid_argument &e)
             {
-                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': " + e.what());
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
+                                 "': " + e.what());
             }
             if (!ok)
-                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': cannot set value '" +
-                                 kv.second + "'" + (range.empty() ? "" : " (expected " + range + ")"));
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
+                                 "': cannot set value '" + kv.second + "'" +
+                                 (range.empty() ? "" : " (expected " + range + ")"));
         }
     }
 
@@ -209,4 +221,4 @@ namespace mhplan
             throw InputError("expected key=value, got '" + item + "'");
         out[item.substr(0, eq)] = item.substr(eq + 1);
     }
-}  // namespace mhplan
+} // namespace mhplan

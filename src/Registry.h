@@ -27,7 +27,7 @@ namespace mhplan
         planner is one line in Registry.cpp (registerBuiltinPlanners). */
     class PlannerRegistry
     {
-    public:
+      public:
         /** \brief The registry of all built-in planners (built on first use, then read-only). */
         static const PlannerRegistry &builtin();
 
@@ -42,7 +42,7 @@ namespace mhplan
         ompl::base::PlannerPtr create(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                       const std::map<std::string, std::string> &params = {}) const;
 
-    private:
+      private:
         std::map<std::string, PlannerEntry> entries_;
     };
 
@@ -52,7 +52,8 @@ namespace mhplan
     /** \brief Set parameters on a planner, refusing (InputError) an unknown name (the message lists the
         planner's parameters), a value that does not parse, or a value outside the declared range suggestion
         ("lo:step:hi", "lo:hi" or a comma-separated list). */
-    void applyPlannerParameters(ompl::base::Planner &planner, const std::map<std::string, std::string> &params);
+    void applyPlannerParameters(ompl::base::Planner &planner,
+                                const std::map<std::string, std::string> &params);
 
     /** \brief Check \e value against an OMPL range suggestion; returns an empty string when it fits, else a
         description of what is accepted. */
@@ -60,6 +61,6 @@ namespace mhplan
 
     /** \brief Parse "key=value" into the map; throws InputError on a malformed item. */
     void parseKeyValue(const std::string &item, std::map<std::string, std::string> &out);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

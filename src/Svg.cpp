@@ -16,25 +16,25 @@ namespace mhplan
             {
                 switch (c)
                 {
-                    case '<':
-                        out += "&lt;";
-                        break;
-                    case '>':
-                        out += "&gt;";
-                        break;
-                    case '&':
-                        out += "&amp;";
-                        break;
-                    case '"':
-                        out += "&quot;";
-                        break;
-                    default:
-                        out += c;
+                case '<':
+                    out += "&lt;";
+                    break;
+                case '>':
+                    out += "&gt;";
+                    break;
+                case '&':
+                    out += "&amp;";
+                    break;
+                case '"':
+                    out += "&quot;";
+                    break;
+                default:
+                    out += c;
                 }
             }
             return out;
         }
-    }  // namespace
+    } // namespace
 
     std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
                          double pixelsPerMetre)
@@ -51,12 +51,13 @@ namespace mhplan
 
         std::ostringstream s;
         s << std::fixed << std::setprecision(2);
-        s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" viewBox=\"0 0 "
-          << w << " " << h << "\">\n";
+        s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h
+          << "\" viewBox=\"0 0 " << w << " " << h << "\">\n";
         s << "<title>" << escape(world.name) << "</title>\n";
         s << "<rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\" fill=\"white\"/>\n";
-        s << "<rect x=\"" << X(b.xmin) << "\" y=\"" << Y(b.ymax) << "\" width=\"" << b.width() * pixelsPerMetre
-          << "\" height=\"" << b.height() * pixelsPerMetre << "\" fill=\"#fafafa\" stroke=\"black\"/>\n";
+        s << "<rect x=\"" << X(b.xmin) << "\" y=\"" << Y(b.ymax) << "\" width=\""
+          << b.width() * pixelsPerMetre << "\" height=\"" << b.height() * pixelsPerMetre
+          << "\" fill=\"#fafafa\" stroke=\"black\"/>\n";
         if (world.isGrid())
         {
             const OccupancyGrid &g = *world.grid;
@@ -77,8 +78,8 @@ namespace mhplan
                     while (end < g.width() && g.blocked(end, iy))
                         ++end;
                     const Box cb = g.cellBox(ix, iy);
-                    s << "<rect x=\"" << X(cb.xmin) << "\" y=\"" << Y(cb.ymax) << "\" width=\"" << cs * (end - ix)
-                      << "\" height=\"" << cs << "\"/>\n";
+                    s << "<rect x=\"" << X(cb.xmin) << "\" y=\"" << Y(cb.ymax) << "\" width=\""
+                      << cs * (end - ix) << "\" height=\"" << cs << "\"/>\n";
                     ix = end;
                 }
             }
@@ -110,10 +111,10 @@ namespace mhplan
                       << world.robotRadius * pixelsPerMetre << "\" fill=\"none\" stroke=\"" << escape(p.color)
                       << "\" stroke-opacity=\"0.3\"/>\n";
             const double ly = b.height() * pixelsPerMetre + 2 * margin + 14.0 + 18.0 * static_cast<double>(i);
-            s << "<line x1=\"" << margin << "\" y1=\"" << ly - 4 << "\" x2=\"" << margin + 24 << "\" y2=\"" << ly - 4
-              << "\" stroke=\"" << escape(p.color) << "\" stroke-width=\"3\"/>\n";
-            s << "<text x=\"" << margin + 30 << "\" y=\"" << ly << "\" font-family=\"sans-serif\" font-size=\"13\">"
-              << escape(p.label) << "</text>\n";
+            s << "<line x1=\"" << margin << "\" y1=\"" << ly - 4 << "\" x2=\"" << margin + 24 << "\" y2=\""
+              << ly - 4 << "\" stroke=\"" << escape(p.color) << "\" stroke-width=\"3\"/>\n";
+            s << "<text x=\"" << margin + 30 << "\" y=\"" << ly
+              << "\" font-family=\"sans-serif\" font-size=\"13\">" << escape(p.label) << "</text>\n";
         }
         if (query != nullptr)
         {
@@ -135,4 +136,4 @@ namespace mhplan
         if (!out)
             throw InputError(path + ": write failed");
     }
-}  // namespace mhplan
+} // namespace mhplan

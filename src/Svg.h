@@ -17,12 +17,13 @@ namespace mhplan
         std::string color{"#d62728"};
     };
 
-    /** \brief An SVG document of the world (bounds, obstacles, the query's start and goal) and paths, y up. */
+    /** \brief An SVG document of the world (bounds, obstacles, the query's start and goal) and paths, y up.
+     */
     std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
                          double pixelsPerMetre = 0.0);
 
     /** \brief Write text to a file; throws InputError naming the file on failure. */
     void writeTextFile(const std::string &path, const std::string &text);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

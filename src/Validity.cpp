@@ -20,7 +20,7 @@ namespace mhplan
     }
 
     WorldValidityChecker::WorldValidityChecker(const ob::SpaceInformationPtr &si, CollisionModelPtr model)
-      : ob::StateValidityChecker(si), model_(std::move(model))
+        : ob::StateValidityChecker(si), model_(std::move(model))
     {
         specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::EXACT;
         specs_.hasValidDirectionComputation = false;
@@ -44,7 +44,7 @@ namespace mhplan
     }
 
     ExactMotionValidator::ExactMotionValidator(const ob::SpaceInformationPtr &si, CollisionModelPtr model)
-      : ob::MotionValidator(si), model_(std::move(model))
+        : ob::MotionValidator(si), model_(std::move(model))
     {
     }
 
@@ -88,4 +88,4 @@ namespace mhplan
         lastValid.second = lo;
         return false;
     }
-}  // namespace mhplan
+} // namespace mhplan

@@ -19,7 +19,7 @@ namespace mhplan
         included, bounds excluded; see CollisionModel). */
     class WorldValidityChecker : public ompl::base::StateValidityChecker
     {
-    public:
+      public:
         WorldValidityChecker(const ompl::base::SpaceInformationPtr &si, CollisionModelPtr model);
 
         bool isValid(const ompl::base::State *state) const override;
@@ -28,7 +28,7 @@ namespace mhplan
 
         const CollisionModelPtr &model() const { return model_; }
 
-    private:
+      private:
         CollisionModelPtr model_;
     };
 
@@ -37,16 +37,16 @@ namespace mhplan
         contact by bisection to 1e-9 of the segment's length. */
     class ExactMotionValidator : public ompl::base::MotionValidator
     {
-    public:
+      public:
         ExactMotionValidator(const ompl::base::SpaceInformationPtr &si, CollisionModelPtr model);
 
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2) const override;
         bool checkMotion(const ompl::base::State *s1, const ompl::base::State *s2,
                          std::pair<ompl::base::State *, double> &lastValid) const override;
 
-    private:
+      private:
         CollisionModelPtr model_;
     };
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

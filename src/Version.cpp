@@ -22,4 +22,4 @@ namespace mhplan
         return std::to_string(OMPL_MAJOR_VERSION) + "." + std::to_string(OMPL_MINOR_VERSION) + "." +
                std::to_string(OMPL_PATCH_VERSION);
     }
-}  // namespace mhplan
+} // namespace mhplan

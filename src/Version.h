@@ -10,6 +10,6 @@ namespace mhplan
     std::string version();
     /** \brief The OMPL version mhplan was built against, e.g. "1.5.2" (never empty). */
     std::string omplVersion();
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

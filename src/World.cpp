@@ -6,11 +6,11 @@
 namespace mhplan
 {
     OccupancyGrid::OccupancyGrid(int width, int height, double cellSize, Vec2 origin)
-      : width_(width), height_(height), cellSize_(cellSize), origin_(origin)
+        : width_(width), height_(height), cellSize_(cellSize), origin_(origin)
     {
         if (width <= 0 || height <= 0)
-            throw InputError("occupancy grid: width and height must be positive (got " + std::to_string(width) +
-                             " x " + std::to_string(height) + ")");
+            throw InputError("occupancy grid: width and height must be positive (got " +
+                             std::to_string(width) + " x " + std::to_string(height) + ")");
         if (!(cellSize > 0.0))
             throw InputError("occupancy grid: cell_size must be > 0 (got " + std::to_string(cellSize) + ")");
         cells_.assign(static_cast<std::size_t>(width) * height, 0);
@@ -73,4 +73,4 @@ namespace mhplan
         p.bbox = boundingBox(p.vertices);
         return p;
     }
-}  // namespace mhplan
+} // namespace mhplan

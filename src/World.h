@@ -16,7 +16,7 @@ namespace mhplan
         line and field where they are known. */
     class InputError : public std::runtime_error
     {
-    public:
+      public:
         using std::runtime_error::runtime_error;
     };
 
@@ -43,7 +43,7 @@ namespace mhplan
         A blocked cell is a closed square obstacle. */
     class OccupancyGrid
     {
-    public:
+      public:
         OccupancyGrid() = default;
         OccupancyGrid(int width, int height, double cellSize, Vec2 origin = {0.0, 0.0});
 
@@ -58,7 +58,10 @@ namespace mhplan
         {
             return !inside(ix, iy) || cells_[static_cast<std::size_t>(iy) * width_ + ix] != 0;
         }
-        void setBlocked(int ix, int iy, bool b) { cells_[static_cast<std::size_t>(iy) * width_ + ix] = b ? 1 : 0; }
+        void setBlocked(int ix, int iy, bool b)
+        {
+            cells_[static_cast<std::size_t>(iy) * width_ + ix] = b ? 1 : 0;
+        }
         std::size_t blockedCount() const;
 
         /** \brief Index of the cell containing \e p (may be outside the grid). */
@@ -73,12 +76,15 @@ namespace mhplan
             return {origin_.x + ix * cellSize_, origin_.x + (ix + 1) * cellSize_, origin_.y + iy * cellSize_,
                     origin_.y + (iy + 1) * cellSize_};
         }
-        Box bounds() const { return {origin_.x, origin_.x + width_ * cellSize_, origin_.y, origin_.y + height_ * cellSize_}; }
+        Box bounds() const
+        {
+            return {origin_.x, origin_.x + width_ * cellSize_, origin_.y, origin_.y + height_ * cellSize_};
+        }
 
         /** \brief Convert a MovingAI (column, row) pair (row 0 = top line of the file) to grid indices. */
         int rowToIy(int row) const { return height_ - 1 - row; }
 
-    private:
+      private:
         int width_{0};
         int height_{0};
         double cellSize_{1.0};
@@ -96,8 +102,8 @@ namespace mhplan
 
     /** \brief A 2D world: bounds, a disc robot, obstacles (geometric or an occupancy grid) and queries.
         Validity (see Collision.h): a robot position is valid when the disc lies inside the bounds and does
-        not overlap the interior of any obstacle (touching is allowed; obstacles are closed sets, free space is
-        closed). */
+        not overlap the interior of any obstacle (touching is allowed; obstacles are closed sets, free space
+       is closed). */
     struct World
     {
         std::string name;
@@ -129,6 +135,6 @@ namespace mhplan
 
     /** \brief Build a Polygon (orientation normalised to counter-clockwise, convexity and bbox computed). */
     Polygon makePolygon(std::vector<Vec2> vertices, const std::string &kind = "polygon");
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

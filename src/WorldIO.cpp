@@ -39,10 +39,11 @@ namespace mhplan
         /** Reads one YAML document, producing errors of the form "file:line: field 'a.b': problem". */
         class Reader
         {
-        public:
+          public:
             explicit Reader(std::string file) : file_(std::move(file)) {}
 
-            [[noreturn]] void fail(const YAML::Node &node, const std::string &field, const std::string &what) const
+            [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
+                                   const std::string &what) const
             {
                 std::ostringstream msg;
                 msg << file_;
@@ -52,7 +53,8 @@ namespace mhplan
                 throw InputError(msg.str());
             }
 
-            void allowKeys(const YAML::Node &map, const std::string &field, const std::set<std::string> &keys) const
+            void allowKeys(const YAML::Node &map, const std::string &field,
+                           const std::set<std::string> &keys) const
             {
                 if (!map.IsMap())
                     fail(map, field, "expected a mapping");
@@ -124,7 +126,7 @@ namespace mhplan
 
             const std::string &file() const { return file_; }
 
-        private:
+          private:
             std::string file_;
         };
 
@@ -189,7 +191,8 @@ namespace mhplan
                     const Vec2 size = r.point(r.require(n, "size", field), field + ".size");
                     if (!(size.x > 0.0) || !(size.y > 0.0))
                         r.fail(n["size"], field + ".size", "width and height must be > 0");
-                    const double angle = n["angle"].IsDefined() ? r.number(n["angle"], field + ".angle") : 0.0;
+                    const double angle =
+                        n["angle"].IsDefined() ? r.number(n["angle"], field + ".angle") : 0.0;
                     corners = rectangleCorners(c, size.x, size.y, angle * kPi / 180.0);
                 }
                 world.polygons.push_back(makePolygon(std::move(corners), "rectangle"));
@@ -209,7 +212,8 @@ namespace mhplan
                 world.polygons.push_back(makePolygon(std::move(v), "polygon"));
             }
             else
-                r.fail(item, base, "unknown obstacle type '" + kind + "'; accepted: circle, rectangle, polygon");
+                r.fail(item, base,
+                       "unknown obstacle type '" + kind + "'; accepted: circle, rectangle, polygon");
         }
 
         std::shared_ptr<const OccupancyGrid> readGrid(const Reader &r, const YAML::Node &n)
@@ -218,7 +222,8 @@ namespace mhplan
             const double cell = n["cell_size"].IsDefined() ? r.number(n["cell_size"], "grid.cell_size") : 1.0;
             if (!(cell > 0.0))
                 r.fail(n["cell_size"], "grid.cell_size", "must be > 0");
-            const Vec2 origin = n["origin"].IsDefined() ? r.point(n["origin"], "grid.origin") : Vec2{0.0, 0.0};
+            const Vec2 origin =
+                n["origin"].IsDefined() ? r.point(n["origin"], "grid.origin") : Vec2{0.0, 0.0};
             const bool hasFile = n["file"].IsDefined();
             const bool hasRows = n["rows"].IsDefined();
             if (hasFile == hasRows)
@@ -293,8 +298,9 @@ namespace mhplan
                 const std::string field = "queries[" + std::to_string(i) + "]";
                 r.allowKeys(n[i], field, {"name", "start", "goal"});
                 Query q;
-                q.name = n[i]["name"].IsDefined() ? r.text(n[i]["name"], field + ".name")
-                                                  : (i == 0 ? std::string("default") : "q" + std::to_string(i));
+                q.name = n[i]["name"].IsDefined()
+                             ? r.text(n[i]["name"], field + ".name")
+                             : (i == 0 ? std::string("default") : "q" + std::to_string(i));
                 if (!names.insert(q.name).second)
                     r.fail(n[i], field + ".name", "duplicate query name '" + q.name + "'");
                 q.start = r.point(r.require(n[i], "start", field), field + ".start");
@@ -303,7 +309,7 @@ namespace mhplan
                 nodes.push_back(n[i]);
             }
         }
-    }  // namespace
+    } // namespace
 
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
     {
@@ -315,14 +321,17 @@ namespace mhplan
         catch (const YAML::ParserException &e)
         {
             std::ostringstream msg;
-            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": malformed YAML: " << e.msg;
+            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                << ": malformed YAML: " << e.msg;
             throw InputError(msg.str());
         }
         const Reader r(fileName);
         if (!root.IsMap())
-            throw InputError(fileName + ":1: a world file must be a YAML mapping (see environments/README.md)");
-        r.allowKeys(root, "", {"name", "description", "source", "assumptions", "bounds", "robot", "obstacles",
-                               "grid", "queries"});
+            throw InputError(fileName +
+                             ":1: a world file must be a YAML mapping (see environments/README.md)");
+        r.allowKeys(root, "",
+                    {"name", "description", "source", "assumptions", "bounds", "robot", "obstacles", "grid",
+                     "queries"});
 
         World world;
         world.file = fileName;
@@ -388,7 +397,8 @@ namespace mhplan
                 {
                     std::ostringstream c;
                     c << std::setprecision(6) << model->clearance(p);
-                    r.fail(queryNodes[i][key], field, at.str() + " is in collision (clearance " + c.str() + ")");
+                    r.fail(queryNodes[i][key], field,
+                           at.str() + " is in collision (clearance " + c.str() + ")");
                 }
             }
         }
@@ -401,7 +411,8 @@ namespace mhplan
         if (!in)
             throw InputError(path + ": cannot open world file");
         const std::string ext = extensionOf(path);
-        std::string stem = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+        std::string stem =
+            path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
         stem = stem.substr(0, stem.find_last_of('.'));
         if (ext == "map")
         {
@@ -416,7 +427,8 @@ namespace mhplan
             return w;
         }
         if (ext != "yaml" && ext != "yml")
-            throw InputError(path + ": unknown world file type '." + ext + "'; accepted: .yaml, .yml, .map, .pgm");
+            throw InputError(path + ": unknown world file type '." + ext +
+                             "'; accepted: .yaml, .yml, .map, .pgm");
         std::stringstream buffer;
         buffer << in.rdbuf();
         return parseWorldYaml(buffer.str(), path);
@@ -440,7 +452,7 @@ namespace mhplan
             }
             return out + "\"";
         }
-    }  // namespace
+    } // namespace
 
     std::string worldToYaml(const World &world)
     {
@@ -478,8 +490,8 @@ namespace mhplan
             if (world.circles.empty() && world.polygons.empty())
                 out << "  []\n";
             for (const auto &c : world.circles)
-                out << "  - circle: {center: [" << c.center.x << ", " << c.center.y << "], radius: " << c.radius
-                    << "}\n";
+                out << "  - circle: {center: [" << c.center.x << ", " << c.center.y
+                    << "], radius: " << c.radius << "}\n";
             for (const auto &p : world.polygons)
             {
                 out << "  - polygon: {points: [";
@@ -504,4 +516,4 @@ namespace mhplan
         for (const auto &q : world.queries)
             validateQuery(world, q, *model);
     }
-}  // namespace mhplan
+} // namespace mhplan

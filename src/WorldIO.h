@@ -23,6 +23,6 @@ namespace mhplan
 
     /** \brief Validate a world's queries against its own collision model (throws InputError). */
     void validateWorldQueries(const World &world);
-}  // namespace mhplan
+} // namespace mhplan
 
 #endif

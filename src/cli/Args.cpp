@@ -18,9 +18,10 @@ namespace mhplan::cli
                 out += (out.empty() ? "--" : ", --") + a;
             return out.empty() ? "(no options)" : out;
         }
-    }  // namespace
+    } // namespace
 
-    Args::Args(const std::string &command, const std::vector<std::string> &argv, const Spec &spec) : command_(command)
+    Args::Args(const std::string &command, const std::vector<std::string> &argv, const Spec &spec)
+        : command_(command)
     {
         for (std::size_t i = 0; i < argv.size(); ++i)
         {
@@ -28,7 +29,8 @@ namespace mhplan::cli
             if (a.size() < 3 || a.compare(0, 2, "--") != 0)
             {
                 if (a.size() > 1 && a[0] == '-' && !(a[1] >= '0' && a[1] <= '9') && a[1] != '.')
-                    throw InputError("mhplan " + command + ": unknown option '" + a + "'; accepted: " + accepted(spec));
+                    throw InputError("mhplan " + command + ": unknown option '" + a +
+                                     "'; accepted: " + accepted(spec));
                 positional_.push_back(a);
                 continue;
             }
@@ -52,7 +54,8 @@ namespace mhplan::cli
             const bool single = spec.valued.count(name) != 0;
             const bool multi = spec.repeatable.count(name) != 0;
             if (!single && !multi)
-                throw InputError("mhplan " + command + ": unknown option '--" + name + "'; accepted: " + accepted(spec));
+                throw InputError("mhplan " + command + ": unknown option '--" + name +
+                                 "'; accepted: " + accepted(spec));
             if (!inlineValue)
             {
                 if (i + 1 >= argv.size())
@@ -92,7 +95,8 @@ namespace mhplan::cli
         errno = 0;
         const double v = std::strtod(it->second.c_str(), &end);
         if (it->second.empty() || errno != 0 || end != it->second.c_str() + it->second.size())
-            throw InputError("mhplan " + command_ + ": option --" + name + " expects a number, got '" + it->second + "'");
+            throw InputError("mhplan " + command_ + ": option --" + name + " expects a number, got '" +
+                             it->second + "'");
         return v;
     }
 
@@ -105,8 +109,8 @@ namespace mhplan::cli
         errno = 0;
         const long long v = std::strtoll(it->second.c_str(), &end, 10);
         if (it->second.empty() || errno != 0 || end != it->second.c_str() + it->second.size())
-            throw InputError("mhplan " + command_ + ": option --" + name + " expects an integer, got '" + it->second +
-                             "'");
+            throw InputError("mhplan " + command_ + ": option --" + name + " expects an integer, got '" +
+                             it->second + "'");
         return v;
     }
 
@@ -114,7 +118,8 @@ namespace mhplan::cli
     {
         const std::vector<double> v = parseNumberList("--" + name, get(name));
         if (v.size() != 2)
-            throw InputError("mhplan " + command_ + ": option --" + name + " expects X,Y, got '" + get(name) + "'");
+            throw InputError("mhplan " + command_ + ": option --" + name + " expects X,Y, got '" + get(name) +
+                             "'");
         return {v[0], v[1]};
     }
 
@@ -134,4 +139,4 @@ namespace mhplan::cli
         }
         return out;
     }
-}  // namespace mhplan::cli
+} // namespace mhplan::cli

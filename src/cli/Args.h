@@ -16,18 +16,21 @@ namespace mhplan::cli
         option and listing the accepted ones. */
     class Args
     {
-    public:
+      public:
         struct Spec
         {
-            std::set<std::string> valued;      ///< --name VALUE (at most once)
-            std::set<std::string> repeatable;  ///< --name VALUE (any number of times)
-            std::set<std::string> flags;       ///< --name
+            std::set<std::string> valued;     ///< --name VALUE (at most once)
+            std::set<std::string> repeatable; ///< --name VALUE (any number of times)
+            std::set<std::string> flags;      ///< --name
         };
 
         Args(const std::string &command, const std::vector<std::string> &argv, const Spec &spec);
 
         const std::vector<std::string> &positional() const { return positional_; }
-        bool has(const std::string &name) const { return values_.count(name) != 0 || flags_.count(name) != 0; }
+        bool has(const std::string &name) const
+        {
+            return values_.count(name) != 0 || flags_.count(name) != 0;
+        }
         std::string get(const std::string &name, const std::string &fallback = "") const;
         const std::vector<std::string> &all(const std::string &name) const;
 
@@ -38,7 +41,7 @@ namespace mhplan::cli
 
         const std::string &command() const { return command_; }
 
-    private:
+      private:
         std::string command_;
         std::vector<std::string> positional_;
         std::map<std::string, std::string> values_;
@@ -48,6 +51,6 @@ namespace mhplan::cli
 
     /** \brief Parse a list of numbers "a,b,c" for option \e name; throws InputError naming the option. */
     std::vector<double> parseNumberList(const std::string &name, const std::string &text);
-}  // namespace mhplan::cli
+} // namespace mhplan::cli
 
 #endif

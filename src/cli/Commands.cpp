@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -67,7 +68,8 @@ namespace mhplan::cli
         World loadWorldArg(const Args &args)
         {
             if (args.positional().size() != 1)
-                throw InputError("mhplan " + args.command() + ": expected exactly one WORLD argument (a file or a shipped "
+                throw InputError("mhplan " + args.command() +
+                                 ": expected exactly one WORLD argument (a file or a shipped "
                                  "world name; see 'mhplan worlds')");
             return loadWorld(resolveWorldPath(args.positional()[0]));
         }
@@ -95,12 +97,13 @@ namespace mhplan::cli
                 ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
             return ompl::RNG::getSeed();
         }
-    }  // namespace
+    } // namespace
 
     int cmdPlan(const Argv &argv)
     {
-        const Args args("plan", argv,
-                        {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg"}, {"set"}, {}});
+        const Args args(
+            "plan", argv,
+            {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg"}, {"set"}, {}});
         // The seed must be fixed before any OMPL random number generator exists.
         const std::uint_fast32_t seed = seedFromArgs(args);
         const World world = loadWorldArg(args);
@@ -113,9 +116,11 @@ namespace mhplan::cli
         for (const auto &kv : args.all("set"))
             parseKeyValue(kv, params);
 
-        const CollisionModelPtr model = makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
+        const CollisionModelPtr model =
+            makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
         og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
-        ob::PlannerPtr planner = PlannerRegistry::builtin().create(plannerName, ss->getSpaceInformation(), params);
+        ob::PlannerPtr planner =
+            PlannerRegistry::builtin().create(plannerName, ss->getSpaceInformation(), params);
         ss->setPlanner(planner);
         ss->setup();
 
@@ -149,8 +154,9 @@ namespace mhplan::cli
             std::cout << "  " << p.x << " " << p.y << "\n";
         if (args.has("svg"))
         {
-            writeTextFile(args.get("svg"),
-                          worldSvg(world, &query, {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}));
+            writeTextFile(
+                args.get("svg"),
+                worldSvg(world, &query, {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}));
             std::cout << "svg:       " << args.get("svg") << "\n";
         }
         return status == ob::PlannerStatus::EXACT_SOLUTION && collisionFree ? 0 : 3;
@@ -159,8 +165,8 @@ namespace mhplan::cli
     int cmdGenerate(const Argv &argv)
     {
         const Args args("generate", argv,
-                        {{"seed", "count", "min-size", "max-size", "bounds", "radius", "width", "height", "cell-size",
-                          "density", "name", "output"},
+                        {{"seed", "count", "min-size", "max-size", "bounds", "radius", "width", "height",
+                          "cell-size", "density", "name", "output"},
                          {},
                          {}});
         if (args.positional().size() != 1)
@@ -173,7 +179,8 @@ namespace mhplan::cli
         o.seed = static_cast<std::uint64_t>(seed);
         const long long count = args.integer("count", static_cast<long long>(o.count));
         if (count < 0 || count > 10000000)
-            throw InputError("mhplan generate: --count must be in [0, 10000000] (got " + args.get("count") + ")");
+            throw InputError("mhplan generate: --count must be in [0, 10000000] (got " + args.get("count") +
+                             ")");
         o.count = static_cast<std::size_t>(count);
         o.minSize = args.number("min-size", o.minSize);
         o.maxSize = args.number("max-size", o.maxSize);
@@ -199,7 +206,8 @@ namespace mhplan::cli
         else if (kind == "grid")
             world = generateGrid(o);
         else
-            throw InputError("mhplan generate: unknown kind '" + kind + "'; accepted: circles, rectangles, maze, grid");
+            throw InputError("mhplan generate: unknown kind '" + kind +
+                             "'; accepted: circles, rectangles, maze, grid");
         if (args.has("name"))
             world.name = args.get("name");
         const std::string out = args.get("output");
@@ -226,8 +234,9 @@ namespace mhplan::cli
         else
             for (auto &f : files)
                 f = resolveWorldPath(f);
-        std::cout << std::left << std::setw(22) << "name" << std::setw(9) << "type" << std::setw(11) << "obstacles"
-                  << std::setw(8) << "radius" << std::setw(16) << "bounds" << "queries / source\n";
+        std::cout << std::left << std::setw(22) << "name" << std::setw(9) << "type" << std::setw(11)
+                  << "obstacles" << std::setw(8) << "radius" << std::setw(16) << "bounds"
+                  << "queries / source\n";
         for (const auto &f : files)
         {
             const World w = loadWorld(f);
@@ -238,7 +247,8 @@ namespace mhplan::cli
                 queries += (queries.empty() ? "" : ",") + q.name;
             std::cout << std::left << std::setw(22) << w.name << std::setw(9) << w.type() << std::setw(11)
                       << w.obstacleCount() << std::setw(8) << w.robotRadius << std::setw(16) << bounds.str()
-                      << (queries.empty() ? "-" : queries) << " / " << (w.source.empty() ? f : w.source) << "\n";
+                      << (queries.empty() ? "-" : queries) << " / " << (w.source.empty() ? f : w.source)
+                      << "\n";
         }
         return 0;
     }
@@ -267,4 +277,112 @@ namespace mhplan::cli
         }
         return 0;
     }
-}  // namespace mhplan::cli
+} // namespace mhplan::cli
+
+namespace mhplan::cli
+{
+    namespace
+    {
+        std::vector<std::string> splitList(const std::string &text)
+        {
+            std::vector<std::string> out;
+            std::stringstream ss(text);
+            std::string item;
+            while (std::getline(ss, item, ','))
+                if (!item.empty())
+                    out.push_back(item);
+            return out;
+        }
+
+        /** The default comparison set: OMPL's optimizing baselines plus every mhplan planner registered. */
+        std::vector<std::string> defaultComparePlanners()
+        {
+            std::vector<std::string> out = {"RRTstar", "InformedRRTstar", "PRMstar", "BITstar"};
+            const PlannerRegistry &reg = PlannerRegistry::builtin();
+            for (const auto &name : reg.names())
+                if (reg.get(name).origin == "mhplan")
+                    out.push_back(name);
+            return out;
+        }
+    } // namespace
+
+    int cmdCompare(const Argv &argv)
+    {
+        const Args args("compare", argv, {{"planners", "time", "runs", "seed"}, {}, {}});
+        const std::uint_fast32_t seed = seedFromArgs(args);
+        const double timeLimit = args.number("time", 1.0);
+        if (!(timeLimit > 0.0))
+            throw InputError("mhplan compare: --time must be > 0 seconds");
+        const long long runs = args.integer("runs", 1);
+        if (runs < 1 || runs > 1000)
+            throw InputError("mhplan compare: --runs must be in [1, 1000] (got " + args.get("runs") + ")");
+        std::vector<std::string> planners =
+            args.has("planners") ? splitList(args.get("planners")) : defaultComparePlanners();
+        for (const auto &p : planners)
+            PlannerRegistry::builtin().get(p); // refuse unknown names before any work
+        std::vector<std::string> files;
+        for (const auto &w : args.positional())
+            files.push_back(resolveWorldPath(w));
+        if (files.empty())
+            files = shippedWorldFiles();
+
+        std::cout << "seed " << seed << ", time limit " << timeLimit << " s, " << runs
+                  << " run(s) per pair\n\n";
+        std::cout << std::left << std::setw(18) << "world" << std::setw(17) << "planner" << std::right
+                  << std::setw(7) << "exact" << std::setw(12) << "best len" << std::setw(12) << "median len"
+                  << std::setw(11) << "time [s]"
+                  << "\n";
+        for (const auto &file : files)
+        {
+            const World world = loadWorld(file);
+            const Query &query = world.queryOrDefault("");
+            const CollisionModelPtr model = makeCollisionModel(world);
+            for (const auto &name : planners)
+            {
+                std::vector<double> lengths;
+                double totalTime = 0.0;
+                int exact = 0;
+                for (long long r = 0; r < runs; ++r)
+                {
+                    og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+                    ss->setPlanner(PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+                    const ompl::time::point t0 = ompl::time::now();
+                    const ob::PlannerStatus status = ss->solve(timeLimit);
+                    totalTime += ompl::time::seconds(ompl::time::now() - t0);
+                    if (status != ob::PlannerStatus::EXACT_SOLUTION || !ss->haveExactSolutionPath())
+                        continue;
+                    const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
+                    bool ok = true;
+                    for (std::size_t i = 1; i < pts.size() && ok; ++i)
+                        ok = model->segmentValid(pts[i - 1], pts[i]);
+                    if (!ok)
+                        continue;
+                    ++exact;
+                    lengths.push_back(polylineLength(pts));
+                }
+                std::sort(lengths.begin(), lengths.end());
+                std::ostringstream best, median;
+                best << std::fixed << std::setprecision(4);
+                median << std::fixed << std::setprecision(4);
+                if (lengths.empty())
+                {
+                    best << "-";
+                    median << "-";
+                }
+                else
+                {
+                    best << lengths.front();
+                    const std::size_t n = lengths.size();
+                    median << (n % 2 ? lengths[n / 2] : 0.5 * (lengths[n / 2 - 1] + lengths[n / 2]));
+                }
+                std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name << std::right
+                          << std::setw(4) << exact << "/" << std::left << std::setw(2) << runs << std::right
+                          << std::setw(12) << best.str() << std::setw(12) << median.str() << std::setw(11)
+                          << std::fixed << std::setprecision(3) << totalTime / static_cast<double>(runs)
+                          << "\n"
+                          << std::defaultfloat;
+            }
+        }
+        return 0;
+    }
+} // namespace mhplan::cli

@@ -15,13 +15,15 @@ namespace mhplan::cli
     int cmdGenerate(const Argv &argv);
     int cmdWorlds(const Argv &argv);
     int cmdPlanners(const Argv &argv);
+    int cmdCompare(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */
     std::string environmentsDir();
-    /** \brief A world argument: an existing file path, or the name of a shipped world (environments/NAME.yaml). */
+    /** \brief A world argument: an existing file path, or the name of a shipped world
+     * (environments/NAME.yaml). */
     std::string resolveWorldPath(const std::string &arg);
     /** \brief Every shipped world file (sorted). */
     std::vector<std::string> shippedWorldFiles();
-}  // namespace mhplan::cli
+} // namespace mhplan::cli
 
 #endif

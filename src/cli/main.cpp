@@ -24,14 +24,22 @@ namespace
         using namespace mhplan::cli;
         static const std::map<std::string, Command> table = {
             {"plan",
-             {cmdPlan, "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
-                       "        [--set key=value]... [--backend auto|analytic|fcl|grid] [--svg FILE]"}},
+             {cmdPlan,
+              "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
+              "        [--set key=value]... [--backend auto|analytic|fcl|grid] [--svg FILE]"}},
             {"generate",
-             {cmdGenerate, "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
-                           "        [--bounds xmin,xmax,ymin,ymax] [--radius R] [--width W] [--height H]\n"
-                           "        [--cell-size S] [--density D] [--name NAME] [--output FILE.yaml|FILE.map]"}},
-            {"worlds", {cmdWorlds, "worlds [WORLD...]   (shipped worlds, or describe and validate the given files)"}},
-            {"planners", {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
+             {cmdGenerate,
+              "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
+              "        [--bounds xmin,xmax,ymin,ymax] [--radius R] [--width W] [--height H]\n"
+              "        [--cell-size S] [--density D] [--name NAME] [--output FILE.yaml|FILE.map]"}},
+            {"worlds",
+             {cmdWorlds, "worlds [WORLD...]   (shipped worlds, or describe and validate the given files)"}},
+            {"compare",
+             {cmdCompare,
+              "compare [WORLD...] [--planners A,B,...] [--time S] [--runs N] [--seed N]\n"
+              "        (plan every shipped world, or the given ones, with each planner; print a table)"}},
+            {"planners",
+             {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };
         return table;
     }
@@ -44,7 +52,7 @@ namespace
             out << "  mhplan " << kv.second.usage << "\n";
         out << "  mhplan version\n";
     }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Install the Debian packages mhplan needs (only those missing), then configure and build out of source.
+# Idempotent and quiet when everything is present. Usage: scripts/setup.sh [BUILD_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR="${1:-${MHPLAN_BUILD_DIR:-build}}"
+
+PACKAGES=(
+  g++ cmake make
+  libompl-dev libfcl-dev libeigen3-dev libyaml-cpp-dev
+  libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
+  libgtest-dev libbenchmark-dev
+  ompl-demos sqlite3
+  python3-matplotlib python3-numpy
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "installed" ] || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing missing Debian packages: ${missing[*]}"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null 2>&1 || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+    SUDO="sudo"
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq >/dev/null
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+JOBS=$(nproc 2>/dev/null || echo 2)
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+# Show compiler diagnostics (the build is warning-free), not the progress lines.
+if ! cmake --build "$BUILD_DIR" -j "$JOBS" > "$BUILD_DIR/build-output.txt" 2>&1; then
+  grep -E "error|Error|warning" "$BUILD_DIR/build-output.txt" | head -50 >&2 || true
+  echo "setup: build failed (full output in $BUILD_DIR/build-output.txt)" >&2
+  exit 1
+fi
+grep -E "warning:" "$BUILD_DIR/build-output.txt" >&2 || true

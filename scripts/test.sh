@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Install what is missing, build, and run every test through CTest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR="${MHPLAN_BUILD_DIR:-build}"
+scripts/setup.sh "$BUILD_DIR"
+JOBS=$(nproc 2>/dev/null || echo 2)
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 900
