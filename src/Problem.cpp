@@ -35,9 +35,47 @@ namespace mhplan
         checkEndpoint(world, query, model, query.goal, "goal");
     }
 
+    namespace
+    {
+        /** Identity projection of the 2D position with cells of 1/20 of the bounds. Registered as the default
+            projection because OMPL 1.5.2's own RealVector projections trip an Eigen 3.4 assertion when
+            KPIECE1 or SBL call them (they assign into an Eigen::Ref of another size). */
+        class PositionProjection : public ob::ProjectionEvaluator
+        {
+          public:
+            PositionProjection(const ob::StateSpace *space, const Box &bounds)
+                : ob::ProjectionEvaluator(space)
+            {
+                cellSizes_ = {bounds.width() / 20.0, bounds.height() / 20.0};
+            }
+            unsigned int getDimension() const override { return 2; }
+            void defaultCellSizes() override {}
+            void project(const ob::State *state, Eigen::Ref<Eigen::VectorXd> projection) const override
+            {
+                const auto *s = state->as<ob::RealVectorStateSpace::StateType>();
+                projection[0] = s->values[0];
+                projection[1] = s->values[1];
+            }
+        };
+
+        /** RealVectorStateSpace whose default projection is PositionProjection. */
+        class PlaneStateSpace : public ob::RealVectorStateSpace
+        {
+          public:
+            explicit PlaneStateSpace(const Box &bounds) : ob::RealVectorStateSpace(2), box_(bounds) {}
+            void registerProjections() override
+            {
+                registerDefaultProjection(std::make_shared<PositionProjection>(this, box_));
+            }
+
+          private:
+            Box box_;
+        };
+    } // namespace
+
     ob::StateSpacePtr makeStateSpace(const World &world)
     {
-        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+        auto space = std::make_shared<PlaneStateSpace>(world.bounds);
         ob::RealVectorBounds b(2);
         b.setLow(0, world.bounds.xmin);
         b.setHigh(0, world.bounds.xmax);

@@ -190,7 +190,10 @@ namespace mhplan
                 throw InputError(msg.str());
             }
             const std::string range = ps[kv.first].getRangeSuggestion();
-            const std::string problem = checkAgainstRange(kv.second, range);
+            // The planner's own current value is always accepted (some OMPL defaults sit outside their
+            // declared range suggestion, e.g. PRM's max_nearest_neighbors).
+            const std::string problem =
+                kv.second == ps[kv.first].getValue() ? std::string() : checkAgainstRange(kv.second, range);
             if (!problem.empty())
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
                                  kv.second + "' is out of range; expected " + problem);

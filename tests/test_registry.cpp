@@ -1,0 +1,153 @@
+/* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
+   and every registered planner solves a seed world through the shared exact validity checking. */
+#include "Problem.h"
+#include "Registry.h"
+#include "WorldIO.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <limits>
+
+using namespace mhplan;
+namespace ob = ompl::base;
+
+namespace
+{
+    ob::SpaceInformationPtr unitSquare()
+    {
+        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+        space->setBounds(0.0, 1.0);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker([](const ob::State *) { return true; });
+        si->setup();
+        return si;
+    }
+
+    std::string errorOf(const std::function<void()> &f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const InputError &e)
+        {
+            return e.what();
+        }
+        return "";
+    }
+} // namespace
+
+TEST(Registry, HoldsOmplBaselines)
+{
+    const PlannerRegistry &reg = PlannerRegistry::builtin();
+    for (const char *name :
+         {"RRT", "RRTConnect", "RRTstar", "InformedRRTstar", "PRM", "PRMstar", "BITstar", "FMTstar"})
+        EXPECT_TRUE(reg.has(name)) << name;
+    PlannerRegistry copy;
+    copy.add({"X", "test", "", [](const ob::SpaceInformationPtr &) { return ob::PlannerPtr(); }});
+    EXPECT_THROW(
+        copy.add({"X", "test", "", [](const ob::SpaceInformationPtr &) { return ob::PlannerPtr(); }}),
+        std::invalid_argument);
+}
+
+TEST(Registry, UnknownPlannerListsRegisteredNames)
+{
+    const std::string msg = errorOf([] { PlannerRegistry::builtin().get("RRTsharp!"); });
+    EXPECT_NE(msg.find("unknown planner 'RRTsharp!'"), std::string::npos) << msg;
+    for (const auto &name : PlannerRegistry::builtin().names())
+        EXPECT_NE(msg.find(name), std::string::npos) << name;
+}
+
+TEST(Registry, EveryParameterRoundTripsThroughItsDefault)
+{
+    const auto si = unitSquare();
+    for (const auto &name : PlannerRegistry::builtin().names())
+    {
+        const ob::PlannerPtr planner = PlannerRegistry::builtin().create(name, si);
+        ASSERT_TRUE(planner) << name;
+        std::map<std::string, std::string> defaults;
+        planner->params().getParams(defaults);
+        ASSERT_NO_THROW(applyPlannerParameters(*planner, defaults)) << name;
+        std::map<std::string, std::string> again;
+        planner->params().getParams(again);
+        EXPECT_EQ(defaults, again) << name;
+    }
+}
+
+TEST(Registry, ParametersAreSetAndValidated)
+{
+    const auto si = unitSquare();
+    const PlannerRegistry &reg = PlannerRegistry::builtin();
+    ob::PlannerPtr p =
+        reg.create("RRTstar", si, {{"range", "0.25"}, {"goal_bias", "0.1"}, {"use_k_nearest", "false"}});
+    EXPECT_EQ(p->params()["range"].getValue(), "0.25");
+    EXPECT_EQ(p->params()["goal_bias"].getValue(), "0.1");
+    EXPECT_EQ(p->params()["use_k_nearest"].getValue(), "0");
+
+    std::string msg = errorOf([&] { reg.create("RRTstar", si, {{"goal_bias", "1.5"}}); });
+    EXPECT_NE(msg.find("'goal_bias'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("[0., 1.]"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("1.5"), std::string::npos) << msg;
+    msg = errorOf([&] { reg.create("RRTstar", si, {{"goal_bias", "lots"}}); });
+    EXPECT_NE(msg.find("'goal_bias'"), std::string::npos) << msg;
+    msg = errorOf([&] { reg.create("RRTstar", si, {{"use_k_nearest", "maybe"}}); });
+    EXPECT_NE(msg.find("one of {0,1}"), std::string::npos) << msg;
+    msg = errorOf([&] { reg.create("PRM", si, {{"rnage", "1"}}); });
+    EXPECT_NE(msg.find("no parameter 'rnage'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("max_nearest_neighbors"), std::string::npos) << msg;
+}
+
+TEST(Registry, RangeChecks)
+{
+    EXPECT_EQ(checkAgainstRange("5", "0:1:10"), "");
+    EXPECT_EQ(checkAgainstRange("10", "0:10"), "");
+    EXPECT_NE(checkAgainstRange("11", "0:1:10"), "");
+    EXPECT_NE(checkAgainstRange("-0.5", "0.:.1:1."), "");
+    EXPECT_NE(checkAgainstRange("x", "0:1:10"), "");
+    EXPECT_EQ(checkAgainstRange("b", "a,b,c"), "");
+    EXPECT_NE(checkAgainstRange("d", "a,b,c"), "");
+    EXPECT_EQ(checkAgainstRange("anything", ""), "");
+    std::map<std::string, std::string> kv;
+    parseKeyValue("a=1", kv);
+    parseKeyValue("b=x=y", kv);
+    EXPECT_EQ(kv.at("a"), "1");
+    EXPECT_EQ(kv.at("b"), "x=y");
+    EXPECT_THROW(parseKeyValue("=1", kv), InputError);
+    EXPECT_THROW(parseKeyValue("novalue", kv), InputError);
+}
+
+// Every registered planner, run on a seed world through the shared validity checker and exact motion
+// validator, returns a path that an independent exact check finds collision-free, or no exact solution.
+TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const World world = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/bfo_case1.yaml");
+    const CollisionModelPtr model = makeCollisionModel(world);
+    for (const auto &name : PlannerRegistry::builtin().names())
+    {
+        ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], model);
+        ss->setPlanner(PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+        // Any path satisfies the objective, so every planner stops at its first exact solution (10 s is only
+        // a safety net): no assertion depends on the machine's speed.
+        ss->getProblemDefinition()->getOptimizationObjective()->setCostThreshold(
+            ob::Cost(std::numeric_limits<double>::infinity()));
+        const ompl::time::point t0 = ompl::time::now();
+        const ob::PlannerStatus status = ss->solve(10.0);
+        const double seconds = ompl::time::seconds(ompl::time::now() - t0);
+        if (seconds > 1.0)
+            std::cout << name << " took " << seconds << " s to a first solution\n";
+        ASSERT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION) << name;
+        const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
+        ASSERT_GE(pts.size(), 2u) << name;
+        EXPECT_EQ(pts.front(), world.queries[0].start) << name;
+        EXPECT_LT(distance(pts.back(), world.queries[0].goal), 1e-6) << name;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            EXPECT_TRUE(model->segmentValid(pts[i - 1], pts[i])) << name << " segment " << i;
+        EXPECT_GE(polylineLength(pts), 14.2734 - 1e-3) << name << " beats the exact optimum";
+    }
+}
