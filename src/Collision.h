@@ -68,6 +68,11 @@ namespace mhplan
         double segmentClearance(const Vec2 &a, const Vec2 &b) const override;
         std::string name() const override { return "analytic"; }
 
+        /** \brief The circle obstacles (used by fitness functions with a per-circle formula). */
+        const std::vector<Circle> &circles() const { return circles_; }
+        /** \brief The polygon obstacles. */
+        const std::vector<Polygon> &polygons() const { return polygons_; }
+
       private:
         std::vector<Circle> circles_;
         std::vector<Polygon> polygons_;

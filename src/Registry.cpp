@@ -1,6 +1,9 @@
 #include "Registry.h"
 
 #include "World.h"
+#include "SlimeMould.h"
+#include "LRSMA.h"
+#include "MountainGazelle.h"
 
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/fmt/BFMT.h>
@@ -94,6 +97,12 @@ namespace mhplan
                "Search tree with resolution independent density estimation (Gipson et al. 2013)",
                omplAllocator<og::STRIDE>()});
         // mhplan's planners: one line each (see ompl_planners/).
+        r.add({"SMA", "mhplan", "Slime mould algorithm (Li et al. 2020; [GMS], [LRSMA])",
+               omplAllocator<SlimeMould>()});
+        r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
+               omplAllocator<LRSMA>()});
+        r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
+               omplAllocator<MountainGazelle>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()

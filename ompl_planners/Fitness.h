@@ -1,0 +1,132 @@
+/* mhplan: the path fitness functions of ALGORITHMS.md 1.2 ([LRSMA]) and 1.3 ([GMS]), shared by every
+   population planner. */
+#ifndef MHPLAN_FITNESS_H
+#define MHPLAN_FITNESS_H
+
+#include "Collision.h"
+
+#include <ompl/base/SpaceInformation.h>
+
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief Which fitness a planner minimises. */
+    enum class FitnessKind
+    {
+        LengthPenalty,     ///< [LRSMA] S = eta1 * length + eta2 * collision violation (1.2)
+        FeasibleInfeasible ///< [GMS] f1 for feasible paths, F_inf + f2 for infeasible ones (1.3)
+    };
+
+    /** \brief Parse "lrsma" or "gms" (throws std::invalid_argument naming the parameter 'fitness'). */
+    FitnessKind parseFitnessKind(const std::string &name);
+    std::string toString(FitnessKind kind);
+
+    /** \brief Weights of both fitness functions (defaults from ALGORITHMS.md 1.2 and 1.3). */
+    struct FitnessWeights
+    {
+        /** \brief eta1 of [LRSMA] (length). */
+        double lengthWeight{1.0};
+        /** \brief eta2 of [LRSMA] (collision violation). */
+        double penaltyWeight{1000.0};
+        /** \brief w_d, w_s, w_sm of [GMS] f1 (length, danger, turning). */
+        double distanceWeight{1.0};
+        double safetyWeight{1.0};
+        double smoothnessWeight{0.1};
+        /** \brief d_safe of the [GMS] danger term alpha(l) = max(0, 1 - clearance(l) / d_safe). */
+        double safeDistance{0.5};
+        /** \brief w_l, w_c of [GMS] f2 (share of length inside obstacles, obstacles crossed per metre). */
+        double infeasibleLengthWeight{1.0};
+        double crossingWeight{1.0};
+    };
+
+    /** \brief One evaluation. */
+    struct FitnessResult
+    {
+        double fitness{0.0};
+        double length{0.0};
+        /** \brief Every segment passed the space information's motion validator. */
+        bool feasible{false};
+        /** \brief The collision violation (f2 of [LRSMA], lin + cro of [GMS]); 0 for feasible paths. */
+        double violation{0.0};
+    };
+
+    /** \brief Evaluates paths with the problem's own validity checker and motion validator, so it works on
+        any 2D RealVectorStateSpace problem.
+
+        [LRSMA] collision term f2 (ALGORITHMS.md 1.2), choices made here:
+        - When the validity checker is a WorldValidityChecker over an AnalyticCollisionModel whose world has
+          only circles, the exact formula of the spec: f2 = sum over circles of the mean over the samples of
+          max(1 - |q - c| / (R + r), 0), r the robot radius.
+        - Otherwise (polygons, grids, FCL, foreign checkers): f2 = mean over the samples of
+          min(max(-clearance(q), 0) / 1 m, 1), clearance from the validity checker.
+        - In both cases a sample outside the space's bounds (splines can overshoot) adds
+          min(distance outside / 1 m, 1) to the mean: the outside of the box is treated as an obstacle.
+        - A path with f2 = 0 that still fails the motion validator (a thin obstacle between samples) gets
+          f2 = 1e-3 (so S rises by eta2 / 1000): it must not tie with a valid path of the same length.
+        Feasibility (reported exact solutions) is decided by the motion validator only.
+
+        [GMS] f1/f2 (1.3): segment clearance is exact for WorldValidityChecker models, otherwise sampled at
+        the space's validity-checking resolution; lin(p) and cro(p) sample every segment at that resolution
+        (an obstacle crossing = one maximal run of invalid samples); F_inf = 10 x the bounds' perimeter.
+
+        Holds two preallocated states: evaluate() does not allocate. Not thread-safe. */
+    class PathFitness
+    {
+      public:
+        explicit PathFitness(ompl::base::SpaceInformationPtr si);
+        ~PathFitness();
+        PathFitness(const PathFitness &) = delete;
+        PathFitness &operator=(const PathFitness &) = delete;
+
+        /** \brief Choose the fitness and weights; inspects the validity checker (call after its setup). */
+        void configure(FitnessKind kind, const FitnessWeights &weights);
+
+        /** \brief Evaluate \e path (start to goal); \e samples are the [LRSMA] interpolation points (may be
+            the path itself; unused by [GMS]). */
+        FitnessResult evaluate(const std::vector<Vec2> &path, const std::vector<Vec2> &samples);
+
+        /** \brief The motion validator's verdict on one straight segment. */
+        bool segmentValid(const Vec2 &a, const Vec2 &b) const;
+        /** \brief The validity checker's verdict on one point. */
+        bool pointValid(const Vec2 &p) const;
+        /** \brief Signed clearance from the validity checker. */
+        double clearance(const Vec2 &p) const;
+        /** \brief Minimum clearance along a segment (exact for mhplan's models, else sampled). */
+        double segmentClearance(const Vec2 &a, const Vec2 &b) const;
+        /** \brief Every segment of \e path valid. */
+        bool pathValid(const std::vector<Vec2> &path) const;
+        /** \brief The [GMS] feasible fitness f1 of a path (no feasibility check). */
+        double gmsFeasibleFitness(const std::vector<Vec2> &path) const;
+
+        FitnessKind kind() const { return kind_; }
+        const FitnessWeights &weights() const { return weights_; }
+        /** \brief True when the exact circle formula of 1.2 is in use. */
+        bool exactCircles() const { return exactCircles_; }
+        /** \brief F_inf of [GMS]. */
+        double infeasibleOffset() const { return infeasibleOffset_; }
+        const ompl::base::SpaceInformationPtr &spaceInformation() const { return si_; }
+
+      private:
+        double collisionViolation(const std::vector<Vec2> &samples) const;
+        double outOfBounds(const Vec2 &p) const;
+        FitnessResult evaluateLengthPenalty(const std::vector<Vec2> &path, const std::vector<Vec2> &samples);
+        FitnessResult evaluateGms(const std::vector<Vec2> &path);
+
+        ompl::base::SpaceInformationPtr si_;
+        ompl::base::State *s1_{nullptr};
+        ompl::base::State *s2_{nullptr};
+        FitnessKind kind_{FitnessKind::LengthPenalty};
+        FitnessWeights weights_;
+        /** \brief Set when the checker is a WorldValidityChecker: exact clearance queries. */
+        CollisionModelPtr model_;
+        bool exactCircles_{false};
+        std::vector<Circle> circles_;
+        Box box_;
+        double resolution_{0.01};
+        double infeasibleOffset_{0.0};
+    };
+} // namespace mhplan
+
+#endif

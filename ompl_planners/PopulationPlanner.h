@@ -1,0 +1,203 @@
+/* mhplan: the machinery every population-based planner shares (ALGORITHMS.md 1.1-1.2): parameters, the
+   waypoint encoding, fitness, evaluation counting, best-so-far tracking, progress properties, termination
+   checks and solution reporting. An algorithm only writes its initialisation and its update rules. */
+#ifndef MHPLAN_POPULATION_PLANNER_H
+#define MHPLAN_POPULATION_PLANNER_H
+
+#include "Fitness.h"
+#include "PathEncoding.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief Defaults a concrete planner passes to PopulationPlanner. */
+    struct PopulationDefaults
+    {
+        unsigned int populationSize{30};
+        /** \brief Length T of the coefficient schedules (the papers' iteration budget). */
+        unsigned int iterations{30};
+        unsigned int waypoints{3};
+        PathDecoding decoding{PathDecoding::Polyline};
+    };
+
+    /** \brief Base class of mhplan's metaheuristic planners.
+
+        Problem: a 2D ompl::base::RealVectorStateSpace; start and goal from the problem definition (the
+        first start state, one goal sample). A candidate is the waypoint vector of ALGORITHMS.md 1.1 (see
+        WaypointDecoder), or any list of points (evaluatePath(), used by the GA); its fitness is a
+        PathFitness ([LRSMA] S or [GMS] f1/f2, parameter \c fitness; \c auto picks [GMS] on grid worlds and
+        [LRSMA] otherwise). The base class tracks, independently of the algorithm, the best feasible path
+        ever evaluated by the problem's optimization objective (the reported cost; path length by default)
+        and the best infeasible one by fitness.
+
+        solve(): a first call draws and evaluates the initial population; each call then runs iterations
+        until the termination condition holds or \c max_iterations further iterations (0 = no limit) are
+        done, so a second call continues the search; clear() forgets everything. The termination condition
+        is tested before every fitness evaluation (stopRequested()); an interrupted iteration is discarded,
+        its evaluations still count. The coefficient schedules use t = 1..T with T = \c iterations; runs
+        longer than T restart the schedule (t cycles; mhplan's choice, the papers stop at T).
+
+        Reports an exact solution when the best path passes the motion validator on every segment, else an
+        approximate one (the path of best fitness; its difference is the collision violation). The
+        intermediate-solution callback fires on each improvement of the best feasible path. Progress
+        properties \c best \c cost (of the best feasible path, infinity before one exists), \c iterations
+        and \c fitness \c evaluations are atomics, safe to read from the benchmark's sampling thread.
+
+        Randomness comes only from the member ompl::RNG (seeded from OMPL's global seed at construction, or
+        from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation. */
+    class PopulationPlanner : public ompl::base::Planner
+    {
+      public:
+        PopulationPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
+                          const PopulationDefaults &defaults);
+        ~PopulationPlanner() override;
+
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void clear() override;
+        void setup() override;
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        /** \brief Population size N (2..10000). */
+        void setPopulationSize(unsigned int n);
+        unsigned int getPopulationSize() const { return populationSize_; }
+        /** \brief Schedule length T of the algorithm's coefficients (1..1000000). */
+        void setIterations(unsigned int t);
+        unsigned int getIterations() const { return iterations_; }
+        /** \brief Iterations per solve() call, 0 = until the termination condition (0..1000000). */
+        void setMaxIterations(unsigned int n);
+        unsigned int getMaxIterations() const { return maxIterations_; }
+        /** \brief Number m of intermediate waypoints (1..100). */
+        void setWaypoints(unsigned int m);
+        unsigned int getWaypoints() const { return waypoints_; }
+        /** \brief "polyline" or "spline". */
+        void setDecoding(const std::string &decoding);
+        std::string getDecoding() const { return toString(decoding_); }
+        /** \brief Number n of interpolation points (2..100000). */
+        void setSplineSamples(unsigned int n);
+        unsigned int getSplineSamples() const { return splineSamples_; }
+        /** \brief "auto", "lrsma" or "gms". */
+        void setFitness(const std::string &fitness);
+        std::string getFitness() const { return fitnessName_; }
+        /** \brief eta1 of [LRSMA] (0..1e6). */
+        void setLengthWeight(double w);
+        double getLengthWeight() const { return weights_.lengthWeight; }
+        /** \brief eta2 of [LRSMA] (0..1e9). */
+        void setPenaltyWeight(double w);
+        double getPenaltyWeight() const { return weights_.penaltyWeight; }
+        /** \brief w_d of [GMS] (0..1e6). */
+        void setDistanceWeight(double w);
+        double getDistanceWeight() const { return weights_.distanceWeight; }
+        /** \brief w_s of [GMS] (0..1e6). */
+        void setSafetyWeight(double w);
+        double getSafetyWeight() const { return weights_.safetyWeight; }
+        /** \brief w_sm of [GMS] (0..1e6). */
+        void setSmoothnessWeight(double w);
+        double getSmoothnessWeight() const { return weights_.smoothnessWeight; }
+        /** \brief d_safe of [GMS] (1e-6..1e6). */
+        void setSafeDistance(double d);
+        double getSafeDistance() const { return weights_.safeDistance; }
+        /** \brief w_l of [GMS] (0..1e6). */
+        void setInfeasibleLengthWeight(double w);
+        double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
+        /** \brief w_c of [GMS] (0..1e6). */
+        void setCrossingWeight(double w);
+        double getCrossingWeight() const { return weights_.crossingWeight; }
+        /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
+        void setSeed(unsigned long seed);
+        unsigned long getSeed() const { return seed_; }
+
+        /** \brief Objective cost of the best feasible path (infinity before one exists). */
+        double bestCost() const { return bestCostValue_.load(); }
+        /** \brief Completed iterations since the last clear(). */
+        unsigned long iterationCount() const { return iterationCount_.load(); }
+        /** \brief Fitness evaluations since the last clear(). */
+        unsigned long evaluationCount() const { return evaluationCount_.load(); }
+        /** \brief The fitness actually in use (after resolving "auto"); valid after the first solve(). */
+        FitnessKind fitnessKind() const { return fitness_ ? fitness_->kind() : FitnessKind::LengthPenalty; }
+
+      protected:
+        /** \brief Draw and evaluate the initial population; false when interrupted (it is redrawn next call).
+         */
+        virtual bool initialisePopulation() = 0;
+        /** \brief One iteration with schedule index t in 1..T; false when interrupted. */
+        virtual bool iterate(unsigned int t) = 0;
+        /** \brief Forget the algorithm's state (called by clear()). */
+        virtual void clearPopulation() = 0;
+
+        /** \brief True when the current solve() must stop (tests the termination condition). */
+        bool stopRequested() const { return ptc_ == nullptr || (*ptc_)(); }
+
+        /** \brief Decode and evaluate a waypoint vector (dimension() values); updates counts and bests. */
+        double evaluate(const double *x);
+        /** \brief Evaluate an explicit path (start ... goal); updates counts and bests. */
+        double evaluatePath(const std::vector<Vec2> &path);
+
+        /** \brief Uniform random waypoint vector in the bounds. */
+        void randomPosition(double *x);
+        /** \brief Clamp every coordinate to the bounds (ALGORITHMS.md 1.1). */
+        void clampToBounds(double *x) const;
+
+        /** \brief 2m. */
+        unsigned int dimension() const { return 2 * waypoints_; }
+        double lower(unsigned int j) const { return lower_[j & 1u]; }
+        double upper(unsigned int j) const { return upper_[j & 1u]; }
+        const Vec2 &startPoint() const { return start_; }
+        const Vec2 &goalPoint() const { return goal_; }
+        PathFitness &fitness() { return *fitness_; }
+
+        /** \brief Mark the structure (population size, dimension, decoding) changed: clear() on next solve.
+         */
+        void invalidate();
+
+        ompl::RNG rng_;
+
+      private:
+        bool prepareProblem();
+        void record(const FitnessResult &r, const std::vector<Vec2> &path);
+        void reportSolution(bool &exact, bool &approximate);
+        void fireIntermediate();
+
+        unsigned int populationSize_;
+        unsigned int iterations_;
+        unsigned int maxIterations_{0};
+        unsigned int waypoints_;
+        PathDecoding decoding_;
+        unsigned int splineSamples_{100};
+        std::string fitnessName_{"auto"};
+        FitnessWeights weights_;
+        unsigned long seed_{0};
+
+        const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
+        bool problemReady_{false};
+        bool initialised_{false};
+        Vec2 start_, goal_;
+        double lower_[2]{0.0, 0.0};
+        double upper_[2]{0.0, 0.0};
+        WaypointDecoder decoder_;
+        std::unique_ptr<PathFitness> fitness_;
+        /** \brief State buffers for the objective's motion costs. */
+        ompl::base::State *costA_{nullptr};
+        ompl::base::State *costB_{nullptr};
+
+        bool haveFeasible_{false};
+        ompl::base::Cost bestFeasibleCost_;
+        std::vector<Vec2> bestFeasiblePath_;
+        bool haveInfeasible_{false};
+        double bestInfeasibleFitness_{0.0};
+        double bestInfeasibleViolation_{0.0};
+        std::vector<Vec2> bestInfeasiblePath_;
+        bool improved_{false};
+
+        std::atomic<double> bestCostValue_;
+        std::atomic<unsigned long> iterationCount_{0};
+        std::atomic<unsigned long> evaluationCount_{0};
+    };
+} // namespace mhplan
+
+#endif

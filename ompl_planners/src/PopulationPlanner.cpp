@@ -1,0 +1,480 @@
+#include "PopulationPlanner.h"
+
+#include "GridCollision.h"
+#include "Validity.h"
+
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/String.h>
+
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan
+{
+    namespace
+    {
+        template <typename T> std::string rangeMessage(const char *param, const std::string &range, T value)
+        {
+            std::ostringstream msg;
+            msg << "parameter '" << param << "' must be in " << range << "; got " << value;
+            return msg.str();
+        }
+
+        void checkCount(const char *param, unsigned int value, unsigned int lo, unsigned int hi)
+        {
+            if (value < lo || value > hi)
+                throw std::invalid_argument(
+                    rangeMessage(param, "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]", value));
+        }
+
+        void checkReal(const char *param, double value, double lo, double hi)
+        {
+            if (!(value >= lo && value <= hi))
+                throw std::invalid_argument(
+                    rangeMessage(param, "[" + ompl::toString(lo) + ", " + ompl::toString(hi) + "]", value));
+        }
+    } // namespace
+
+    PopulationPlanner::PopulationPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
+                                         const PopulationDefaults &defaults)
+        : ob::Planner(si, name), populationSize_(defaults.populationSize), iterations_(defaults.iterations),
+          waypoints_(defaults.waypoints), decoding_(defaults.decoding),
+          bestCostValue_(std::numeric_limits<double>::infinity())
+    {
+        specs_.approximateSolutions = true;
+        specs_.optimizingPaths = true;
+        specs_.canReportIntermediateSolutions = true;
+        specs_.multithreaded = false;
+        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
+
+        declareParam<unsigned int>("population_size", this, &PopulationPlanner::setPopulationSize,
+                                   &PopulationPlanner::getPopulationSize, "2:1:10000");
+        declareParam<unsigned int>("iterations", this, &PopulationPlanner::setIterations,
+                                   &PopulationPlanner::getIterations, "1:1:1000000");
+        declareParam<unsigned int>("max_iterations", this, &PopulationPlanner::setMaxIterations,
+                                   &PopulationPlanner::getMaxIterations, "0:1:1000000");
+        declareParam<unsigned int>("waypoints", this, &PopulationPlanner::setWaypoints,
+                                   &PopulationPlanner::getWaypoints, "1:1:100");
+        declareParam<std::string>("decoding", this, &PopulationPlanner::setDecoding,
+                                  &PopulationPlanner::getDecoding, "polyline,spline");
+        declareParam<unsigned int>("spline_samples", this, &PopulationPlanner::setSplineSamples,
+                                   &PopulationPlanner::getSplineSamples, "2:1:100000");
+        declareParam<std::string>("fitness", this, &PopulationPlanner::setFitness,
+                                  &PopulationPlanner::getFitness, "auto,lrsma,gms");
+        declareParam<double>("length_weight", this, &PopulationPlanner::setLengthWeight,
+                             &PopulationPlanner::getLengthWeight, "0.:1.:1000000.");
+        declareParam<double>("penalty_weight", this, &PopulationPlanner::setPenaltyWeight,
+                             &PopulationPlanner::getPenaltyWeight, "0.:1.:1000000000.");
+        declareParam<double>("distance_weight", this, &PopulationPlanner::setDistanceWeight,
+                             &PopulationPlanner::getDistanceWeight, "0.:0.1:1000000.");
+        declareParam<double>("safety_weight", this, &PopulationPlanner::setSafetyWeight,
+                             &PopulationPlanner::getSafetyWeight, "0.:0.1:1000000.");
+        declareParam<double>("smoothness_weight", this, &PopulationPlanner::setSmoothnessWeight,
+                             &PopulationPlanner::getSmoothnessWeight, "0.:0.1:1000000.");
+        declareParam<double>("safe_distance", this, &PopulationPlanner::setSafeDistance,
+                             &PopulationPlanner::getSafeDistance, "0.000001:0.1:1000000.");
+        declareParam<double>("infeasible_length_weight", this, &PopulationPlanner::setInfeasibleLengthWeight,
+                             &PopulationPlanner::getInfeasibleLengthWeight, "0.:0.1:1000000.");
+        declareParam<double>("crossing_weight", this, &PopulationPlanner::setCrossingWeight,
+                             &PopulationPlanner::getCrossingWeight, "0.:0.1:1000000.");
+        declareParam<unsigned long>("seed", this, &PopulationPlanner::setSeed, &PopulationPlanner::getSeed,
+                                    "0:1:4294967295");
+
+        addPlannerProgressProperty("best cost REAL", [this] { return ompl::toString(bestCost()); });
+        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
+        addPlannerProgressProperty("fitness evaluations INTEGER",
+                                   [this] { return std::to_string(evaluationCount()); });
+    }
+
+    PopulationPlanner::~PopulationPlanner()
+    {
+        if (costA_ != nullptr)
+            si_->freeState(costA_);
+        if (costB_ != nullptr)
+            si_->freeState(costB_);
+    }
+
+    void PopulationPlanner::setPopulationSize(unsigned int n)
+    {
+        checkCount("population_size", n, 2, 10000);
+        if (n != populationSize_)
+            invalidate();
+        populationSize_ = n;
+    }
+
+    void PopulationPlanner::setIterations(unsigned int t)
+    {
+        checkCount("iterations", t, 1, 1000000);
+        iterations_ = t;
+    }
+
+    void PopulationPlanner::setMaxIterations(unsigned int n)
+    {
+        checkCount("max_iterations", n, 0, 1000000);
+        maxIterations_ = n;
+    }
+
+    void PopulationPlanner::setWaypoints(unsigned int m)
+    {
+        checkCount("waypoints", m, 1, 100);
+        if (m != waypoints_)
+            invalidate();
+        waypoints_ = m;
+    }
+
+    void PopulationPlanner::setDecoding(const std::string &decoding)
+    {
+        const PathDecoding d = parsePathDecoding(decoding);
+        if (d != decoding_)
+            invalidate();
+        decoding_ = d;
+    }
+
+    void PopulationPlanner::setSplineSamples(unsigned int n)
+    {
+        checkCount("spline_samples", n, 2, 100000);
+        if (n != splineSamples_)
+            invalidate();
+        splineSamples_ = n;
+    }
+
+    void PopulationPlanner::setFitness(const std::string &fitness)
+    {
+        if (fitness != "auto")
+            parseFitnessKind(fitness); // validates
+        if (fitness != fitnessName_)
+            invalidate();
+        fitnessName_ = fitness;
+    }
+
+    void PopulationPlanner::setLengthWeight(double w)
+    {
+        checkReal("length_weight", w, 0.0, 1e6);
+        weights_.lengthWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setPenaltyWeight(double w)
+    {
+        checkReal("penalty_weight", w, 0.0, 1e9);
+        weights_.penaltyWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setDistanceWeight(double w)
+    {
+        checkReal("distance_weight", w, 0.0, 1e6);
+        weights_.distanceWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSafetyWeight(double w)
+    {
+        checkReal("safety_weight", w, 0.0, 1e6);
+        weights_.safetyWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSmoothnessWeight(double w)
+    {
+        checkReal("smoothness_weight", w, 0.0, 1e6);
+        weights_.smoothnessWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSafeDistance(double d)
+    {
+        checkReal("safe_distance", d, 1e-6, 1e6);
+        weights_.safeDistance = d;
+        invalidate();
+    }
+
+    void PopulationPlanner::setInfeasibleLengthWeight(double w)
+    {
+        checkReal("infeasible_length_weight", w, 0.0, 1e6);
+        weights_.infeasibleLengthWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setCrossingWeight(double w)
+    {
+        checkReal("crossing_weight", w, 0.0, 1e6);
+        weights_.crossingWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSeed(unsigned long seed)
+    {
+        if (seed > 4294967295ul)
+            throw std::invalid_argument(rangeMessage("seed", "[0, 4294967295]", seed));
+        seed_ = seed;
+        invalidate();
+    }
+
+    void PopulationPlanner::invalidate()
+    {
+        // Structural parameters change the meaning of the population: start afresh.
+        if (problemReady_ || initialised_)
+            clear();
+    }
+
+    void PopulationPlanner::setup()
+    {
+        ob::Planner::setup();
+    }
+
+    void PopulationPlanner::clear()
+    {
+        ob::Planner::clear();
+        clearPopulation();
+        problemReady_ = false;
+        initialised_ = false;
+        haveFeasible_ = false;
+        haveInfeasible_ = false;
+        bestFeasiblePath_.clear();
+        bestInfeasiblePath_.clear();
+        bestCostValue_ = std::numeric_limits<double>::infinity();
+        iterationCount_ = 0;
+        evaluationCount_ = 0;
+    }
+
+    bool PopulationPlanner::prepareProblem()
+    {
+        const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get());
+        if (space == nullptr || space->getDimension() != 2)
+        {
+            OMPL_ERROR("%s: needs a 2D RealVectorStateSpace", getName().c_str());
+            return false;
+        }
+        const ob::State *start = pis_.nextStart();
+        if (start == nullptr)
+        {
+            OMPL_ERROR("%s: no valid start state", getName().c_str());
+            return false;
+        }
+        start_ = statePosition(start);
+        const ob::State *goal = pis_.nextGoal();
+        if (goal == nullptr)
+        {
+            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
+            return false;
+        }
+        goal_ = statePosition(goal);
+        const ob::RealVectorBounds &b = space->getBounds();
+        lower_[0] = b.low[0];
+        lower_[1] = b.low[1];
+        upper_[0] = b.high[0];
+        upper_[1] = b.high[1];
+
+        FitnessKind kind = FitnessKind::LengthPenalty;
+        if (fitnessName_ == "auto")
+        {
+            const auto *checker =
+                dynamic_cast<const WorldValidityChecker *>(si_->getStateValidityChecker().get());
+            if (checker != nullptr &&
+                dynamic_cast<const GridCollisionModel *>(checker->model().get()) != nullptr)
+                kind = FitnessKind::FeasibleInfeasible;
+        }
+        else
+            kind = parseFitnessKind(fitnessName_);
+        if (!fitness_)
+            fitness_ = std::make_unique<PathFitness>(si_);
+        if (costA_ == nullptr)
+        {
+            costA_ = si_->allocState();
+            costB_ = si_->allocState();
+        }
+        fitness_->configure(kind, weights_);
+        decoder_.configure(start_, goal_, waypoints_, decoding_, splineSamples_);
+        bestFeasiblePath_.reserve(std::max(256u, splineSamples_));
+        bestInfeasiblePath_.reserve(std::max(256u, splineSamples_));
+        if (seed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u, %s decoding, %s fitness%s", getName().c_str(),
+                    static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_, iterations_, waypoints_,
+                    toString(decoding_).c_str(), toString(kind).c_str(),
+                    fitness_->exactCircles() ? " (exact circle formula)" : "");
+        problemReady_ = true;
+        return true;
+    }
+
+    ob::PlannerStatus PopulationPlanner::solve(const ob::PlannerTerminationCondition &ptc)
+    {
+        checkValidity();
+        if (!problemReady_ && !prepareProblem())
+            return ob::PlannerStatus::INVALID_START;
+
+        ptc_ = &ptc;
+        if (!initialised_ && !ptc())
+            initialised_ = initialisePopulation();
+        unsigned int done = 0;
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        auto satisfied = [&] { return haveFeasible_ && opt && opt->isSatisfied(bestFeasibleCost_); };
+        while (initialised_ && !ptc() && !satisfied() && (maxIterations_ == 0 || done < maxIterations_))
+        {
+            const auto t = static_cast<unsigned int>(iterationCount_.load() % iterations_) + 1;
+            if (!iterate(t))
+                break;
+            ++iterationCount_;
+            ++done;
+        }
+        ptc_ = nullptr;
+
+        bool exact = false, approximate = false;
+        reportSolution(exact, approximate);
+        OMPL_INFORM("%s: %lu iterations, %lu fitness evaluations, best cost %s", getName().c_str(),
+                    iterationCount(), evaluationCount(), ompl::toString(bestCost()).c_str());
+        if (exact)
+            return ob::PlannerStatus::EXACT_SOLUTION;
+        if (approximate)
+            return ob::PlannerStatus::APPROXIMATE_SOLUTION;
+        return ob::PlannerStatus::TIMEOUT;
+    }
+
+    void PopulationPlanner::randomPosition(double *x)
+    {
+        for (unsigned int j = 0; j < dimension(); ++j)
+            x[j] = rng_.uniformReal(lower(j), upper(j));
+    }
+
+    void PopulationPlanner::clampToBounds(double *x) const
+    {
+        for (unsigned int j = 0; j < dimension(); ++j)
+            x[j] = std::min(std::max(x[j], lower(j)), upper(j));
+    }
+
+    double PopulationPlanner::evaluate(const double *x)
+    {
+        decoder_.decode(x);
+        const FitnessResult r = fitness_->evaluate(decoder_.path(), decoder_.samples());
+        record(r, decoder_.path());
+        return r.fitness;
+    }
+
+    double PopulationPlanner::evaluatePath(const std::vector<Vec2> &path)
+    {
+        const FitnessResult r = fitness_->evaluate(path, path);
+        record(r, path);
+        return r.fitness;
+    }
+
+    void PopulationPlanner::record(const FitnessResult &r, const std::vector<Vec2> &path)
+    {
+        ++evaluationCount_;
+        if (r.feasible)
+        {
+            // The reported cost is the problem's objective, not the fitness.
+            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+            ob::Cost cost(r.length);
+            if (opt)
+            {
+                cost = opt->identityCost();
+                for (std::size_t i = 1; i < path.size(); ++i)
+                {
+                    setStatePosition(costA_, path[i - 1]);
+                    setStatePosition(costB_, path[i]);
+                    cost = opt->combineCosts(cost, opt->motionCost(costA_, costB_));
+                }
+            }
+            const bool better = !haveFeasible_ || (opt ? opt->isCostBetterThan(cost, bestFeasibleCost_)
+                                                       : cost.value() < bestFeasibleCost_.value());
+            if (better)
+            {
+                haveFeasible_ = true;
+                bestFeasibleCost_ = cost;
+                bestFeasiblePath_.assign(path.begin(), path.end());
+                bestCostValue_ = cost.value();
+                fireIntermediate();
+            }
+        }
+        else if (!haveInfeasible_ || r.fitness < bestInfeasibleFitness_)
+        {
+            haveInfeasible_ = true;
+            bestInfeasibleFitness_ = r.fitness;
+            bestInfeasibleViolation_ = r.violation;
+            bestInfeasiblePath_.assign(path.begin(), path.end());
+        }
+    }
+
+    void PopulationPlanner::fireIntermediate()
+    {
+        const auto &callback = pdef_->getIntermediateSolutionCallback();
+        if (!callback)
+            return;
+        std::vector<ob::State *> states;
+        states.reserve(bestFeasiblePath_.size());
+        for (const Vec2 &p : bestFeasiblePath_)
+        {
+            states.push_back(si_->allocState());
+            setStatePosition(states.back(), p);
+        }
+        const std::vector<const ob::State *> view(states.begin(), states.end());
+        callback(this, view, bestFeasibleCost_);
+        for (ob::State *s : states)
+            si_->freeState(s);
+    }
+
+    void PopulationPlanner::reportSolution(bool &exact, bool &approximate)
+    {
+        exact = approximate = false;
+        const std::vector<Vec2> *points = nullptr;
+        if (haveFeasible_)
+            points = &bestFeasiblePath_;
+        else if (haveInfeasible_)
+            points = &bestInfeasiblePath_;
+        if (points == nullptr)
+            return;
+        auto path = std::make_shared<og::PathGeometric>(si_);
+        ob::State *s = si_->allocState();
+        for (const Vec2 &p : *points)
+        {
+            setStatePosition(s, p);
+            path->append(s);
+        }
+        si_->freeState(s);
+        ob::PlannerSolution solution(path);
+        solution.setPlannerName(getName());
+        if (haveFeasible_)
+        {
+            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+            if (opt)
+                solution.setOptimized(opt, bestFeasibleCost_, opt->isSatisfied(bestFeasibleCost_));
+            exact = true;
+        }
+        else
+        {
+            solution.setApproximate(std::max(bestInfeasibleViolation_, 1e-12));
+            approximate = true;
+        }
+        pdef_->addSolutionPath(solution);
+    }
+
+    void PopulationPlanner::getPlannerData(ob::PlannerData &data) const
+    {
+        ob::Planner::getPlannerData(data);
+        const std::vector<Vec2> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
+        ob::State *s = si_->allocState();
+        for (std::size_t i = 0; i < points.size(); ++i)
+        {
+            setStatePosition(s, points[i]);
+            // PlannerData copies the states it is given.
+            const ob::PlannerDataVertex v(s);
+            if (i == 0)
+                data.addStartVertex(v);
+            else if (i + 1 == points.size())
+                data.addGoalVertex(v);
+            else
+                data.addVertex(v);
+        }
+        for (std::size_t i = 1; i < points.size(); ++i)
+            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
+        si_->freeState(s);
+    }
+} // namespace mhplan

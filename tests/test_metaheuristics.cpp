@@ -1,0 +1,251 @@
+/* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
+   and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each). */
+#include "Fitness.h"
+#include "PathEncoding.h"
+#include "Problem.h"
+#include "Registry.h"
+#include "Validity.h"
+#include "WorldIO.h"
+
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+
+using namespace mhplan;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    World seedWorld(const std::string &name)
+    {
+        return loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml");
+    }
+
+    /** \brief Independent dense check: every point at 1 mm spacing is valid in a fresh analytic or grid model
+        (not the motion validator the planners used). */
+    bool denselyValid(const World &world, const std::vector<Vec2> &pts)
+    {
+        const CollisionModelPtr model =
+            makeCollisionModel(world, world.isGrid() ? CollisionBackend::Grid : CollisionBackend::Analytic);
+        for (std::size_t i = 1; i < pts.size(); ++i)
+        {
+            const double len = distance(pts[i - 1], pts[i]);
+            const auto steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(len / 1e-3)));
+            for (std::size_t k = 0; k <= steps; ++k)
+                if (!model->isValid(pts[i - 1] + (pts[i] - pts[i - 1]) * (double(k) / steps)))
+                    return false;
+        }
+        return true;
+    }
+
+    struct RunResult
+    {
+        ob::PlannerStatus status;
+        bool exactValid{false};
+        double length{std::numeric_limits<double>::infinity()};
+        std::vector<double> trace;
+        unsigned long evaluations{0};
+    };
+
+    RunResult runPlanner(const World &world, const std::string &planner, unsigned long seed,
+                         std::map<std::string, std::string> params = {})
+    {
+        const CollisionModelPtr model = makeCollisionModel(world);
+        og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], model);
+        params["seed"] = std::to_string(seed);
+        ob::PlannerPtr p = PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), params);
+        ss->setPlanner(p);
+        RunResult r;
+        ss->getProblemDefinition()->setIntermediateSolutionCallback(
+            [&r](const ob::Planner *, const std::vector<const ob::State *> &, const ob::Cost cost)
+            { r.trace.push_back(cost.value()); });
+        r.status = ss->solve(ob::PlannerTerminationCondition([] { return false; }));
+        r.evaluations = std::stoul(p->getPlannerProgressProperties().at("fitness evaluations INTEGER")());
+        if (r.status == ob::PlannerStatus::EXACT_SOLUTION)
+        {
+            const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
+            r.exactValid = denselyValid(world, pts);
+            r.length = polylineLength(pts);
+        }
+        return r;
+    }
+
+    double median(std::vector<double> v)
+    {
+        std::sort(v.begin(), v.end());
+        return v.empty() ? std::numeric_limits<double>::infinity() : v[v.size() / 2];
+    }
+} // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// Encoding and fitness.
+
+TEST(WaypointDecoder, NotAKnotSplineReproducesCubics)
+{
+    // Not-a-knot splines reproduce any cubic exactly: x(t) = t^3 - 3t^2 + 2t, y(t) = 0.5 t^3 + t.
+    auto fx = [](double t) { return t * t * t - 3 * t * t + 2 * t; };
+    auto fy = [](double t) { return 0.5 * t * t * t + t; };
+    for (unsigned int m : {2u, 3u, 4u, 7u})
+    {
+        WaypointDecoder dec;
+        const double T = m + 1;
+        dec.configure({fx(0), fy(0)}, {fx(T), fy(T)}, m, PathDecoding::Spline, 41);
+        std::vector<double> x;
+        for (unsigned int i = 1; i <= m; ++i)
+        {
+            x.push_back(fx(i));
+            x.push_back(fy(i));
+        }
+        dec.decode(x.data());
+        ASSERT_EQ(dec.path().size(), 41u);
+        for (unsigned int k = 0; k < 41; ++k)
+        {
+            const double t = T * k / 40.0;
+            EXPECT_NEAR(dec.path()[k].x, fx(t), 1e-9) << "m=" << m << " k=" << k;
+            EXPECT_NEAR(dec.path()[k].y, fy(t), 1e-9) << "m=" << m << " k=" << k;
+        }
+    }
+    // Three points: the parabola through them.
+    WaypointDecoder dec;
+    dec.configure({0, 0}, {2, 0}, 1, PathDecoding::Spline, 5);
+    const double x[] = {1.0, 1.0};
+    dec.decode(x);
+    EXPECT_NEAR(dec.path()[1].y, 0.75, 1e-12); // y = t (2 - t) at t = 0.5
+}
+
+TEST(WaypointDecoder, PolylineSamplesFollowTheSegments)
+{
+    WaypointDecoder dec;
+    dec.configure({0, 0}, {4, 0}, 1, PathDecoding::Polyline, 5);
+    const double x[] = {2.0, 2.0};
+    dec.decode(x);
+    ASSERT_EQ(dec.path().size(), 3u);
+    EXPECT_EQ(dec.path()[1], Vec2(2, 2));
+    ASSERT_EQ(dec.samples().size(), 5u);
+    EXPECT_NEAR(dec.samples()[1].x, 1.0, 1e-12);
+    EXPECT_NEAR(dec.samples()[1].y, 1.0, 1e-12);
+    EXPECT_NEAR(dec.samples()[3].x, 3.0, 1e-12);
+    EXPECT_NEAR(dec.samples()[3].y, 1.0, 1e-12);
+}
+
+TEST(PathFitness, LrsmaCircleFormulaAndFeasibility)
+{
+    // One circle of radius 1 at (5, 5) in [0, 10]^2.
+    World world;
+    world.name = "one_circle";
+    world.bounds = {0, 10, 0, 10};
+    world.circles.push_back({{5, 5}, 1.0});
+    world.queries.push_back({"default", {0, 5}, {10, 5}});
+    og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], makeCollisionModel(world));
+    ss->getSpaceInformation()->setup();
+    PathFitness fit(ss->getSpaceInformation());
+    fit.configure(FitnessKind::LengthPenalty, FitnessWeights());
+    EXPECT_TRUE(fit.exactCircles());
+    // Samples: (5, 5) (centre, v = 1) and (5.5, 5) (v = 0.5), (0, 5) free: f2 = (1 + 0.5 + 0) / 3.
+    const std::vector<Vec2> path{{0, 5}, {10, 5}};
+    const FitnessResult r = fit.evaluate(path, {{5, 5}, {5.5, 5}, {0, 5}});
+    EXPECT_NEAR(r.length, 10.0, 1e-12);
+    EXPECT_NEAR(r.violation, 0.5, 1e-12);
+    EXPECT_NEAR(r.fitness, 10.0 + 1000.0 * 0.5, 1e-9);
+    EXPECT_FALSE(r.feasible);
+    // Free samples but a colliding segment: infeasible, with the small hidden-collision violation.
+    const FitnessResult hidden = fit.evaluate(path, {{0, 5}, {10, 5}});
+    EXPECT_FALSE(hidden.feasible);
+    EXPECT_GT(hidden.fitness, 10.0);
+    // A detour above the circle is feasible and scores its length.
+    const std::vector<Vec2> detour{{0, 5}, {5, 7}, {10, 5}};
+    const FitnessResult ok = fit.evaluate(detour, detour);
+    EXPECT_TRUE(ok.feasible);
+    EXPECT_NEAR(ok.fitness, 2 * std::hypot(5, 2), 1e-12);
+    // [GMS]: the feasible path scores f1, the infeasible one F_inf + lin + cro.
+    fit.configure(FitnessKind::FeasibleInfeasible, FitnessWeights());
+    const FitnessResult g1 = fit.evaluate(detour, detour);
+    EXPECT_TRUE(g1.feasible);
+    EXPECT_GT(g1.fitness, 2 * std::hypot(5, 2)); // plus danger and turning terms
+    EXPECT_LT(g1.fitness, fit.infeasibleOffset());
+    const FitnessResult g2 = fit.evaluate(path, path);
+    EXPECT_FALSE(g2.feasible);
+    EXPECT_NEAR(g2.violation, 2.0 / 10.0 + 1.0 / 10.0, 0.01); // 2 m of 10 inside, one crossing
+    EXPECT_GT(g2.fitness, fit.infeasibleOffset());
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Determinism: the same seed gives the same best-cost trace.
+
+class MetaheuristicPlanner : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(MetaheuristicPlanner, SameSeedSameTrace)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const World world = seedWorld("bfo_case1");
+    const RunResult a = runPlanner(world, GetParam(), 7, {{"max_iterations", "20"}});
+    const RunResult b = runPlanner(world, GetParam(), 7, {{"max_iterations", "20"}});
+    const RunResult c = runPlanner(world, GetParam(), 8, {{"max_iterations", "20"}});
+    ASSERT_FALSE(a.trace.empty());
+    EXPECT_EQ(a.trace, b.trace);
+    EXPECT_EQ(a.evaluations, b.evaluations);
+    EXPECT_NE(a.trace, c.trace);
+}
+
+INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA", "LRSMA", "MGO"));
+
+// ---------------------------------------------------------------------------------------------------------
+// Quality on every shipped seed world with the papers' settings, 20 fixed seeds.
+
+struct QualityCase
+{
+    std::string planner;
+    std::string world;
+};
+
+TEST(MetaheuristicQuality, Sweep)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const std::map<std::string, double> optimum{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};
+    for (const std::string planner : {"LRSMA", "SMA", "MGO"})
+        for (const std::string w :
+             {"bfo_case1", "bfo_case1_moved", "bfo_case2", "lrsma_scenario1", "lrsma_scenario2",
+              "lrsma_scenario3", "gms_grid10", "gms_grid20", "gms_grid30"})
+        {
+            World world;
+            try
+            {
+                world = seedWorld(w);
+                makeCollisionModel(world);
+            }
+            catch (const std::exception &e)
+            {
+                std::cout << planner << " " << w << " skipped: " << e.what() << "\n";
+                continue;
+            }
+            std::vector<double> lengths;
+            unsigned int exact = 0;
+            for (unsigned long seed = 1; seed <= 20; ++seed)
+            {
+                const RunResult r = runPlanner(world, planner, seed, {{"max_iterations", "30"}});
+                if (r.exactValid)
+                {
+                    ++exact;
+                    lengths.push_back(r.length);
+                }
+            }
+            std::cout << std::setw(6) << planner << " " << std::setw(16) << w << " exact " << exact
+                      << "/20 median " << median(lengths) << " best "
+                      << (lengths.empty() ? 0.0 : *std::min_element(lengths.begin(), lengths.end()));
+            if (optimum.count(w))
+                std::cout << " gap " << 100.0 * (median(lengths) / optimum.at(w) - 1.0) << "%";
+            std::cout << "\n";
+        }
+}
