@@ -4,6 +4,7 @@
 #include "SlimeMould.h"
 #include "LRSMA.h"
 #include "MountainGazelle.h"
+#include "Genetic.h"
 
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/fmt/BFMT.h>
@@ -103,6 +104,7 @@ namespace mhplan
                omplAllocator<LRSMA>()});
         r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
                omplAllocator<MountainGazelle>()});
+        r.add({"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", omplAllocator<Genetic>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()

@@ -199,7 +199,7 @@ TEST_P(MetaheuristicPlanner, SameSeedSameTrace)
     EXPECT_NE(a.trace, c.trace);
 }
 
-INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA", "LRSMA", "MGO"));
+INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA", "LRSMA", "MGO", "GA"));
 
 // ---------------------------------------------------------------------------------------------------------
 // Quality on every shipped seed world with the papers' settings, 20 fixed seeds.
@@ -214,7 +214,7 @@ TEST(MetaheuristicQuality, Sweep)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const std::map<std::string, double> optimum{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};
-    for (const std::string planner : {"LRSMA", "SMA", "MGO"})
+    for (const std::string planner : {"GA", "LRSMA", "SMA", "MGO"})
         for (const std::string w :
              {"bfo_case1", "bfo_case1_moved", "bfo_case2", "lrsma_scenario1", "lrsma_scenario2",
               "lrsma_scenario3", "gms_grid10", "gms_grid20", "gms_grid30"})
