@@ -16,6 +16,10 @@
 
 namespace mhplan
 {
+    /** \brief Throws std::invalid_argument "parameter 'name' must be in [lo, hi]; got value" unless
+        lo <= value <= hi (shared by every planner's setters). */
+    void checkParameterRange(const char *param, double value, double lo, double hi);
+
     /** \brief Defaults a concrete planner passes to PopulationPlanner. */
     struct PopulationDefaults
     {

@@ -9,16 +9,6 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
-    namespace
-    {
-        void checkReal(const char *param, double value, double lo, double hi)
-        {
-            if (!(value >= lo && value <= hi))
-                throw std::invalid_argument(std::string("parameter '") + param + "' must be in [" +
-                                            std::to_string(lo) + ", " + std::to_string(hi) + "]; got " +
-                                            std::to_string(value));
-        }
-    } // namespace
 
     Genetic::Genetic(const ob::SpaceInformationPtr &si)
         : PopulationPlanner(si, "GA", PopulationDefaults{50, 100, 5, PathDecoding::Polyline})
@@ -42,19 +32,19 @@ namespace mhplan
 
     void Genetic::setCrossoverRate(double r)
     {
-        checkReal("crossover_rate", r, 0.0, 1.0);
+        checkParameterRange("crossover_rate", r, 0.0, 1.0);
         crossoverRate_ = r;
     }
 
     void Genetic::setMutationRate(double r)
     {
-        checkReal("mutation_rate", r, 0.0, 1.0);
+        checkParameterRange("mutation_rate", r, 0.0, 1.0);
         mutationRate_ = r;
     }
 
     void Genetic::setInsertDeleteRate(double r)
     {
-        checkReal("insert_delete_rate", r, 0.0, 0.5);
+        checkParameterRange("insert_delete_rate", r, 0.0, 0.5);
         insertDeleteRate_ = r;
     }
 
@@ -68,7 +58,7 @@ namespace mhplan
 
     void Genetic::setReplaceFraction(double f)
     {
-        checkReal("replace_fraction", f, 0.0, 1.0);
+        checkParameterRange("replace_fraction", f, 0.0, 1.0);
         replaceFraction_ = f;
     }
 

@@ -12,16 +12,6 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
-    namespace
-    {
-        void checkReal(const char *param, double value, double lo, double hi)
-        {
-            if (!(value >= lo && value <= hi))
-                throw std::invalid_argument(std::string("parameter '") + param + "' must be in [" +
-                                            std::to_string(lo) + ", " + std::to_string(hi) + "]; got " +
-                                            std::to_string(value));
-        }
-    } // namespace
 
     LRSMA::LRSMA(const ob::SpaceInformationPtr &si)
         : SlimeMould(si, "LRSMA", PopulationDefaults{30, 30, 3, PathDecoding::Spline})
@@ -42,39 +32,37 @@ namespace mhplan
 
     void LRSMA::setLevyBeta(double beta)
     {
-        checkReal("levy_beta", beta, 0.1, 1.99);
+        checkParameterRange("levy_beta", beta, 0.1, 1.99);
         beta_ = beta;
     }
 
     void LRSMA::setLevyStep(double step)
     {
-        checkReal("levy_step", step, 0.0, 1.0);
+        checkParameterRange("levy_step", step, 0.0, 1.0);
         levyStep_ = step;
     }
 
     void LRSMA::setStagnationTolerance(double fmin)
     {
-        checkReal("stagnation_tolerance", fmin, 0.0, 1e9);
+        checkParameterRange("stagnation_tolerance", fmin, 0.0, 1e9);
         fmin_ = fmin;
     }
 
     void LRSMA::setStagnationLimit(unsigned int tmax)
     {
-        if (tmax < 1 || tmax > 1000)
-            throw std::invalid_argument("parameter 'stagnation_limit' must be in [1, 1000]; got " +
-                                        std::to_string(tmax));
+        checkParameterRange("stagnation_limit", tmax, 1, 1000);
         tmax_ = tmax;
     }
 
     void LRSMA::setRotationFraction(double pr)
     {
-        checkReal("rotation_fraction", pr, 0.0, 1.0);
+        checkParameterRange("rotation_fraction", pr, 0.0, 1.0);
         pr_ = pr;
     }
 
     void LRSMA::setTemperature(double temp)
     {
-        checkReal("temperature", temp, 1e-9, 1e12);
+        checkParameterRange("temperature", temp, 1e-9, 1e12);
         temperature_ = temp;
     }
 

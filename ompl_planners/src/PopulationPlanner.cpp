@@ -9,6 +9,7 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/String.h>
 
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -18,29 +19,15 @@ namespace og = ompl::geometric;
 
 namespace mhplan
 {
-    namespace
+    void checkParameterRange(const char *param, double value, double lo, double hi)
     {
-        template <typename T> std::string rangeMessage(const char *param, const std::string &range, T value)
-        {
-            std::ostringstream msg;
-            msg << "parameter '" << param << "' must be in " << range << "; got " << value;
-            return msg.str();
-        }
-
-        void checkCount(const char *param, unsigned int value, unsigned int lo, unsigned int hi)
-        {
-            if (value < lo || value > hi)
-                throw std::invalid_argument(
-                    rangeMessage(param, "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]", value));
-        }
-
-        void checkReal(const char *param, double value, double lo, double hi)
-        {
-            if (!(value >= lo && value <= hi))
-                throw std::invalid_argument(
-                    rangeMessage(param, "[" + ompl::toString(lo) + ", " + ompl::toString(hi) + "]", value));
-        }
-    } // namespace
+        if (value >= lo && value <= hi)
+            return;
+        std::ostringstream msg;
+        msg << std::setprecision(12) << "parameter '" << param << "' must be in [" << lo << ", " << hi
+            << "]; got " << value;
+        throw std::invalid_argument(msg.str());
+    }
 
     PopulationPlanner::PopulationPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
                                          const PopulationDefaults &defaults)
@@ -87,7 +74,13 @@ namespace mhplan
         declareParam<unsigned long>("seed", this, &PopulationPlanner::setSeed, &PopulationPlanner::getSeed,
                                     "0:1:4294967295");
 
-        addPlannerProgressProperty("best cost REAL", [this] { return ompl::toString(bestCost()); });
+        addPlannerProgressProperty("best cost REAL",
+                                   [this]
+                                   {
+                                       std::ostringstream out;
+                                       out << std::setprecision(17) << bestCost();
+                                       return out.str();
+                                   });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
         addPlannerProgressProperty("fitness evaluations INTEGER",
                                    [this] { return std::to_string(evaluationCount()); });
@@ -103,7 +96,7 @@ namespace mhplan
 
     void PopulationPlanner::setPopulationSize(unsigned int n)
     {
-        checkCount("population_size", n, 2, 10000);
+        checkParameterRange("population_size", n, 2, 10000);
         if (n != populationSize_)
             invalidate();
         populationSize_ = n;
@@ -111,19 +104,19 @@ namespace mhplan
 
     void PopulationPlanner::setIterations(unsigned int t)
     {
-        checkCount("iterations", t, 1, 1000000);
+        checkParameterRange("iterations", t, 1, 1000000);
         iterations_ = t;
     }
 
     void PopulationPlanner::setMaxIterations(unsigned int n)
     {
-        checkCount("max_iterations", n, 0, 1000000);
+        checkParameterRange("max_iterations", n, 0, 1000000);
         maxIterations_ = n;
     }
 
     void PopulationPlanner::setWaypoints(unsigned int m)
     {
-        checkCount("waypoints", m, 1, 100);
+        checkParameterRange("waypoints", m, 1, 100);
         if (m != waypoints_)
             invalidate();
         waypoints_ = m;
@@ -139,7 +132,7 @@ namespace mhplan
 
     void PopulationPlanner::setSplineSamples(unsigned int n)
     {
-        checkCount("spline_samples", n, 2, 100000);
+        checkParameterRange("spline_samples", n, 2, 100000);
         if (n != splineSamples_)
             invalidate();
         splineSamples_ = n;
@@ -156,64 +149,63 @@ namespace mhplan
 
     void PopulationPlanner::setLengthWeight(double w)
     {
-        checkReal("length_weight", w, 0.0, 1e6);
+        checkParameterRange("length_weight", w, 0.0, 1e6);
         weights_.lengthWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setPenaltyWeight(double w)
     {
-        checkReal("penalty_weight", w, 0.0, 1e9);
+        checkParameterRange("penalty_weight", w, 0.0, 1e9);
         weights_.penaltyWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setDistanceWeight(double w)
     {
-        checkReal("distance_weight", w, 0.0, 1e6);
+        checkParameterRange("distance_weight", w, 0.0, 1e6);
         weights_.distanceWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setSafetyWeight(double w)
     {
-        checkReal("safety_weight", w, 0.0, 1e6);
+        checkParameterRange("safety_weight", w, 0.0, 1e6);
         weights_.safetyWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setSmoothnessWeight(double w)
     {
-        checkReal("smoothness_weight", w, 0.0, 1e6);
+        checkParameterRange("smoothness_weight", w, 0.0, 1e6);
         weights_.smoothnessWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setSafeDistance(double d)
     {
-        checkReal("safe_distance", d, 1e-6, 1e6);
+        checkParameterRange("safe_distance", d, 1e-6, 1e6);
         weights_.safeDistance = d;
         invalidate();
     }
 
     void PopulationPlanner::setInfeasibleLengthWeight(double w)
     {
-        checkReal("infeasible_length_weight", w, 0.0, 1e6);
+        checkParameterRange("infeasible_length_weight", w, 0.0, 1e6);
         weights_.infeasibleLengthWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setCrossingWeight(double w)
     {
-        checkReal("crossing_weight", w, 0.0, 1e6);
+        checkParameterRange("crossing_weight", w, 0.0, 1e6);
         weights_.crossingWeight = w;
         invalidate();
     }
 
     void PopulationPlanner::setSeed(unsigned long seed)
     {
-        if (seed > 4294967295ul)
-            throw std::invalid_argument(rangeMessage("seed", "[0, 4294967295]", seed));
+        checkParameterRange("seed", static_cast<double>(seed), 0.0, 4294967295.0);
         seed_ = seed;
         invalidate();
     }

@@ -29,8 +29,7 @@ namespace mhplan
 
     void SlimeMould::setZ(double z)
     {
-        if (!(z >= 0.0 && z <= 1.0))
-            throw std::invalid_argument("parameter 'z' must be in [0, 1]; got " + std::to_string(z));
+        checkParameterRange("z", z, 0.0, 1.0);
         z_ = z;
     }
 

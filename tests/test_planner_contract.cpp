@@ -1,0 +1,283 @@
+/* The contract every mhplan planner keeps (OMPL's Planner API as STYLE.md asks): solve / solve continues /
+   clear / solve, a termination condition already true returns at once, tiny budgets, refused parameters
+   named with their range, progress properties, the intermediate-solution callback, approximate solutions
+   when no exact one exists, and foreign (non-mhplan) validity checkers. */
+#include "Problem.h"
+#include "Registry.h"
+#include "Validity.h"
+#include "WorldIO.h"
+
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+using namespace mhplan;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    std::vector<std::string> mhplanPlanners()
+    {
+        // The population planners of ompl_planners/ (other mhplan planners join when they register).
+        std::vector<std::string> out;
+        for (const char *name : {"SMA", "LRSMA", "MGO", "GA"})
+            if (PlannerRegistry::builtin().has(name))
+                out.push_back(name);
+        return out;
+    }
+
+    og::SimpleSetupPtr seedProblem(const std::string &world = "bfo_case1")
+    {
+        const World w = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + world + ".yaml");
+        return makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
+    }
+
+    std::string progress(const ob::PlannerPtr &p, const std::string &name)
+    {
+        return p->getPlannerProgressProperties().at(name)();
+    }
+
+    ob::PlannerTerminationCondition never()
+    {
+        return ob::PlannerTerminationCondition([] { return false; });
+    }
+} // namespace
+
+class PlannerContract : public ::testing::TestWithParam<std::string>
+{
+  protected:
+    void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_WARN); }
+
+    ob::PlannerPtr make(const og::SimpleSetupPtr &ss, std::map<std::string, std::string> params = {})
+    {
+        params.emplace("seed", "11");
+        ob::PlannerPtr p = PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(), params);
+        ss->setPlanner(p);
+        ss->setup();
+        return p;
+    }
+};
+
+TEST_P(PlannerContract, SolveContinuesClearResets)
+{
+    og::SimpleSetupPtr ss = seedProblem();
+    ob::PlannerPtr p = make(ss, {{"max_iterations", "5"}});
+    EXPECT_TRUE(p->getSpecs().approximateSolutions);
+    EXPECT_TRUE(p->getSpecs().optimizingPaths);
+    EXPECT_TRUE(p->getSpecs().canReportIntermediateSolutions);
+
+    const ob::PlannerStatus s1 = p->solve(never());
+    EXPECT_TRUE(s1 == ob::PlannerStatus::EXACT_SOLUTION || s1 == ob::PlannerStatus::APPROXIMATE_SOLUTION);
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "5");
+    const unsigned long evals1 = std::stoul(progress(p, "fitness evaluations INTEGER"));
+    EXPECT_GT(evals1, 0u);
+    const double cost1 = std::stod(progress(p, "best cost REAL"));
+
+    // A second call continues: five more iterations, never a worse best cost.
+    p->solve(never());
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "10");
+    EXPECT_GT(std::stoul(progress(p, "fitness evaluations INTEGER")), evals1);
+    EXPECT_LE(std::stod(progress(p, "best cost REAL")), cost1);
+
+    // The reported cost is the objective's cost of the returned path.
+    if (ss->haveExactSolutionPath())
+    {
+        const og::PathGeometric &path = ss->getSolutionPath();
+        EXPECT_NEAR(path.length(), std::stod(progress(p, "best cost REAL")), 1e-4);
+        EXPECT_TRUE(path.check());
+    }
+
+    p->clear();
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "0");
+    EXPECT_EQ(progress(p, "fitness evaluations INTEGER"), "0");
+    EXPECT_TRUE(std::isinf(std::stod(progress(p, "best cost REAL"))));
+    ss->getProblemDefinition()->clearSolutionPaths();
+    const ob::PlannerStatus s3 = p->solve(never());
+    EXPECT_TRUE(s3 == ob::PlannerStatus::EXACT_SOLUTION || s3 == ob::PlannerStatus::APPROXIMATE_SOLUTION);
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "5");
+    // With the seed parameter set, clear() + solve() repeats the first run exactly.
+    EXPECT_EQ(std::stoul(progress(p, "fitness evaluations INTEGER")), evals1);
+    EXPECT_EQ(std::stod(progress(p, "best cost REAL")), cost1);
+}
+
+TEST_P(PlannerContract, TerminatedConditionReturnsAtOnce)
+{
+    og::SimpleSetupPtr ss = seedProblem();
+    ob::PlannerPtr p = make(ss);
+    const ob::PlannerStatus s = p->solve(ob::PlannerTerminationCondition([] { return true; }));
+    EXPECT_EQ(s, ob::PlannerStatus::TIMEOUT);
+    EXPECT_EQ(progress(p, "fitness evaluations INTEGER"), "0");
+    EXPECT_FALSE(ss->getProblemDefinition()->hasSolution());
+}
+
+TEST_P(PlannerContract, TinyBudgets)
+{
+    og::SimpleSetupPtr ss = seedProblem();
+    ob::PlannerPtr p = make(ss, {{"population_size", "2"}, {"waypoints", "1"}, {"max_iterations", "1"}});
+    const ob::PlannerStatus s = p->solve(never());
+    EXPECT_TRUE(s == ob::PlannerStatus::EXACT_SOLUTION || s == ob::PlannerStatus::APPROXIMATE_SOLUTION);
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "1");
+
+    // A condition that turns true after three checks stops inside the first population.
+    p->clear();
+    ob::IterationTerminationCondition three(3);
+    p->setProblemDefinition(ss->getProblemDefinition());
+    p->solve(ob::PlannerTerminationCondition(three));
+    EXPECT_LE(std::stoul(progress(p, "fitness evaluations INTEGER")), 3u);
+    EXPECT_EQ(progress(p, "iterations INTEGER"), "0");
+}
+
+namespace
+{
+    /** \brief Collects OMPL's log messages (ParamSet reports a setter's std::invalid_argument as a warning).
+     */
+    class CapturingHandler : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel, const char *, int) override
+        {
+            text_ += text + "\n";
+        }
+        std::string take()
+        {
+            std::string t;
+            t.swap(text_);
+            return t;
+        }
+
+      private:
+        std::string text_;
+    };
+} // namespace
+
+TEST_P(PlannerContract, InvalidParametersAreRefusedByName)
+{
+    og::SimpleSetupPtr ss = seedProblem();
+    ob::PlannerPtr p = make(ss);
+    std::vector<std::string> names;
+    p->params().getParamNames(names);
+    CapturingHandler capture;
+    ompl::msg::useOutputHandler(&capture);
+    unsigned int checked = 0;
+    for (const std::string &name : names)
+    {
+        const std::string range = p->params()[name].getRangeSuggestion();
+        const std::string before = p->params()[name].getValue();
+        std::vector<std::string> bad;
+        const auto first = range.find(':');
+        if (first == std::string::npos)
+        {
+            if (range != "0,1")
+                bad.push_back("no-such-choice"); // a list of words
+        }
+        else
+        {
+            const double lo = std::stod(range.substr(0, first));
+            const double hi = std::stod(range.substr(range.rfind(':') + 1));
+            for (const double v : {lo - 1.0, hi + 1.0})
+                if (v >= 0.0 && v <= 4e9) // else not representable in an unsigned parameter
+                {
+                    std::ostringstream value;
+                    value << std::setprecision(12) << v;
+                    bad.push_back(value.str());
+                }
+        }
+        for (const std::string &value : bad)
+        {
+            capture.take();
+            EXPECT_FALSE(p->params().setParam(name, value))
+                << GetParam() << " accepted " << name << " = " << value;
+            const std::string msg = capture.take();
+            // The setter's message names the parameter, the accepted values and the value given.
+            EXPECT_NE(msg.find("parameter '" + name + "' must be"), std::string::npos) << msg;
+            EXPECT_NE(msg.find(value), std::string::npos) << msg;
+            EXPECT_EQ(p->params()[name].getValue(), before) << name;
+            ++checked;
+        }
+    }
+    ompl::msg::restorePreviousOutputHandler();
+    EXPECT_GE(checked, 15u) << GetParam();
+    // Through the registry the same refusal becomes an InputError naming planner and parameter.
+    try
+    {
+        PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(), {{"population_size", "1"}});
+        ADD_FAILURE() << "population_size = 1 accepted";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("population_size"), std::string::npos) << e.what();
+    }
+}
+
+TEST_P(PlannerContract, IntermediateSolutionsImprove)
+{
+    og::SimpleSetupPtr ss = seedProblem();
+    ob::PlannerPtr p = make(ss, {{"max_iterations", "10"}});
+    std::vector<double> costs;
+    ss->getProblemDefinition()->setIntermediateSolutionCallback(
+        [&](const ob::Planner *, const std::vector<const ob::State *> &states, const ob::Cost c)
+        {
+            EXPECT_GE(states.size(), 2u);
+            costs.push_back(c.value());
+        });
+    ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
+    ASSERT_FALSE(costs.empty());
+    for (std::size_t i = 1; i < costs.size(); ++i)
+        EXPECT_LT(costs[i], costs[i - 1]);
+    EXPECT_NEAR(costs.back(), std::stod(progress(p, "best cost REAL")), 1e-9);
+}
+
+TEST_P(PlannerContract, ApproximateWhenNoPathExists)
+{
+    // A wall across the whole box (and beyond it: touching the wall along the border would be valid).
+    World w;
+    w.name = "walled";
+    w.bounds = {0, 10, 0, 10};
+    w.polygons.push_back(makePolygon(rectangleCorners({5, 5}, 1.0, 12.0, 0.0), "rectangle"));
+    w.queries.push_back({"default", {1, 5}, {9, 5}});
+    og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
+    ob::PlannerPtr p = make(ss, {{"max_iterations", "3"}});
+    EXPECT_EQ(p->solve(never()), ob::PlannerStatus::APPROXIMATE_SOLUTION);
+    EXPECT_TRUE(ss->getProblemDefinition()->hasApproximateSolution());
+    EXPECT_TRUE(std::isinf(std::stod(progress(p, "best cost REAL"))));
+}
+
+TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
+{
+    // OMPL's own discrete motion validator and a lambda checker: a disc of radius 2 at (5, 5).
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 10.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker(
+        [](const ob::State *s)
+        {
+            const auto *v = s->as<ob::RealVectorStateSpace::StateType>();
+            return std::hypot(v->values[0] - 5.0, v->values[1] - 5.0) >= 2.0;
+        });
+    si->setStateValidityCheckingResolution(0.001);
+    si->setup();
+    auto ss = std::make_shared<og::SimpleSetup>(si);
+    ob::ScopedState<> start(space), goal(space);
+    start[0] = 1.0;
+    start[1] = 1.0;
+    goal[0] = 9.0;
+    goal[1] = 9.0;
+    ss->setStartAndGoalStates(start, goal, 1e-9);
+    ob::PlannerPtr p = make(ss, {{"max_iterations", "20"}});
+    ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
+    const og::PathGeometric &path = ss->getSolutionPath();
+    EXPECT_TRUE(path.check());
+    EXPECT_GT(path.length(), std::hypot(8.0, 8.0));
+}
+
+INSTANTIATE_TEST_SUITE_P(Planners, PlannerContract, ::testing::ValuesIn(mhplanPlanners()));
