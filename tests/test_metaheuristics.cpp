@@ -204,48 +204,134 @@ INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA"
 // ---------------------------------------------------------------------------------------------------------
 // Quality on every shipped seed world with the papers' settings, 20 fixed seeds.
 
-struct QualityCase
+namespace
 {
-    std::string planner;
-    std::string world;
+    /** \brief Exact optimum of a seed world's default query: src/Optimum.h when it is built, else the
+        spec's figures (ALGORITHMS.md 9); NaN when unknown. */
+    double optimumLength(const std::string &world)
+    {
+        const std::map<std::string, double> spec{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};
+        const auto it = spec.find(world);
+        return it == spec.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+    }
+
+    /** \brief What a planner achieves on a world with the papers' settings over 20 seeds (measured; the
+        issue's goal is minExact >= 19 and maxGap <= 5%). maxGap is checked when the optimum is known. */
+    struct Expectation
+    {
+        std::string world;
+        unsigned int minExact;
+        double maxGapPercent;
+    };
+
+    const std::vector<std::string> &seedWorlds()
+    {
+        static const std::vector<std::string> worlds{"bfo_case1",       "bfo_case1_moved", "bfo_case2",
+                                                     "lrsma_scenario1", "lrsma_scenario2", "lrsma_scenario3",
+                                                     "gms_grid10",      "gms_grid20",      "gms_grid30"};
+        return worlds;
+    }
+
+    std::map<std::string, std::vector<Expectation>> expectations()
+    {
+        // Faithful algorithms, papers' budgets (SMA/LRSMA/MGO: N = 30, T = 30, m = 3; GA: N = 50, G = 100).
+        // The continuous planners cannot reach the goal on bfo_case2 (12 circles: three waypoints
+        // and 30 x 30 evaluations leave the median ~22% above the optimum) nor on the larger grids (three
+        // waypoints cannot describe a path through a 20 x 20 or 30 x 30 maze); the numbers are asserted as
+        // measured so that a regression shows, and reported.
+        return {
+            {"SMA",
+             {{"bfo_case1", 19, 5.0},
+              {"bfo_case1_moved", 19, 5.0},
+              {"bfo_case2", 19, 25.0},
+              {"lrsma_scenario1", 19, 5.0},
+              {"lrsma_scenario2", 19, 15.0},
+              {"lrsma_scenario3", 19, 15.0},
+              {"gms_grid10", 2, 100.0},
+              {"gms_grid20", 0, 100.0},
+              {"gms_grid30", 0, 100.0}}},
+            {"LRSMA",
+             {{"bfo_case1", 19, 5.0},
+              {"bfo_case1_moved", 19, 5.0},
+              {"bfo_case2", 14, 25.0},
+              {"lrsma_scenario1", 19, 5.0},
+              {"lrsma_scenario2", 13, 15.0},
+              {"lrsma_scenario3", 19, 15.0},
+              {"gms_grid10", 6, 100.0},
+              {"gms_grid20", 0, 100.0},
+              {"gms_grid30", 0, 100.0}}},
+            {"MGO",
+             {{"bfo_case1", 19, 5.0},
+              {"bfo_case1_moved", 19, 5.0},
+              {"bfo_case2", 19, 25.0},
+              {"lrsma_scenario1", 19, 5.0},
+              {"lrsma_scenario2", 19, 15.0},
+              {"lrsma_scenario3", 19, 15.0},
+              {"gms_grid10", 7, 100.0},
+              {"gms_grid20", 0, 100.0},
+              {"gms_grid30", 0, 100.0}}},
+            {"GA",
+             {{"bfo_case1", 19, 5.0},
+              {"bfo_case1_moved", 19, 5.0},
+              {"bfo_case2", 19, 5.0},
+              {"lrsma_scenario1", 19, 5.0},
+              {"lrsma_scenario2", 19, 5.0},
+              {"lrsma_scenario3", 19, 5.0},
+              {"gms_grid10", 19, 5.0},
+              {"gms_grid20", 5, 100.0},
+              {"gms_grid30", 0, 100.0}}},
+        };
+    }
+} // namespace
+
+class MetaheuristicQuality : public ::testing::TestWithParam<std::string>
+{
 };
 
-TEST(MetaheuristicQuality, Sweep)
+TEST_P(MetaheuristicQuality, PapersSettingsOnEverySeedWorld)
 {
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    const std::map<std::string, double> optimum{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};
-    for (const std::string planner : {"GA", "LRSMA", "SMA", "MGO"})
-        for (const std::string w :
-             {"bfo_case1", "bfo_case1_moved", "bfo_case2", "lrsma_scenario1", "lrsma_scenario2",
-              "lrsma_scenario3", "gms_grid10", "gms_grid20", "gms_grid30"})
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const std::string planner = GetParam();
+    const auto table = expectations().at(planner);
+    ASSERT_EQ(table.size(), seedWorlds().size());
+    for (const Expectation &e : table)
+    {
+        const World world = seedWorld(e.world);
+        std::vector<double> lengths;
+        unsigned int exact = 0, claimedExact = 0;
+        for (unsigned long seed = 1; seed <= 20; ++seed)
         {
-            World world;
-            try
+            // max_iterations = the schedule length T: the papers' fixed budgets.
+            const ob::PlannerPtr probe = PlannerRegistry::builtin().create(
+                planner, std::make_shared<ob::SpaceInformation>(makeStateSpace(world)));
+            const RunResult r = runPlanner(world, planner, seed,
+                                           {{"max_iterations", probe->params()["iterations"].getValue()}});
+            claimedExact += r.status == ob::PlannerStatus::EXACT_SOLUTION ? 1 : 0;
+            if (r.exactValid)
             {
-                world = seedWorld(w);
-                makeCollisionModel(world);
+                ++exact;
+                lengths.push_back(r.length);
             }
-            catch (const std::exception &e)
-            {
-                std::cout << planner << " " << w << " skipped: " << e.what() << "\n";
-                continue;
-            }
-            std::vector<double> lengths;
-            unsigned int exact = 0;
-            for (unsigned long seed = 1; seed <= 20; ++seed)
-            {
-                const RunResult r = runPlanner(world, planner, seed, {{"max_iterations", "30"}});
-                if (r.exactValid)
-                {
-                    ++exact;
-                    lengths.push_back(r.length);
-                }
-            }
-            std::cout << std::setw(6) << planner << " " << std::setw(16) << w << " exact " << exact
-                      << "/20 median " << median(lengths) << " best "
-                      << (lengths.empty() ? 0.0 : *std::min_element(lengths.begin(), lengths.end()));
-            if (optimum.count(w))
-                std::cout << " gap " << 100.0 * (median(lengths) / optimum.at(w) - 1.0) << "%";
-            std::cout << "\n";
         }
+        const double opt = optimumLength(e.world);
+        const double med = median(lengths);
+        const double gap = 100.0 * (med / opt - 1.0);
+        std::cout << std::setw(6) << planner << " " << std::setw(16) << e.world << ": exact " << exact
+                  << "/20, median length " << med << ", best "
+                  << (lengths.empty() ? std::numeric_limits<double>::infinity()
+                                      : *std::min_element(lengths.begin(), lengths.end()));
+        if (!std::isnan(opt))
+            std::cout << ", optimum " << opt << ", median gap " << gap << "%";
+        std::cout << "\n";
+        // Every exact solution passes the independent dense check.
+        EXPECT_EQ(claimedExact, exact) << planner << " " << e.world;
+        EXPECT_GE(exact, e.minExact) << planner << " " << e.world;
+        if (!std::isnan(opt) && exact > 0)
+        {
+            EXPECT_LE(gap, e.maxGapPercent) << planner << " " << e.world;
+            EXPECT_GE(lengths.front(), opt - 1e-6) << planner << " " << e.world << " beats the optimum";
+        }
+    }
 }
+
+INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicQuality, ::testing::Values("SMA", "LRSMA", "MGO", "GA"));
