@@ -372,7 +372,7 @@ namespace mhplan
                          (onY && g.blocked(ix, iy - 1)) || (onX && onY && g.blocked(ix - 1, iy - 1));
         if (!inB)
             return std::sqrt(blockedDistance2(p, ix, iy, kInf, 0.0)) - radius_;
-        return -penetrationDepth(p) - radius_;
+        return 0.0 - penetrationDepth(p) - radius_; // +0 when touching
     }
 
     bool GridCollisionModel::isValid(const Vec2 &p) const
@@ -496,12 +496,23 @@ namespace mhplan
             if (std::min(inside(a), inside(b)) < radius_)
                 return false;
             const double r2 = radius_ * radius_;
-            return !forEachBlockedInBand(a, b, radius_,
-                                         [&](int k, int l)
-                                         {
-                                             const double d2 = segmentBoxDistance2(a, b, cellBox(k, l));
-                                             return d2 < r2 && std::sqrt(d2) < radius_;
-                                         });
+            const double half = 0.5 * g.cellSize();
+            const double far = radius_ + kSqrtHalf * g.cellSize() * (1.0 + 1e-9);
+            const double far2 = far * far;
+            return !forEachBlockedInBand(
+                a, b, radius_,
+                [&](int k, int l)
+                {
+                    // The square lies between the discs of radii s/2 and s/sqrt(2)
+                    // about its centre: most cells are decided by one distance.
+                    const double c2 = pointSegmentDistance2({cellX0(k) + half, cellY0(l) + half}, a, b);
+                    if (c2 >= far2)
+                        return false;
+                    if (std::sqrt(c2) - half < radius_ * (1.0 - 1e-9))
+                        return true;
+                    const double d2 = segmentBoxDistance2(a, b, cellBox(k, l));
+                    return d2 < r2 && std::sqrt(d2) < radius_;
+                });
         }
         // Point robot: the segment must not enter the interior of B nor pass through a pinch corner. Both
         // endpoints are valid, hence in the grid's closed box, and so is the segment.
@@ -732,7 +743,7 @@ namespace mhplan
         const double ca = clearance(a) + radius_; // signed distance to B
         const double cb = clearance(b) + radius_;
         if (ca <= 0.0 || cb <= 0.0)
-            return -maxSegmentPenetration(a, b) - radius_;
+            return 0.0 - maxSegmentPenetration(a, b) - radius_;
         // Both endpoints are free, so inside the grid, and the outside is farther than either endpoint's
         // distance. Every blocked square nearer than min(ca, cb) lies in the band of that radius.
         double best = std::min(ca, cb);
@@ -741,13 +752,16 @@ namespace mhplan
             a, b, best,
             [&](int k, int l)
             {
+                const double far = std::sqrt(best2) + kSqrtHalf * grid_->cellSize() * (1.0 + 1e-9);
+                if (pointSegmentDistance2(grid_->cellCenter(k, l), a, b) >= far * far)
+                    return false; // the whole square is farther than the best so far
                 best2 = std::min(
                     best2,
                     segmentBoxDistance2(a, b, CellBox{cellX0(k), cellX0(k + 1), cellY0(l), cellY0(l + 1)}));
                 return best2 == 0.0;
             });
         if (best2 == 0.0)
-            return -maxSegmentPenetration(a, b) - radius_;
+            return 0.0 - maxSegmentPenetration(a, b) - radius_;
         return std::min(best, std::sqrt(best2)) - radius_;
     }
 } // namespace mhplan
