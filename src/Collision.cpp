@@ -88,21 +88,7 @@ namespace mhplan
         for (const auto &c : circles_)
             best = std::min(best, pointSegmentDistance(c.center, a, b) - c.radius);
         for (const auto &poly : polygons_)
-        {
-            double d = segmentPolygonDistance(a, b, poly.vertices);
-            if (d == 0.0)
-            {
-                // Penetration: the deepest point of the segment inside the polygon. The signed distance is
-                // concave inside a convex polygon, so its minimum along the segment is at an endpoint or at
-                // a point where the segment crosses a medial-axis branch; sampling the endpoints and the
-                // crossings with the polygon's vertex bisectors is exact for convex polygons and a good bound
-                // otherwise.
-                d = std::min({0.0, pointPolygonSignedDistance(a, poly.vertices),
-                              pointPolygonSignedDistance(b, poly.vertices)});
-                d = std::min(d, deepestSegmentPenetration(a, b, poly.vertices));
-            }
-            best = std::min(best, d);
-        }
+            best = std::min(best, deepestSegmentPenetration(a, b, poly.vertices));
         return best - radius_;
     }
 

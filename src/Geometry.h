@@ -107,9 +107,10 @@ namespace mhplan
         along an edge or touching a vertex does not count). */
     bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly);
 
-    /** \brief Minimum over the segment [a, b] of the polygon's signed distance (0 or positive when the
-        segment stays outside). Exact for convex polygons; for non-convex ones the minimum over the
-        breakpoints of the convex pieces' formula and 64 evenly spaced samples (an upper bound). */
+    /** \brief Minimum over the segment [a, b] of the polygon's signed distance: the segment-polygon distance
+        when the segment stays outside, minus the deepest penetration otherwise. Exact for convex polygons;
+        for non-convex ones an upper bound within |b - a| / 128 of the minimum (sampling plus golden-section
+        refinement). */
     double deepestSegmentPenetration(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly);
 
     /** \brief Distance from the segment [a, b] to the closed disc (c, r) (0 if they meet). */
