@@ -24,6 +24,8 @@
 #include <ompl/geometric/planners/sbl/SBL.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
 
+#include <ompl/tools/benchmark/Benchmark.h>
+
 #include <cerrno>
 #include <cstdlib>
 #include <sstream>
@@ -104,7 +106,8 @@ namespace mhplan
                omplAllocator<LRSMA>()});
         r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
                omplAllocator<MountainGazelle>()});
-        r.add({"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", omplAllocator<Genetic>()});
+        r.add(
+            {"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", omplAllocator<Genetic>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()
@@ -234,5 +237,25 @@ namespace mhplan
         if (eq == std::string::npos || eq == 0)
             throw InputError("expected key=value, got '" + item + "'");
         out[item.substr(0, eq)] = item.substr(eq + 1);
+    }
+
+    ob::PlannerPtr allocatePlanner(const std::string &name, const ob::SpaceInformationPtr &si,
+                                   const std::map<std::string, std::string> &params)
+    {
+        return PlannerRegistry::builtin().create(name, si, params);
+    }
+
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<std::string> &names)
+    {
+        const PlannerRegistry &reg = PlannerRegistry::builtin();
+        std::vector<std::string> chosen = names;
+        if (chosen.empty())
+            for (const auto &n : reg.names())
+                if (reg.get(n).origin == "mhplan")
+                    chosen.push_back(n);
+        for (const auto &n : chosen)
+            reg.get(n); // refuse unknown names before adding anything
+        for (const auto &n : chosen)
+            benchmark.addPlannerAllocator(reg.get(n).allocate);
     }
 } // namespace mhplan

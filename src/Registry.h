@@ -9,6 +9,11 @@
 #include <string>
 #include <vector>
 
+namespace ompl::tools
+{
+    class Benchmark;
+}
+
 namespace mhplan
 {
     using PlannerAllocator = std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &)>;
@@ -45,6 +50,17 @@ namespace mhplan
       private:
         std::map<std::string, PlannerEntry> entries_;
     };
+
+    /** \brief SelfConfig-style factory: planner \e name from the built-in registry on \e si, with \e params
+        applied (InputError for an unknown name, parameter or out-of-range value). */
+    ompl::base::PlannerPtr allocatePlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
+                                           const std::map<std::string, std::string> &params = {});
+
+    /** \brief Add planners to an existing OMPL benchmark in one call: by default every mhplan planner
+        (origin "mhplan"); \e names may list any registered planner. Names are checked before anything is
+        added. */
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark,
+                                const std::vector<std::string> &names = {});
 
     /** \brief Add every built-in planner to \e registry. */
     void registerBuiltinPlanners(PlannerRegistry &registry);

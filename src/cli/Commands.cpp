@@ -31,6 +31,15 @@ namespace mhplan::cli
     {
         if (const char *env = std::getenv("MHPLAN_ENVIRONMENTS"))
             return env;
+        // An installed program uses its share/mhplan/environments; a build tree the source tree's worlds.
+        std::error_code ec;
+        const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+        if (!ec)
+        {
+            const fs::path installed = exe.parent_path().parent_path() / MHPLAN_INSTALLED_ENVIRONMENTS_DIR;
+            if (fs::is_directory(installed))
+                return installed.string();
+        }
         return MHPLAN_ENVIRONMENTS_DIR;
     }
 

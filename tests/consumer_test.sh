@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Install mhplan into a temporary prefix, build tests/consumer against it as a separate CMake project, run
+# it, and build the Debian package. Usage: consumer_test.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src="$1"
+build="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+test -f "$work/prefix/lib/cmake/mhplan/mhplanConfig.cmake"
+test -f "$work/prefix/include/mhplan/SlimeMould.h"
+test -x "$work/prefix/bin/mhplan"
+# The installed program finds its installed worlds (not the source tree's).
+worlds=$(env -u MHPLAN_ENVIRONMENTS "$work/prefix/bin/mhplan" worlds)
+grep -q bfo_case2 <<<"$worlds"
+cmake -S "$src/tests/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$work/consumer" -j 2 >/dev/null
+"$work/consumer/consumer"
+# The Debian package, with its dependencies.
+(cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" >/dev/null)
+deb=$(ls "$work"/mhplan_*.deb)
+depends=$(dpkg-deb -f "$deb" Depends)
+contents=$(dpkg-deb -c "$deb")
+grep -q libompl-dev <<<"$depends"
+grep -q "usr/lib/cmake/mhplan/mhplanConfig.cmake" <<<"$contents"
+grep -q "usr/bin/mhplan" <<<"$contents"
+echo "consumer project built and ran against the installed package; $(basename "$deb") built"
