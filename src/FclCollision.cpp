@@ -170,9 +170,12 @@ namespace mhplan
             /** Margin that absorbs rounding in FCL's AABBs (relative to the world's coordinates). */
             double eps{0.0};
 
-            std::size_t obstacleOf(const fcl::CollisionObjectd *o) const
+            /** The obstacle id of the pair (obstacle, query) a manager hands to a callback. The order of the
+               two differs between FCL's managers (SaP passes the query first): the query has no user data. */
+            std::size_t obstacleOf(const fcl::CollisionObjectd *o1, const fcl::CollisionObjectd *o2) const
             {
-                return *static_cast<const std::size_t *>(o->getUserData());
+                const void *data = o1->getUserData() != nullptr ? o1->getUserData() : o2->getUserData();
+                return *static_cast<const std::size_t *>(data);
             }
             bool isCircle(std::size_t id) const { return id < circles.size(); }
             const Polygon &polygon(std::size_t id) const { return polygons[id - circles.size()]; }
@@ -197,10 +200,10 @@ namespace mhplan
         };
 
         /** Exactly the per-obstacle test of AnalyticCollisionModel::isValid. */
-        bool pointCollisionCallback(fcl::CollisionObjectd *o, fcl::CollisionObjectd *, void *cdata)
+        bool pointCollisionCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *cdata)
         {
             auto &d = *static_cast<PointCollisionData *>(cdata);
-            const std::size_t id = d.impl->obstacleOf(o);
+            const std::size_t id = d.impl->obstacleOf(o1, o2);
             if (d.impl->isCircle(id))
             {
                 const Circle &c = d.impl->circles[id];
@@ -234,10 +237,10 @@ namespace mhplan
         };
 
         /** Exactly the per-obstacle test of AnalyticCollisionModel::segmentValid. */
-        bool segmentCollisionCallback(fcl::CollisionObjectd *o, fcl::CollisionObjectd *, void *cdata)
+        bool segmentCollisionCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *cdata)
         {
             auto &d = *static_cast<SegmentCollisionData *>(cdata);
-            const std::size_t id = d.impl->obstacleOf(o);
+            const std::size_t id = d.impl->obstacleOf(o1, o2);
             if (d.impl->isCircle(id))
             {
                 const Circle &c = d.impl->circles[id];
@@ -276,10 +279,10 @@ namespace mhplan
             compute it, robot radius excluded); then tells the manager which subtrees it may prune: any whose
             AABB lies farther than the best distance so far (never less than zero, so that every obstacle
             containing the query stays eligible, plus a rounding margin). */
-        bool distanceCallback(fcl::CollisionObjectd *o, fcl::CollisionObjectd *, void *cdata, double &dist)
+        bool distanceCallback(fcl::CollisionObjectd *o1, fcl::CollisionObjectd *o2, void *cdata, double &dist)
         {
             auto &d = *static_cast<DistanceData *>(cdata);
-            const std::size_t id = d.impl->obstacleOf(o);
+            const std::size_t id = d.impl->obstacleOf(o1, o2);
             double v = std::numeric_limits<double>::infinity();
             if (d.impl->isCircle(id))
             {

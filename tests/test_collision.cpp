@@ -351,6 +351,42 @@ TEST_P(FclVsAnalytic, ConcurrentQueriesMatchSequentialOnes)
 
 INSTANTIATE_TEST_SUITE_P(RobotRadius, FclVsAnalytic, ::testing::Values(0.0, 0.3));
 
+/* A large world (coordinates up to 1000, 10,000 obstacles, overlapping), where the broadphase prunes hard and
+   FCL's AABBs carry larger rounding: FCL must still agree with the oracle. */
+TEST(FclVsAnalyticLarge, TenThousandObstacles)
+{
+    for (double r : {0.0, 1.5})
+    {
+        World w;
+        w.name = "large";
+        w.bounds = {0.0, 1000.0, 0.0, 1000.0};
+        w.robotRadius = r;
+        std::mt19937_64 rng(99);
+        for (int i = 0; i < 9900; ++i)
+            w.circles.push_back({{uniform(rng, 0, 1000), uniform(rng, 0, 1000)}, uniform(rng, 0.5, 3.0)});
+        for (int i = 0; i < 100; ++i)
+            w.polygons.push_back(
+                makePolygon(rectangleCorners({uniform(rng, 0, 1000), uniform(rng, 0, 1000)},
+                                             uniform(rng, 1, 20), uniform(rng, 1, 20), uniform(rng, 0, kPi)),
+                            "rectangle"));
+        const AnalyticCollisionModel analytic(w);
+        const FclCollisionModel fcl(w);
+        for (int i = 0; i < 2000; ++i)
+        {
+            const Vec2 p{uniform(rng, 0, 1000), uniform(rng, 0, 1000)};
+            ASSERT_EQ(analytic.isValid(p), fcl.isValid(p)) << p.x << ", " << p.y;
+            ASSERT_NEAR(analytic.clearance(p), fcl.clearance(p), 1e-9) << p.x << ", " << p.y;
+        }
+        for (int i = 0; i < 500; ++i)
+        {
+            const Vec2 a{uniform(rng, 0, 1000), uniform(rng, 0, 1000)};
+            const Vec2 b = a + Vec2{uniform(rng, -20, 20), uniform(rng, -20, 20)};
+            ASSERT_EQ(analytic.segmentValid(a, b), fcl.segmentValid(a, b));
+            ASSERT_NEAR(analytic.segmentClearance(a, b), fcl.segmentClearance(a, b), 1e-9);
+        }
+    }
+}
+
 namespace
 {
     /** Both geometric back ends of a world. */
