@@ -11,7 +11,7 @@ PACKAGES=(
   libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev
   ompl-demos sqlite3
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-yaml
 )
 
 missing=()

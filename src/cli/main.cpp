@@ -38,6 +38,9 @@ namespace
              {cmdCompare,
               "compare [WORLD...] [--planners A,B,...] [--time S] [--runs N] [--seed N]\n"
               "        (plan every shipped world, or the given ones, with each planner; print a table)"}},
+            {"report",
+             {cmdReport,
+              "report DATABASE [-o DIR]   (HTML report: figures and tables from a benchmark database)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };

@@ -1,0 +1,171 @@
+"""Reading an OMPL benchmark database (as written by ompl_benchmark_statistics) into plain Python data.
+
+The schema is OMPL's: experiments, plannerConfigs, runs (one column per run property, spaces turned into
+underscores), progress (runid, time, one column per progress property) and enums. mhplan's campaigns add
+experiment parameters (world, optimum, ...) and run properties (optimality gap, clearance, ...); this module
+reads whatever is there and the rest of the report says plainly what is missing.
+"""
+
+import math
+import sqlite3
+from dataclasses import dataclass, field
+
+# OMPL 1.5's ompl::base::PlannerStatus::StatusType, used when the database has no enums table entries.
+DEFAULT_STATUS = {
+    0: "Unknown status",
+    1: "Invalid start",
+    2: "Invalid goal",
+    3: "Unrecognized goal type",
+    4: "Timeout",
+    5: "Approximate solution",
+    6: "Exact solution",
+    7: "Crash",
+    8: "Abort",
+}
+
+# Outcome classes drawn in the success bars.
+OUTCOMES = ("exact", "approximate", "failed", "crashed")
+
+
+def classify_status(description):
+    """Map a status description to one of OUTCOMES."""
+    d = (description or "").lower()
+    if "exact" in d:
+        return "exact"
+    if "approximate" in d:
+        return "approximate"
+    if "crash" in d:
+        return "crashed"
+    return "failed"
+
+
+@dataclass
+class Experiment:
+    id: int
+    name: str
+    params: dict  # every column of the experiments table
+
+
+@dataclass
+class Run:
+    id: int
+    experiment: int
+    planner: str
+    values: dict  # every column of the runs table
+    outcome: str
+
+
+@dataclass
+class Database:
+    path: str
+    experiments: list
+    planners: list  # planner names in first-seen order
+    runs: list
+    run_columns: list
+    progress_columns: list
+    progress: dict = field(default_factory=dict)  # runid -> list of (time, {column: value})
+    notes: list = field(default_factory=list)  # plain-language gaps found while reading
+
+    def runs_of(self, experiment_id, planner=None):
+        return [r for r in self.runs if r.experiment == experiment_id and (planner is None or r.planner == planner)]
+
+    def planners_of(self, experiment_id):
+        seen = []
+        for r in self.runs:
+            if r.experiment == experiment_id and r.planner not in seen:
+                seen.append(r.planner)
+        return seen
+
+
+def _columns(cur, table):
+    cur.execute("PRAGMA table_info(%s)" % table)
+    return [row[1] for row in cur.fetchall()]
+
+
+def _tables(cur):
+    cur.execute("SELECT name FROM sqlite_master WHERE type='table'")
+    return {row[0] for row in cur.fetchall()}
+
+
+def to_float(value):
+    """A finite float, or None."""
+    if value is None:
+        return None
+    try:
+        f = float(value)
+    except (TypeError, ValueError):
+        return None
+    return f if math.isfinite(f) else None
+
+
+def load(path):
+    """Read the database at \\p path. Raises ValueError when it is not an OMPL benchmark database."""
+    conn = sqlite3.connect("file:%s?mode=ro" % path, uri=True)
+    try:
+        cur = conn.cursor()
+        tables = _tables(cur)
+        missing = {"experiments", "plannerConfigs", "runs"} - tables
+        if missing:
+            raise ValueError("%s is not an OMPL benchmark database (missing tables: %s)" % (path, ", ".join(sorted(missing))))
+        notes = []
+        exp_cols = _columns(cur, "experiments")
+        cur.execute("SELECT * FROM experiments ORDER BY id")
+        experiments = [Experiment(row[0], row[exp_cols.index("name")], dict(zip(exp_cols, row))) for row in cur.fetchall()]
+
+        status_names = dict(DEFAULT_STATUS)
+        if "enums" in tables:
+            cur.execute("SELECT value, description FROM enums WHERE name = 'status'")
+            rows = cur.fetchall()
+            if rows:
+                status_names = {int(v): d for v, d in rows}
+
+        cur.execute("SELECT id, name FROM plannerConfigs")
+        planner_names = {pid: name for pid, name in cur.fetchall()}
+        run_cols = _columns(cur, "runs")
+        cur.execute("SELECT * FROM runs ORDER BY id")
+        runs, planners = [], []
+        for row in cur.fetchall():
+            values = dict(zip(run_cols, row))
+            name = planner_names.get(values["plannerid"], "planner %s" % values["plannerid"])
+            if name.startswith("geometric_"):
+                name = name[len("geometric_"):]
+            if name not in planners:
+                planners.append(name)
+            if "status" in values and values["status"] is not None:
+                outcome = classify_status(status_names.get(int(values["status"]), ""))
+            else:
+                solved = values.get("solved")
+                outcome = "exact" if solved in (1, "1", True) else "failed"
+            runs.append(Run(values["id"], values["experimentid"], name, values, outcome))
+        if "status" not in run_cols:
+            notes.append("The runs table has no status column: outcomes are inferred from 'solved'.")
+
+        progress, progress_cols = {}, []
+        if "progress" in tables:
+            progress_cols = _columns(cur, "progress")
+            cur.execute("SELECT * FROM progress ORDER BY runid, time")
+            for row in cur.fetchall():
+                values = dict(zip(progress_cols, row))
+                progress.setdefault(values["runid"], []).append((to_float(values["time"]), values))
+        else:
+            notes.append("The database has no progress table: no convergence plots.")
+        return Database(path, experiments, planners, runs, run_cols, progress_cols, progress, notes)
+    finally:
+        conn.close()
+
+
+def run_value(run, *names):
+    """The first finite float among the run's columns \\p names (None when none is present)."""
+    for n in names:
+        if n in run.values:
+            v = to_float(run.values[n])
+            if v is not None:
+                return v
+    return None
+
+
+def experiment_value(experiment, *names):
+    for n in names:
+        if n in experiment.params:
+            return experiment.params[n]
+    return None

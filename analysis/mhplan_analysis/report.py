@@ -1,0 +1,427 @@
+"""One HTML report from an mhplan/OMPL benchmark database: box plots, success bars, convergence, paths,
+the papers' tables and a ranking per problem. Every number in a table is computed here from the database
+(see tables(); the tests recompute them with SQL)."""
+
+import html
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from . import db as dbmod  # noqa: E402
+from . import papers, stats, worlds  # noqa: E402
+
+# (key, candidate run columns in order of preference, axis label). The first column present is used.
+ATTRIBUTES = [
+    ("time", ["time"], "time [s]"),
+    ("length", ["path_length", "solution_length"], "path length [m]"),
+    ("gap", ["optimality_gap"], "optimality gap [%]"),
+    ("clearance", ["min_clearance", "solution_clearance"], "minimum clearance [m]"),
+    ("smoothness", ["smoothness", "solution_smoothness"], "smoothness"),
+]
+OUTCOME_COLORS = {"exact": "#2ca02c", "approximate": "#ff7f0e", "failed": "#9e9e9e", "crashed": "#d62728"}
+
+
+def _column(database, candidates):
+    for c in candidates:
+        if c in database.run_columns:
+            return c
+    return None
+
+
+def _world_name(exp):
+    w = dbmod.experiment_value(exp, "world", "world_name")
+    if w:
+        return str(w)
+    return exp.name.split("/")[0]
+
+
+def _optimum(exp):
+    return dbmod.to_float(dbmod.experiment_value(exp, "optimum", "optimum_length", "exact_optimum"))
+
+
+def _slug(text):
+    return "".join(c if c.isalnum() or c in "-_" else "_" for c in text)
+
+
+def _planner_colors(planners):
+    """Distinct colours: tab10, then Dark2 and Set1 (never two shades of one hue side by side)."""
+    palette = list(plt.get_cmap("tab10").colors) + list(plt.get_cmap("Dark2").colors) + list(plt.get_cmap("Set1").colors)
+    return {p: palette[i % len(palette)] for i, p in enumerate(planners)}
+
+
+def _run_length(database, run):
+    col = _column(database, ["path_length", "solution_length"])
+    return dbmod.run_value(run, col) if col else None
+
+
+# ---------------------------------------------------------------------------------------------- tables
+def table_rows(database, exp):
+    """Per planner of one experiment: runs, outcome counts, length min/mean/std/median, time of the best run,
+    mean time, median gap, median time to within 1% of the optimum. Lengths only over exact runs."""
+    opt = _optimum(exp)
+    gap_col = _column(database, ["optimality_gap"])
+    rows = []
+    for planner in database.planners_of(exp.id):
+        runs = database.runs_of(exp.id, planner)
+        exact = [r for r in runs if r.outcome == "exact"]
+        lengths = [(_run_length(database, r), r) for r in exact]
+        lengths = [(l, r) for l, r in lengths if l is not None]
+        times = [dbmod.run_value(r, "time") for r in runs]
+        best = min(lengths, key=lambda lr: lr[0]) if lengths else None
+        gaps = [dbmod.run_value(r, gap_col) for r in exact] if gap_col else []
+        if not gap_col and opt:
+            gaps = [100.0 * (l - opt) / opt for l, _ in lengths]
+        rows.append(
+            {
+                "planner": planner,
+                "runs": len(runs),
+                "counts": {o: sum(1 for r in runs if r.outcome == o) for o in dbmod.OUTCOMES},
+                "min": best[0] if best else None,
+                "mean": stats.mean([l for l, _ in lengths]),
+                "std": stats.std([l for l, _ in lengths]),
+                "median": stats.median([l for l, _ in lengths]),
+                "best_time": dbmod.run_value(best[1], "time") if best else None,
+                "mean_time": stats.mean(times),
+                "median_gap": stats.median(gaps),
+                "t1pct": _median_time_to_within(database, runs, opt, 0.01),
+            }
+        )
+    return rows
+
+
+def _time_to_within(database, run, opt, tol):
+    """First time the run's cost was within tol of the optimum (progress 'best cost', else the final exact
+    path and the run's time); None when it never was."""
+    target = opt * (1.0 + tol)
+    samples = database.progress.get(run.id)
+    if samples and "best_cost" in database.progress_columns:
+        for t, values in samples:
+            c = dbmod.to_float(values.get("best_cost"))
+            if c is not None and t is not None and c <= target:
+                return t
+    if run.outcome == "exact":
+        length = _run_length(database, run)
+        if length is not None and length <= target:
+            return dbmod.run_value(run, "time")
+    return None
+
+
+def _median_time_to_within(database, runs, opt, tol):
+    if not opt or not runs:
+        return None
+    ts = sorted(math.inf if t is None else t for t in (_time_to_within(database, r, opt, tol) for r in runs))
+    m = float(np.median(ts))
+    return m  # may be inf: more than half of the runs never got there
+
+
+def _fmt(v, digits=3, suffix=""):
+    if v is None:
+        return "&ndash;"
+    if isinstance(v, float) and math.isinf(v):
+        return "never"
+    return ("%." + str(digits) + "f%s") % (v, suffix)
+
+
+# ---------------------------------------------------------------------------------------------- figures
+def box_plots(database, exp, outdir):
+    """One figure per experiment: a box plot per available attribute (Planner Arena style)."""
+    present = [(k, _column(database, c), label) for k, c, label in ATTRIBUTES]
+    present = [(k, c, label) for k, c, label in present if c]
+    planners = database.planners_of(exp.id)
+    if not present or not planners:
+        return None, []
+    fig, axes = plt.subplots(1, len(present), figsize=(3.2 * len(present) + 1.0, 4.6), squeeze=False)
+    missing = []
+    for ax, (key, col, label) in zip(axes[0], present):
+        data, names = [], []
+        for p in planners:
+            runs = database.runs_of(exp.id, p)
+            # Quality attributes over exact runs only; time over all runs.
+            chosen = runs if key == "time" else [r for r in runs if r.outcome == "exact"]
+            vals = [dbmod.run_value(r, col) for r in chosen]
+            data.append([v for v in vals if v is not None])
+            names.append(p)
+        if not any(data):
+            missing.append(label)
+        ax.boxplot([d if d else [np.nan] for d in data], vert=True, widths=0.6, showfliers=True)
+        ax.set_xticks(range(1, len(names) + 1))
+        ax.set_xticklabels(names, rotation=60, ha="right", fontsize=8)
+        ax.set_title(label, fontsize=10)
+        if key == "time":
+            ax.set_yscale("log")
+        if key == "length" and _optimum(exp):
+            ax.axhline(_optimum(exp), color="#1f77b4", linestyle="--", linewidth=1, label="exact optimum")
+            ax.legend(fontsize=7, loc="upper right")
+        ax.grid(axis="y", alpha=0.3)
+    fig.suptitle(exp.name, fontsize=11)
+    fig.tight_layout()
+    path = os.path.join(outdir, "box_%s.png" % _slug(exp.name))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.basename(path), missing
+
+
+def success_bars(database, outdir):
+    """Stacked bars per experiment and planner: exact, approximate, failed, crashed (share of runs)."""
+    exps = database.experiments
+    if not exps:
+        return None
+    fig, axes = plt.subplots(len(exps), 1, figsize=(10, 1.9 * len(exps) + 1.2), squeeze=False)
+    for ax, exp in zip(axes[:, 0], exps):
+        planners = database.planners_of(exp.id)
+        left = np.zeros(len(planners))
+        for outcome in dbmod.OUTCOMES:
+            share = []
+            for p in planners:
+                runs = database.runs_of(exp.id, p)
+                share.append(100.0 * sum(1 for r in runs if r.outcome == outcome) / max(len(runs), 1))
+            ax.barh(range(len(planners)), share, left=left, color=OUTCOME_COLORS[outcome], label=outcome, height=0.7)
+            left += np.array(share)
+        ax.set_yticks(range(len(planners)))
+        ax.set_yticklabels(planners, fontsize=7)
+        ax.invert_yaxis()
+        ax.set_xlim(0, 100)
+        ax.set_title(exp.name, fontsize=9, loc="left")
+    axes[-1, 0].set_xlabel("share of runs [%]")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="upper center", ncol=4, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (1.9 * len(exps) + 1.2)))
+    path = os.path.join(outdir, "success.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.basename(path)
+
+
+def convergence_plot(database, exp, outdir, colors):
+    """Best cost against time per optimizing planner: median and 95% CI over runs, log time axis."""
+    if "best_cost" not in database.progress_columns:
+        return None
+    series = {}
+    for p in database.planners_of(exp.id):
+        runs = database.runs_of(exp.id, p)
+        samples = {r.id: [(t, dbmod.to_float(v.get("best_cost"))) for t, v in database.progress.get(r.id, [])] for r in runs}
+        if not any(any(c is not None for _, c in s) for s in samples.values()):
+            continue
+        series[p] = (runs, samples)
+    if not series:
+        return None
+    tmax = max((dbmod.to_float(exp.params.get("timelimit")) or 1.0), 1e-3)
+    tmin = tmax
+    for runs, samples in series.values():
+        for s in samples.values():
+            for t, c in s:
+                if t is not None and t > 0 and c is not None:
+                    tmin = min(tmin, t)
+    tmin = max(min(tmin, tmax / 10.0), 1e-5)
+    grid = np.logspace(math.log10(tmin), math.log10(tmax), 120)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for p, (runs, samples) in series.items():
+        matrix = np.array([stats.step_series(samples[r.id], grid) for r in runs])
+        med, lo, hi = stats.median_band(matrix)
+        if np.all(np.isnan(med)):
+            continue
+        ax.plot(grid, med, color=colors[p], label=p, linewidth=1.6)
+        ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.18, linewidth=0)
+    opt = _optimum(exp)
+    if opt:
+        ax.axhline(opt, color="black", linestyle="--", linewidth=1, label="exact optimum %.4f" % opt)
+        top = ax.get_ylim()[1]
+        ax.set_ylim(opt * 0.995, min(top, opt * 1.6))
+    ax.set_xscale("log")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("best cost (median, 95% CI)")
+    ax.set_title(exp.name)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    path = os.path.join(outdir, "convergence_%s.png" % _slug(exp.name))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.basename(path)
+
+
+def path_figure(database, exp, paths, world_file, outdir, colors):
+    """The world with each planner's best and median exact path."""
+    if not world_file or not os.path.exists(world_file):
+        return None, "world file %s not found" % (world_file or "(not recorded)")
+    try:
+        world = worlds.load_world(world_file)
+    except (OSError, ValueError, KeyError) as e:
+        return None, "cannot draw %s: %s" % (world_file, e)
+    fig, ax = plt.subplots(figsize=(8.5, 7))
+    worlds.draw_world(ax, world)
+    drawn = 0
+    for p in database.planners_of(exp.id):
+        exact = [(r, _run_length(database, r)) for r in database.runs_of(exp.id, p) if r.outcome == "exact"]
+        exact = sorted([(l, r) for r, l in exact if l is not None and r.id in paths], key=lambda lr: lr[0])
+        if not exact:
+            continue
+        best = exact[0][1]
+        med = exact[len(exact) // 2][1]
+        xs, ys = zip(*paths[best.id])
+        ax.plot(xs, ys, color=colors[p], linewidth=1.8, label="%s best %.3f" % (p, exact[0][0]))
+        if med.id != best.id:
+            xs, ys = zip(*paths[med.id])
+            ax.plot(xs, ys, color=colors[p], linewidth=1.0, linestyle="--", alpha=0.8)
+        drawn += 1
+    q = next(iter(world.queries.values()), None)
+    if q:
+        ax.plot(*q[0], "o", color="#2ca02c", markersize=8, clip_on=False, zorder=5)
+        ax.plot(*q[1], "*", color="#1f77b4", markersize=13, clip_on=False, zorder=5)
+    ax.set_title("%s: best (solid) and median (dashed) paths" % exp.name, fontsize=10)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    path = os.path.join(outdir, "paths_%s.png" % _slug(exp.name))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.basename(path), None if drawn else "no saved exact paths"
+
+
+def load_paths(database_path):
+    """Saved solution paths, runid -> [(x, y), ...], from the database's 'paths' table (runid, points as
+    "x y;x y;...") when present."""
+    import sqlite3
+
+    conn = sqlite3.connect("file:%s?mode=ro" % database_path, uri=True)
+    try:
+        cur = conn.cursor()
+        cur.execute("SELECT name FROM sqlite_master WHERE type='table' AND name='paths'")
+        if not cur.fetchone():
+            return {}
+        cur.execute("SELECT runid, points FROM paths")
+        out = {}
+        for runid, text in cur.fetchall():
+            pts = [tuple(float(v) for v in item.split()) for item in (text or "").split(";") if item.strip()]
+            if pts:
+                out[runid] = pts
+        return out
+    finally:
+        conn.close()
+
+
+# ---------------------------------------------------------------------------------------------- HTML
+def _table(headers, rows):
+    out = ["<table><tr>" + "".join("<th>%s</th>" % h for h in headers) + "</tr>"]
+    for r in rows:
+        out.append("<tr>" + "".join("<td>%s</td>" % c for c in r) + "</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+CSS = """body{font-family:sans-serif;max-width:1200px;margin:2em auto;color:#222}
+table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
+th{background:#f0f0f0}td:first-child,th:first-child{text-align:left}img{max-width:100%;border:1px solid #eee}
+.note{background:#fff8e0;border-left:4px solid #e0b000;padding:0.4em 0.8em}h2{border-bottom:1px solid #ddd}"""
+
+
+def write_report(database_path, outdir, world_dir=None):
+    """Write index.html and its figures into outdir; returns the index path."""
+    os.makedirs(outdir, exist_ok=True)
+    database = dbmod.load(database_path)
+    paths = load_paths(database_path)
+    colors = _planner_colors(database.planners)
+    notes = list(database.notes)
+    parts = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>mhplan report</title><style>%s</style></head><body>" % CSS]
+    parts.append("<h1>mhplan benchmark report</h1>")
+    parts.append("<p>Database <code>%s</code>: %d experiments, %d planners, %d runs.</p>" % (html.escape(database_path), len(database.experiments), len(database.planners), len(database.runs)))
+    if not paths:
+        notes.append("The database has no saved paths: no path figures.")
+
+    # Ranking and success first: what a reader wants.
+    parts.append("<h2>Success</h2>")
+    sb = success_bars(database, outdir)
+    if sb:
+        parts.append("<img src='%s' alt='success rates'>" % sb)
+
+    per_exp_tables = {}
+    for exp in database.experiments:
+        per_exp_tables[exp.id] = table_rows(database, exp)
+
+    parts.append("<h2>Ranking per problem</h2>")
+    for exp in database.experiments:
+        rows = sorted(per_exp_tables[exp.id], key=lambda r: (-r["counts"]["exact"] / max(r["runs"], 1), r["median_gap"] if r["median_gap"] is not None else math.inf))
+        opt = _optimum(exp)
+        parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), _fmt(opt, 4) if opt else "not recorded (no gaps)"))
+        parts.append(
+            _table(
+                ["planner", "success rate", "median gap", "median time to within 1% [s]", "runs"],
+                [
+                    (
+                        html.escape(r["planner"]),
+                        "%.0f%%" % (100.0 * r["counts"]["exact"] / max(r["runs"], 1)),
+                        _fmt(r["median_gap"], 2, "%"),
+                        _fmt(r["t1pct"], 4),
+                        r["runs"],
+                    )
+                    for r in rows
+                ],
+            )
+        )
+
+    # The papers' tables.
+    lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in database.experiments if _world_name(e) in papers.LRSMA_WORLDS]
+    if lrsma_exps:
+        parts.append("<h2>[LRSMA] Table 3 layout (our runs; the paper's numbers beside)</h2>")
+        parts.append("<p class='note'>Our scenarios are reconstructions (the paper publishes no coordinates): the paper's numbers are context, not a like-for-like comparison.</p>")
+        for scenario, exp in sorted(lrsma_exps, key=lambda se: se[0]):
+            rows = []
+            for r in per_exp_tables[exp.id]:
+                rows.append(("%s (ours)" % html.escape(r["planner"]), _fmt(r["min"], 2), _fmt(r["mean"], 2), _fmt(r["std"], 2), _fmt(r["best_time"], 4), _fmt(r["mean_time"], 4)))
+            for alg, (mn, me, sd, bt, mt) in papers.LRSMA_TABLE3[scenario].items():
+                rows.append(("%s (paper)" % alg, "%.2f" % mn, "%.2f" % me, "%.2f" % sd, "%.2f" % bt, "%.2f" % mt))
+            parts.append("<h3>Scenario %d: %s</h3>" % (scenario, html.escape(exp.name)))
+            parts.append(_table(["algorithm", "length min", "length mean", "length std", "time of best run [s]", "mean time [s]"], rows))
+    bfo_exps = [e for e in database.experiments if _world_name(e) in papers.BFO_REPORTED]
+    if bfo_exps:
+        parts.append("<h2>[BFO] best path lengths (our runs; the paper's numbers beside)</h2>")
+        parts.append("<p class='note'>%s</p>" % html.escape(papers.BFO_NOTE))
+        for exp in bfo_exps:
+            rows = [("%s (ours)" % html.escape(r["planner"]), _fmt(r["min"], 4), _fmt(r["best_time"], 4)) for r in per_exp_tables[exp.id]]
+            rows += [("%s (paper)" % html.escape(n), "%.5g" % l, "%.2f" % t if t else "&ndash;") for n, l, t in papers.BFO_REPORTED[_world_name(exp)]]
+            parts.append("<h3>%s</h3>" % html.escape(exp.name))
+            parts.append(_table(["algorithm", "best length", "time of best run [s]"], rows))
+
+    # Per problem: figures and the full table.
+    for exp in database.experiments:
+        parts.append("<h2>%s</h2>" % html.escape(exp.name))
+        box, missing = box_plots(database, exp, outdir)
+        if box:
+            parts.append("<img src='%s' alt='box plots'>" % box)
+        for m in missing:
+            notes.append("%s: no values for %s (no exact runs or no such column)." % (exp.name, m))
+        conv = convergence_plot(database, exp, outdir, colors)
+        if conv:
+            parts.append("<img src='%s' alt='convergence'>" % conv)
+        else:
+            notes.append("%s: no convergence plot (no planner recorded 'best cost' progress)." % exp.name)
+        world_file = dbmod.experiment_value(exp, "world_file")
+        if world_file and world_dir and not os.path.isabs(str(world_file)):
+            world_file = os.path.join(world_dir, str(world_file))
+        if paths:
+            pf, why = path_figure(database, exp, paths, world_file, outdir, colors)
+            if pf:
+                parts.append("<img src='%s' alt='paths'>" % pf)
+            if why:
+                notes.append("%s: %s." % (exp.name, why))
+        rows = per_exp_tables[exp.id]
+        parts.append(
+            _table(
+                ["planner", "runs", "exact", "approx.", "failed", "crashed", "length min", "length median", "length mean", "length std", "mean time [s]"],
+                [
+                    (html.escape(r["planner"]), r["runs"], r["counts"]["exact"], r["counts"]["approximate"], r["counts"]["failed"], r["counts"]["crashed"], _fmt(r["min"], 4), _fmt(r["median"], 4), _fmt(r["mean"], 4), _fmt(r["std"], 4), _fmt(r["mean_time"], 4))
+                    for r in rows
+                ],
+            )
+        )
+    if notes:
+        parts.insert(3, "<h2>Gaps in the data</h2><ul>" + "".join("<li>%s</li>" % html.escape(n) for n in notes) + "</ul>")
+    parts.append("</body></html>")
+    index = os.path.join(outdir, "index.html")
+    with open(index, "w") as f:
+        f.write("\n".join(parts))
+    return index

@@ -1,0 +1,75 @@
+/* mhplan report DB -o DIR: runs analysis/report.py with an interpreter that has matplotlib and numpy. */
+#include "Commands.h"
+
+#include "World.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace mhplan::cli
+{
+    namespace
+    {
+        /** The report script: $MHPLAN_ANALYSIS/report.py, the installed share/mhplan/analysis, or the source
+            tree's analysis/. */
+        std::string reportScript()
+        {
+            if (const char *env = std::getenv("MHPLAN_ANALYSIS"))
+                return (fs::path(env) / "report.py").string();
+            std::error_code ec;
+            const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+            if (!ec)
+            {
+                const fs::path installed =
+                    exe.parent_path().parent_path() / MHPLAN_INSTALLED_ANALYSIS_DIR / "report.py";
+                if (fs::exists(installed))
+                    return installed.string();
+            }
+            return (fs::path(MHPLAN_ANALYSIS_DIR) / "report.py").string();
+        }
+
+        /** Debian's interpreter carries python3-matplotlib and python3-numpy; a python3 earlier on PATH
+            may not. $MHPLAN_PYTHON overrides. */
+        std::string pythonInterpreter()
+        {
+            if (const char *env = std::getenv("MHPLAN_PYTHON"))
+                return env;
+            return "/usr/bin/python3";
+        }
+    } // namespace
+
+    int cmdReport(const Argv &argv)
+    {
+        const std::string script = reportScript();
+        if (!fs::exists(script))
+            throw InputError("mhplan report: cannot find the analysis script " + script +
+                             " (set MHPLAN_ANALYSIS to the directory holding report.py)");
+        const std::string python = pythonInterpreter();
+        if (access(python.c_str(), X_OK) != 0)
+            throw InputError("mhplan report: no Python interpreter at " + python +
+                             " (install python3-matplotlib and python3-numpy, or set MHPLAN_PYTHON)");
+        std::vector<std::string> args{python, script};
+        args.insert(args.end(), argv.begin(), argv.end());
+        std::vector<char *> cargs;
+        for (auto &a : args)
+            cargs.push_back(a.data());
+        cargs.push_back(nullptr);
+        std::cout.flush();
+        const pid_t pid = fork();
+        if (pid < 0)
+            throw InputError("mhplan report: cannot start " + python);
+        if (pid == 0)
+        {
+            execv(python.c_str(), cargs.data());
+            _exit(127);
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 2;
+    }
+} // namespace mhplan::cli
