@@ -5,6 +5,8 @@
 #include "LRSMA.h"
 #include "MountainGazelle.h"
 #include "Genetic.h"
+#include "BacterialForaging.h"
+#include "ArtificialPotentialField.h"
 
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/fmt/BFMT.h>
@@ -100,6 +102,13 @@ namespace mhplan
                "Search tree with resolution independent density estimation (Gipson et al. 2013)",
                omplAllocator<og::STRIDE>()});
         // mhplan's planners: one line each (see ompl_planners/).
+        r.add({"BFO", "mhplan", "Bacterial foraging optimization, online APF walk (Passino 2002; [BFO])",
+               omplAllocator<BacterialForaging>()});
+        r.add({"ATBFO", "mhplan", "Adaptive-tumble bacterial foraging, online APF walk (Abbas & Ali 2016)",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               { return std::make_shared<BacterialForaging>(si, true); }});
+        r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
+               omplAllocator<ArtificialPotentialField>()});
         r.add({"SMA", "mhplan", "Slime mould algorithm (Li et al. 2020; [GMS], [LRSMA])",
                omplAllocator<SlimeMould>()});
         r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",

@@ -1,0 +1,417 @@
+#include "ArtificialPotentialField.h"
+
+#include "PopulationPlanner.h"
+#include "Validity.h"
+
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan
+{
+    namespace
+    {
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        constexpr double kPi = 3.14159265358979323846;
+    } // namespace
+
+    ArtificialPotentialField::ArtificialPotentialField(const ob::SpaceInformationPtr &si)
+        : ob::Planner(si, "APF"), bestCostValue_(kInf)
+    {
+        specs_.approximateSolutions = true;
+        specs_.optimizingPaths = false;
+        specs_.canReportIntermediateSolutions = false;
+        specs_.multithreaded = false;
+        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
+
+        using A = ArtificialPotentialField;
+        declareParam<double>("attraction_gain", this, &A::setAttractionGain, &A::getAttractionGain,
+                             "0.:0.01:1000000.");
+        declareParam<double>("repulsion_gain", this, &A::setRepulsionGain, &A::getRepulsionGain,
+                             "0.:0.01:1000000.");
+        declareParam<double>("influence_distance", this, &A::setInfluenceDistance, &A::getInfluenceDistance,
+                             "0.000001:0.1:1000000.");
+        declareParam<double>("sensing_range", this, &A::setSensingRange, &A::getSensingRange,
+                             "0.000001:0.1:1000000.");
+        declareParam<std::string>("repulsion", this, &A::setRepulsion, &A::getRepulsion, "sum,nearest");
+        declareParam<double>("step_size", this, &A::setStepSize, &A::getStepSize, "0.000001:0.01:1000000.");
+        declareParam<std::string>("descent", this, &A::setDescent, &A::getDescent, "directions,gradient");
+        declareParam<unsigned int>("directions", this, &A::setDirections, &A::getDirections, "3:1:3600");
+        declareParam<double>("gradient_spacing", this, &A::setGradientSpacing, &A::getGradientSpacing,
+                             "0.000000001:0.0001:1.");
+        declareParam<double>("goal_tolerance", this, &A::setGoalTolerance, &A::getGoalTolerance,
+                             "0.:0.01:1000000.");
+        declareParam<unsigned int>("stall_steps", this, &A::setStallSteps, &A::getStallSteps, "1:1:1000000");
+        declareParam<double>("stall_tolerance", this, &A::setStallTolerance, &A::getStallTolerance,
+                             "0.:0.000001:1000000.");
+        declareParam<unsigned int>("max_iterations", this, &A::setMaxIterations, &A::getMaxIterations,
+                                   "0:1:10000000");
+        declareParam<unsigned int>("max_steps", this, &A::setMaxSteps, &A::getMaxSteps, "1:1:10000000");
+
+        addPlannerProgressProperty("best cost REAL",
+                                   [this]
+                                   {
+                                       std::ostringstream out;
+                                       out << std::setprecision(17) << bestCostValue_.load();
+                                       return out.str();
+                                   });
+        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(steps_.load()); });
+        addPlannerProgressProperty("fitness evaluations INTEGER",
+                                   [this] { return std::to_string(evaluations_.load()); });
+    }
+
+    ArtificialPotentialField::~ArtificialPotentialField()
+    {
+        if (stateA_ != nullptr)
+            si_->freeState(stateA_);
+        if (stateB_ != nullptr)
+            si_->freeState(stateB_);
+    }
+
+    // The field's parameters define the descent: a change restarts it.
+    void ArtificialPotentialField::setAttractionGain(double v)
+    {
+        checkParameterRange("attraction_gain", v, 0.0, 1e6);
+        field_.attractionGain = v;
+        if (ready_)
+            clear();
+    }
+
+    void ArtificialPotentialField::setRepulsionGain(double v)
+    {
+        checkParameterRange("repulsion_gain", v, 0.0, 1e6);
+        field_.repulsionGain = v;
+        if (ready_)
+            clear();
+    }
+
+    void ArtificialPotentialField::setInfluenceDistance(double v)
+    {
+        checkParameterRange("influence_distance", v, 1e-6, 1e6);
+        field_.influenceDistance = v;
+        if (ready_)
+            clear();
+    }
+
+    void ArtificialPotentialField::setSensingRange(double v)
+    {
+        checkParameterRange("sensing_range", v, 1e-6, 1e6);
+        field_.sensingRange = v;
+        if (ready_)
+            clear();
+    }
+
+    void ArtificialPotentialField::setRepulsion(const std::string &mode)
+    {
+        repulsion_ = parseRepulsionMode(mode);
+        if (ready_)
+            clear();
+    }
+
+    void ArtificialPotentialField::setStepSize(double v)
+    {
+        checkParameterRange("step_size", v, 1e-6, 1e6);
+        stepSize_ = v;
+    }
+
+    void ArtificialPotentialField::setDescent(const std::string &descent)
+    {
+        if (descent != "directions" && descent != "gradient")
+            throw std::invalid_argument("parameter 'descent' must be one of {directions, gradient}; got '" +
+                                        descent + "'");
+        gradient_ = descent == "gradient";
+    }
+
+    void ArtificialPotentialField::setDirections(unsigned int n)
+    {
+        checkParameterRange("directions", n, 3, 3600);
+        directions_ = n;
+    }
+
+    void ArtificialPotentialField::setGradientSpacing(double h)
+    {
+        checkParameterRange("gradient_spacing", h, 1e-9, 1.0);
+        gradientSpacing_ = h;
+    }
+
+    void ArtificialPotentialField::setGoalTolerance(double v)
+    {
+        checkParameterRange("goal_tolerance", v, 0.0, 1e6);
+        goalTolerance_ = v;
+    }
+
+    void ArtificialPotentialField::setStallSteps(unsigned int n)
+    {
+        checkParameterRange("stall_steps", n, 1, 1000000);
+        stallSteps_ = n;
+    }
+
+    void ArtificialPotentialField::setStallTolerance(double v)
+    {
+        checkParameterRange("stall_tolerance", v, 0.0, 1e6);
+        stallTolerance_ = v;
+    }
+
+    void ArtificialPotentialField::setMaxIterations(unsigned int n)
+    {
+        checkParameterRange("max_iterations", n, 0, 10000000);
+        maxIterations_ = n;
+    }
+
+    void ArtificialPotentialField::setMaxSteps(unsigned int n)
+    {
+        checkParameterRange("max_steps", n, 1, 10000000);
+        maxSteps_ = n;
+    }
+
+    void ArtificialPotentialField::setup()
+    {
+        ob::Planner::setup();
+        PotentialField::requireClearance(*si_, getName());
+    }
+
+    void ArtificialPotentialField::clear()
+    {
+        ob::Planner::clear();
+        ready_ = false;
+        state_ = State::Descending;
+        walk_.clear();
+        bestCostValue_ = kInf;
+        steps_ = 0;
+        evaluations_ = 0;
+    }
+
+    bool ArtificialPotentialField::prepare()
+    {
+        const ob::State *start = pis_.nextStart();
+        if (start == nullptr)
+        {
+            OMPL_ERROR("%s: no valid start state", getName().c_str());
+            return false;
+        }
+        const ob::State *goal = pis_.nextGoal();
+        if (goal == nullptr)
+        {
+            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
+            return false;
+        }
+        robot_ = statePosition(start);
+        goal_ = statePosition(goal);
+        if (!potential_)
+            potential_ = std::make_unique<PotentialField>(si_);
+        potential_->configure(field_, repulsion_, getName());
+        potential_->setGoal(goal_);
+        if (stateA_ == nullptr)
+        {
+            stateA_ = si_->allocState();
+            stateB_ = si_->allocState();
+        }
+        walk_.clear();
+        walk_.push_back(robot_);
+        currentCost_ = bestCost_ = potential_->cost(robot_);
+        evaluations_ = potential_->evaluations();
+        sinceImprovement_ = 0;
+        state_ = State::Descending;
+        ready_ = true;
+        OMPL_INFORM("%s: %s descent, lambda = %g, %s repulsion", getName().c_str(), getDescent().c_str(),
+                    stepSize_, toString(potential_->usedMode()).c_str());
+        finishIfAtGoal();
+        return true;
+    }
+
+    void ArtificialPotentialField::finishIfAtGoal()
+    {
+        const double tolerance = goalTolerance_ > 0.0 ? goalTolerance_ : stepSize_;
+        if (distance(robot_, goal_) > tolerance)
+            return;
+        if (robot_ != goal_)
+        {
+            setStatePosition(stateA_, robot_);
+            setStatePosition(stateB_, goal_);
+            if (!si_->checkMotion(stateA_, stateB_))
+                return;
+            robot_ = goal_;
+            walk_.push_back(goal_);
+        }
+        state_ = State::ReachedGoal;
+    }
+
+    bool ArtificialPotentialField::tryMove(const Vec2 &next)
+    {
+        setStatePosition(stateA_, robot_);
+        setStatePosition(stateB_, next);
+        if (!si_->satisfiesBounds(stateB_) || !si_->checkMotion(stateA_, stateB_))
+            return false;
+        robot_ = next;
+        walk_.push_back(next);
+        return true;
+    }
+
+    bool ArtificialPotentialField::step(const ob::PlannerTerminationCondition &ptc)
+    {
+        double nextCost = kInf;
+        bool moved = false;
+        if (!gradient_)
+        {
+            const Vec2 toGoal = goal_ - robot_;
+            const double heading = std::atan2(toGoal.y, toGoal.x);
+            candidates_.clear();
+            candidates_.reserve(directions_);
+            for (unsigned int k = 0; k < directions_; ++k)
+            {
+                if (ptc())
+                    return false;
+                const double a = heading + 2.0 * kPi * k / directions_;
+                const Vec2 p(robot_.x + stepSize_ * std::cos(a), robot_.y + stepSize_ * std::sin(a));
+                const double j = potential_->cost(p);
+                if (j < kInf)
+                    candidates_.emplace_back(j, k);
+            }
+            // Lowest J first; ties keep the direction order (straight to the goal first).
+            std::sort(candidates_.begin(), candidates_.end());
+            for (const auto &c : candidates_)
+            {
+                const double a = heading + 2.0 * kPi * c.second / directions_;
+                if (tryMove({robot_.x + stepSize_ * std::cos(a), robot_.y + stepSize_ * std::sin(a)}))
+                {
+                    nextCost = c.first;
+                    moved = true;
+                    break;
+                }
+            }
+        }
+        else
+        {
+            const double h = gradientSpacing_;
+            if (ptc())
+                return false;
+            // Central differences; one-sided where one side is infinite (an obstacle or the bounds).
+            auto derivative = [&](const Vec2 &e)
+            {
+                const double plus = potential_->cost(robot_ + e * h);
+                const double minus = potential_->cost(robot_ - e * h);
+                if (plus < kInf && minus < kInf)
+                    return (plus - minus) / (2.0 * h);
+                if (plus < kInf)
+                    return (plus - currentCost_) / h;
+                if (minus < kInf)
+                    return (currentCost_ - minus) / h;
+                return kInf;
+            };
+            const double gx = derivative({1.0, 0.0});
+            const double gy = derivative({0.0, 1.0});
+            const double g = std::hypot(gx, gy);
+            if (std::isfinite(g) && g > 0.0)
+            {
+                double len = stepSize_;
+                for (int attempt = 0; attempt <= 3 && !moved; ++attempt, len *= 0.5)
+                    moved = tryMove({robot_.x - len * gx / g, robot_.y - len * gy / g});
+                if (moved)
+                    nextCost = potential_->cost(robot_);
+            }
+        }
+        evaluations_ = potential_->evaluations();
+        ++steps_;
+        if (!moved)
+        {
+            state_ = State::Stuck;
+            OMPL_INFORM("%s: no valid descent step from (%g, %g)", getName().c_str(), robot_.x, robot_.y);
+            return true;
+        }
+        currentCost_ = nextCost;
+        if (currentCost_ < bestCost_ - stallTolerance_)
+        {
+            bestCost_ = currentCost_;
+            sinceImprovement_ = 0;
+        }
+        else
+            ++sinceImprovement_;
+        finishIfAtGoal();
+        if (state_ != State::Descending)
+            return true;
+        if (sinceImprovement_ >= stallSteps_)
+        {
+            state_ = State::Stalled;
+            OMPL_INFORM("%s: local minimum near (%g, %g): J has not improved by %g over %u steps",
+                        getName().c_str(), robot_.x, robot_.y, stallTolerance_, stallSteps_);
+        }
+        else if (walk_.size() - 1 >= maxSteps_)
+            state_ = State::BudgetSpent;
+        return true;
+    }
+
+    ob::PlannerStatus ArtificialPotentialField::solve(const ob::PlannerTerminationCondition &ptc)
+    {
+        checkValidity();
+        if (!ready_ && !prepare())
+            return ob::PlannerStatus::INVALID_START;
+        unsigned int done = 0;
+        while (state_ == State::Descending && !ptc() && (maxIterations_ == 0 || done < maxIterations_))
+        {
+            if (!step(ptc))
+                break;
+            ++done;
+        }
+        return report();
+    }
+
+    ob::PlannerStatus ArtificialPotentialField::report()
+    {
+        const bool finished = state_ != State::Descending;
+        if (walk_.size() < 2 && !finished)
+            return ob::PlannerStatus::TIMEOUT;
+        auto path = std::make_shared<og::PathGeometric>(si_);
+        for (const Vec2 &p : walk_)
+        {
+            setStatePosition(stateA_, p);
+            path->append(stateA_);
+        }
+        bool exact = state_ == State::ReachedGoal;
+        for (std::size_t i = 1; exact && i < path->getStateCount(); ++i)
+            exact = si_->checkMotion(path->getState(i - 1), path->getState(i));
+        ob::PlannerSolution solution(path);
+        solution.setPlannerName(getName());
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        if (exact)
+        {
+            const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
+            bestCostValue_ = cost.value();
+            if (opt)
+                solution.setOptimized(opt, cost, opt->isSatisfied(cost));
+        }
+        else
+            solution.setApproximate(std::max(distance(robot_, goal_), 1e-12));
+        pdef_->addSolutionPath(solution);
+        return exact ? ob::PlannerStatus::EXACT_SOLUTION : ob::PlannerStatus::APPROXIMATE_SOLUTION;
+    }
+
+    void ArtificialPotentialField::getPlannerData(ob::PlannerData &data) const
+    {
+        ob::Planner::getPlannerData(data);
+        ob::State *s = si_->allocState();
+        for (std::size_t i = 0; i < walk_.size(); ++i)
+        {
+            setStatePosition(s, walk_[i]);
+            const ob::PlannerDataVertex v(s);
+            if (i == 0)
+                data.addStartVertex(v);
+            else if (i + 1 == walk_.size() && state_ == State::ReachedGoal)
+                data.addGoalVertex(v);
+            else
+                data.addVertex(v);
+        }
+        for (std::size_t i = 1; i < walk_.size(); ++i)
+            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
+        si_->freeState(s);
+    }
+} // namespace mhplan
