@@ -86,7 +86,7 @@ namespace mhplan
                 }
             }
             if (usedMode_ != RepulsionMode::Sum)
-                OMPL_WARN(
+                OMPL_INFORM(
                     "%s: repulsion 'sum' needs the analytic collision model's obstacle list; this checker "
                     "only reports the nearest obstacle's clearance: using 'nearest'",
                     who.c_str());
