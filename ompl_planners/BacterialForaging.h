@@ -248,6 +248,8 @@ namespace mhplan
         const ompl::base::PlannerTerminationCondition *onlinePtc_{nullptr};
         std::unique_ptr<PotentialField> potential_;
         bool onlineReady_{false};
+        /** \brief The seed parameter the walk was prepared with (a new seed restarts it, as in the base). */
+        unsigned long seedUsed_{0};
         bool runActive_{false};
         Vec2 robot_, goal_;
         std::vector<Vec2> walk_;

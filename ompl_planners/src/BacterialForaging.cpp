@@ -597,8 +597,9 @@ namespace mhplan
         }
         robot_ = statePosition(start);
         goal_ = statePosition(goal);
-        if (getSeed() != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(getSeed()));
+        seedUsed_ = getSeed();
+        if (seedUsed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seedUsed_));
         if (!potential_)
             potential_ = std::make_unique<PotentialField>(si_);
         potential_->configure(field_, repulsion_, getName());
@@ -681,6 +682,8 @@ namespace mhplan
     ob::PlannerStatus BacterialForaging::solveOnline(const ob::PlannerTerminationCondition &ptc)
     {
         checkValidity();
+        if (onlineReady_ && getSeed() != seedUsed_)
+            clear(); // a new seed restarts the walk (PopulationPlanner::setSeed does the same)
         if (!onlineReady_ && !prepareOnline())
             return ob::PlannerStatus::INVALID_START;
 
