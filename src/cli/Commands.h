@@ -16,6 +16,7 @@ namespace mhplan::cli
     int cmdWorlds(const Argv &argv);
     int cmdPlanners(const Argv &argv);
     int cmdCompare(const Argv &argv);
+    int cmdBench(const Argv &argv);
     int cmdReport(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */

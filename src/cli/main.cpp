@@ -41,6 +41,9 @@ namespace
             {"report",
              {cmdReport,
               "report DATABASE [-o DIR]   (HTML report: figures and tables from a benchmark database)"}},
+            {"bench",
+             {cmdBench, "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
+                        "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };

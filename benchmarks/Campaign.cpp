@@ -1,0 +1,387 @@
+#include "Campaign.h"
+
+#include "Collision.h"
+#include "Problem.h"
+#include "World.h"
+#include "WorldIO.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace mhplan::bench
+{
+    namespace
+    {
+        /** Errors of the form "file:line: field 'a.b': problem". */
+        class Reader
+        {
+          public:
+            explicit Reader(std::string file) : file_(std::move(file)) {}
+
+            [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
+                                   const std::string &what) const
+            {
+                std::ostringstream msg;
+                msg << file_;
+                if (node.IsDefined() && node.Mark().line >= 0)
+                    msg << ":" << node.Mark().line + 1;
+                msg << ": field '" << field << "': " << what;
+                throw InputError(msg.str());
+            }
+
+            void allowKeys(const YAML::Node &map, const std::string &field,
+                           const std::set<std::string> &keys) const
+            {
+                if (!map.IsMap())
+                    fail(map, field, "expected a mapping");
+                for (const auto &kv : map)
+                {
+                    const std::string key = kv.first.as<std::string>();
+                    if (keys.count(key) != 0)
+                        continue;
+                    std::string accepted;
+                    for (const auto &k : keys)
+                        accepted += (accepted.empty() ? "" : ", ") + k;
+                    fail(kv.first, field.empty() ? key : field + "." + key,
+                         "unknown key '" + key + "'; accepted: " + accepted);
+                }
+            }
+
+            double number(const YAML::Node &n, const std::string &field, double lo, double hi) const
+            {
+                if (!n.IsScalar())
+                    fail(n, field, "expected a number");
+                double v = 0.0;
+                try
+                {
+                    v = n.as<double>();
+                }
+                catch (const YAML::Exception &)
+                {
+                    fail(n, field, "expected a number, got '" + n.Scalar() + "'");
+                }
+                if (!std::isfinite(v) || v < lo || v > hi)
+                {
+                    std::ostringstream range;
+                    range << "must be in [" << lo << ", " << hi << "] (got " << n.Scalar() << ")";
+                    fail(n, field, range.str());
+                }
+                return v;
+            }
+
+            long long integer(const YAML::Node &n, const std::string &field, long long lo, long long hi) const
+            {
+                const double v = number(n, field, static_cast<double>(lo), static_cast<double>(hi));
+                if (v != std::floor(v))
+                    fail(n, field, "expected an integer (got " + n.Scalar() + ")");
+                return static_cast<long long>(v);
+            }
+
+            std::string text(const YAML::Node &n, const std::string &field) const
+            {
+                if (!n.IsScalar() || n.Scalar().empty())
+                    fail(n, field, "expected a non-empty string");
+                return n.Scalar();
+            }
+
+          private:
+            std::string file_;
+        };
+
+        std::string readFile(const std::string &path)
+        {
+            std::ifstream in(path, std::ios::binary);
+            if (!in)
+                throw InputError("cannot read '" + path + "'");
+            std::ostringstream ss;
+            ss << in.rdbuf();
+            return ss.str();
+        }
+
+        /** Names that OMPL's log format and the database accept unchanged: no blanks, no ';' or ','. */
+        bool plainName(const std::string &s)
+        {
+            if (s.empty())
+                return false;
+            for (char c : s)
+                if (std::isspace(static_cast<unsigned char>(c)) || c == ';' || c == ',' || c == '"' ||
+                    c == '\'')
+                    return false;
+            return true;
+        }
+
+        void readPlanners(const Reader &r, const YAML::Node &n, Campaign &c)
+        {
+            if (!n.IsSequence() || n.size() == 0)
+                r.fail(n, "planners", "expected a non-empty list of {planner, name, params}");
+            std::set<std::string> names;
+            for (std::size_t i = 0; i < n.size(); ++i)
+            {
+                const std::string field = "planners[" + std::to_string(i) + "]";
+                PlannerSpec p;
+                if (n[i].IsScalar())
+                    p.planner = r.text(n[i], field);
+                else
+                {
+                    r.allowKeys(n[i], field, {"planner", "name", "params"});
+                    if (!n[i]["planner"].IsDefined())
+                        r.fail(n[i], field + ".planner", "missing");
+                    p.planner = r.text(n[i]["planner"], field + ".planner");
+                    if (n[i]["name"].IsDefined())
+                        p.displayName = r.text(n[i]["name"], field + ".name");
+                    const YAML::Node params = n[i]["params"];
+                    if (params.IsDefined() && !params.IsNull())
+                    {
+                        if (!params.IsMap())
+                            r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        for (const auto &kv : params)
+                        {
+                            const std::string key = kv.first.as<std::string>();
+                            p.params[key] = r.text(kv.second, field + ".params." + key);
+                        }
+                    }
+                }
+                if (p.displayName.empty())
+                    p.displayName = p.planner;
+                if (!plainName(p.displayName))
+                    r.fail(n[i], field + ".name",
+                           "'" + p.displayName + "' must not contain blanks, quotes, ';' or ','");
+                if (!names.insert(p.displayName).second)
+                    r.fail(n[i], field + ".name",
+                           "duplicate planner name '" + p.displayName +
+                               "'; give each configuration of a planner its own 'name'");
+                c.planners.push_back(std::move(p));
+            }
+        }
+
+        void readWorlds(const Reader &r, const YAML::Node &n, Campaign &c)
+        {
+            if (!n.IsSequence() || n.size() == 0)
+                r.fail(n, "worlds", "expected a non-empty list of worlds");
+            for (std::size_t i = 0; i < n.size(); ++i)
+            {
+                const std::string field = "worlds[" + std::to_string(i) + "]";
+                WorldSpec w;
+                if (n[i].IsScalar())
+                    w.world = r.text(n[i], field);
+                else
+                {
+                    r.allowKeys(n[i], field, {"world", "queries"});
+                    if (!n[i]["world"].IsDefined())
+                        r.fail(n[i], field + ".world", "missing");
+                    w.world = r.text(n[i]["world"], field + ".world");
+                    const YAML::Node q = n[i]["queries"];
+                    if (q.IsDefined() && !q.IsNull())
+                    {
+                        if (q.IsScalar())
+                            w.queries.push_back(r.text(q, field + ".queries"));
+                        else if (q.IsSequence())
+                            for (std::size_t k = 0; k < q.size(); ++k)
+                                w.queries.push_back(
+                                    r.text(q[k], field + ".queries[" + std::to_string(k) + "]"));
+                        else
+                            r.fail(q, field + ".queries", "expected a query name or a list of names");
+                    }
+                }
+                c.worlds.push_back(std::move(w));
+            }
+        }
+    } // namespace
+
+    Campaign parseCampaign(const std::string &text, const std::string &fileName)
+    {
+        YAML::Node root;
+        try
+        {
+            root = YAML::Load(text);
+        }
+        catch (const YAML::ParserException &e)
+        {
+            std::ostringstream msg;
+            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                << ": malformed YAML: " << e.msg;
+            throw InputError(msg.str());
+        }
+        const Reader r(fileName);
+        if (!root.IsMap())
+            throw InputError(fileName +
+                             ":1: a campaign file must be a YAML mapping (see benchmarks/README.md)");
+        r.allowKeys(root, "",
+                    {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
+                     "progress_interval", "collision", "worlds", "planners"});
+        Campaign c;
+        c.file = fileName;
+        c.name = root["campaign"].IsDefined() ? r.text(root["campaign"], "campaign")
+                                              : fs::path(fileName).stem().string();
+        if (root["time_limit"].IsDefined())
+            c.timeLimit = r.number(root["time_limit"], "time_limit", 1e-3, 1e6);
+        if (root["memory_limit"].IsDefined())
+            c.memoryLimit = r.number(root["memory_limit"], "memory_limit", 1.0, 1e9);
+        if (root["runs"].IsDefined())
+            c.runs = static_cast<unsigned int>(r.integer(root["runs"], "runs", 1, 1000000));
+        if (root["seed"].IsDefined())
+            c.seed = static_cast<std::uint32_t>(r.integer(root["seed"], "seed", 1, 4294967295LL));
+        if (root["progress_interval"].IsDefined())
+            c.progressInterval = r.number(root["progress_interval"], "progress_interval", 1e-3, 1e6);
+        if (root["collision"].IsDefined())
+        {
+            c.collision = r.text(root["collision"], "collision");
+            try
+            {
+                parseCollisionBackend(c.collision);
+            }
+            catch (const InputError &e)
+            {
+                r.fail(root["collision"], "collision", e.what());
+            }
+        }
+        c.database = root["database"].IsDefined() ? r.text(root["database"], "database") : c.name + ".db";
+        c.logDir = root["logs"].IsDefined() ? r.text(root["logs"], "logs") : c.database + ".logs";
+        if (!root["worlds"].IsDefined())
+            r.fail(root, "worlds", "missing");
+        readWorlds(r, root["worlds"], c);
+        if (!root["planners"].IsDefined())
+            r.fail(root, "planners", "missing");
+        readPlanners(r, root["planners"], c);
+        return c;
+    }
+
+    Campaign loadCampaign(const std::string &path)
+    {
+        if (!fs::is_regular_file(path))
+            throw InputError("campaign '" + path + "': no such file");
+        return parseCampaign(readFile(path), path);
+    }
+
+    std::string fingerprint(const std::string &text)
+    {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (unsigned char ch : text)
+        {
+            h ^= ch;
+            h *= 1099511628211ULL;
+        }
+        char buf[17];
+        std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h));
+        return buf;
+    }
+
+    std::uint32_t deriveSeed(std::uint32_t base, const std::string &label, std::uint64_t index)
+    {
+        std::uint64_t h = 1469598103934665603ULL;
+        for (unsigned char ch : label)
+        {
+            h ^= ch;
+            h *= 1099511628211ULL;
+        }
+        std::uint64_t z = h ^ (static_cast<std::uint64_t>(base) << 32) ^ (index * 0x9E3779B97F4A7C15ULL);
+        // splitmix64 finaliser
+        z += 0x9E3779B97F4A7C15ULL;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z ^= z >> 31;
+        return static_cast<std::uint32_t>(1 + z % 4294967295ULL);
+    }
+
+    std::string safeFileStem(const std::string &name)
+    {
+        std::string out;
+        for (char ch : name)
+            out += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.')
+                       ? ch
+                       : '_';
+        return out;
+    }
+
+    std::vector<Experiment> enumerateExperiments(const Campaign &campaign, const WorldResolver &resolve)
+    {
+        // Everything that shapes every experiment's results, hashed into each experiment's fingerprint.
+        std::ostringstream common;
+        common.precision(17);
+        common << "time " << campaign.timeLimit << "\nmemory " << campaign.memoryLimit << "\nruns "
+               << campaign.runs << "\nseed " << campaign.seed << "\ninterval " << campaign.progressInterval
+               << "\ncollision " << campaign.collision << "\n";
+        for (const auto &p : campaign.planners)
+        {
+            common << "planner " << p.displayName << " " << p.planner;
+            for (const auto &kv : p.params)
+                common << " " << kv.first << "=" << kv.second;
+            common << "\n";
+        }
+
+        std::vector<Experiment> out;
+        std::set<std::string> names;
+        const fs::path base = fs::path(campaign.file).parent_path();
+        for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
+        {
+            const WorldSpec &spec = campaign.worlds[wi];
+            std::string file;
+            const fs::path relative = base / spec.world;
+            if (!fs::path(spec.world).is_absolute() && fs::is_regular_file(relative))
+                file = relative.string();
+            else
+                file = resolve(spec.world);
+            World world;
+            try
+            {
+                world = loadWorld(file);
+            }
+            catch (const InputError &e)
+            {
+                throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: " + e.what());
+            }
+            const CollisionModelPtr model =
+                makeCollisionModel(world, parseCollisionBackend(campaign.collision));
+            std::vector<std::string> queries = spec.queries;
+            if (queries.empty())
+                for (const auto &q : world.queries)
+                    queries.push_back(q.name);
+            if (queries.empty())
+                throw InputError(campaign.file + ": world '" + world.name + "' (" + file +
+                                 ") has no queries");
+            const std::string worldText = readFile(file);
+            for (const auto &qname : queries)
+            {
+                const Query &q = world.query(qname);
+                validateQuery(world, q, *model);
+                Experiment e;
+                e.index = out.size();
+                e.name = world.name + "-" + q.name;
+                e.worldFile = file;
+                e.worldName = world.name;
+                e.query = q.name;
+                if (!names.insert(e.name).second)
+                    throw InputError(campaign.file + ": experiment '" + e.name +
+                                     "' appears twice (the same world and query listed twice)");
+                e.seed = deriveSeed(campaign.seed, e.name, 0);
+                std::ostringstream all;
+                all.precision(17);
+                all << common.str() << "world " << worldText << "\nquery " << q.name << " " << q.start.x
+                    << " " << q.start.y << " " << q.goal.x << " " << q.goal.y << "\n";
+                e.configHash = fingerprint(all.str());
+                out.push_back(std::move(e));
+            }
+        }
+        return out;
+    }
+
+    std::vector<Experiment> shardExperiments(const std::vector<Experiment> &all, unsigned int part,
+                                             unsigned int parts)
+    {
+        if (parts == 0 || part == 0 || part > parts)
+            throw InputError("shard " + std::to_string(part) + "/" + std::to_string(parts) +
+                             ": expected i/N with 1 <= i <= N");
+        std::vector<Experiment> out;
+        for (const auto &e : all)
+            if (e.index % parts == part - 1)
+                out.push_back(e);
+        return out;
+    }
+} // namespace mhplan::bench

@@ -1,0 +1,1254 @@
+#include "CampaignRunner.h"
+
+#include "Collision.h"
+#include "Metrics.h"
+#include "Problem.h"
+#include "Registry.h"
+#include "Version.h"
+#include "World.h"
+#include "WorldIO.h"
+
+#ifdef MHPLAN_BENCH_HAVE_OPTIMUM
+#include "Optimum.h"
+#endif
+
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <ompl/util/Time.h>
+
+#include <sqlite3.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+namespace ot = ompl::tools;
+namespace fs = std::filesystem;
+
+namespace mhplan::bench
+{
+    double CampaignSummary::overheadFraction() const
+    {
+        const double total = workerSeconds + mergeSeconds;
+        return total > 0.0 ? std::max(0.0, total - solveSeconds) / total : 0.0;
+    }
+
+    std::string logFile(const Campaign &campaign, const Experiment &experiment)
+    {
+        return (fs::path(campaign.logDir) / (safeFileStem(experiment.name) + ".log")).string();
+    }
+
+    std::string pathsFile(const Campaign &campaign, const Experiment &experiment)
+    {
+        return (fs::path(campaign.logDir) / (safeFileStem(experiment.name) + ".paths")).string();
+    }
+
+    namespace
+    {
+        using Clock = std::chrono::steady_clock;
+
+        double secondsSince(Clock::time_point t0)
+        {
+            return std::chrono::duration<double>(Clock::now() - t0).count();
+        }
+
+        /** Numbers as OMPL writes them (full precision; "nan"/"inf" become NULL in the database). */
+        std::string num(double v)
+        {
+            if (std::isnan(v))
+                return "nan";
+            if (std::isinf(v))
+                return v > 0 ? "inf" : "-inf";
+            char buf[40];
+            std::snprintf(buf, sizeof(buf), "%.17g", v);
+            return buf;
+        }
+
+        // --- a tiny message protocol over pipes: "<type> <index> <bytes>\n<payload>" ----------------------
+
+        constexpr char kFieldSep = '\x1f';
+        constexpr char kRecordSep = '\x1e';
+        constexpr char kGroupSep = '\x1d';
+
+        std::string encodeMap(const std::map<std::string, std::string> &m)
+        {
+            std::string out;
+            for (const auto &kv : m)
+                out += kv.first + kFieldSep + kv.second + kRecordSep;
+            return out;
+        }
+
+        std::map<std::string, std::string> decodeMap(const std::string &s)
+        {
+            std::map<std::string, std::string> m;
+            std::size_t pos = 0;
+            while (pos < s.size())
+            {
+                const std::size_t end = s.find(kRecordSep, pos);
+                const std::string rec =
+                    s.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+                const std::size_t f = rec.find(kFieldSep);
+                if (f != std::string::npos)
+                    m[rec.substr(0, f)] = rec.substr(f + 1);
+                if (end == std::string::npos)
+                    break;
+                pos = end + 1;
+            }
+            return m;
+        }
+
+        std::vector<std::string> splitOn(const std::string &s, char sep)
+        {
+            std::vector<std::string> out;
+            std::size_t pos = 0;
+            while (pos <= s.size())
+            {
+                const std::size_t end = s.find(sep, pos);
+                if (end == std::string::npos)
+                {
+                    if (pos < s.size())
+                        out.push_back(s.substr(pos));
+                    break;
+                }
+                out.push_back(s.substr(pos, end - pos));
+                pos = end + 1;
+            }
+            return out;
+        }
+
+        void writeAll(int fd, const std::string &data)
+        {
+            std::size_t done = 0;
+            while (done < data.size())
+            {
+                const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+                if (n < 0 && errno == EINTR)
+                    continue;
+                if (n <= 0)
+                    return; // the reader is gone; nothing sensible left to do
+                done += static_cast<std::size_t>(n);
+            }
+        }
+
+        void sendMessage(int fd, char type, std::size_t index, const std::string &payload)
+        {
+            std::ostringstream head;
+            head << type << ' ' << index << ' ' << payload.size() << '\n';
+            writeAll(fd, head.str() + payload);
+        }
+
+        struct Message
+        {
+            char type{0};
+            std::size_t index{0};
+            std::string payload;
+        };
+
+        /** Incremental parser of the message stream. */
+        class MessageReader
+        {
+          public:
+            void feed(const char *data, std::size_t n) { buffer_.append(data, n); }
+            bool next(Message &m)
+            {
+                const std::size_t nl = buffer_.find('\n');
+                if (nl == std::string::npos)
+                    return false;
+                std::istringstream head(buffer_.substr(0, nl));
+                std::size_t bytes = 0;
+                head >> m.type >> m.index >> bytes;
+                if (buffer_.size() < nl + 1 + bytes)
+                    return false;
+                m.payload = buffer_.substr(nl + 1, bytes);
+                buffer_.erase(0, nl + 1 + bytes);
+                return true;
+            }
+
+          private:
+            std::string buffer_;
+        };
+
+        std::string encodePath(const std::vector<Vec2> &pts)
+        {
+            std::string out;
+            for (const Vec2 &p : pts)
+                out += num(p.x) + " " + num(p.y) + ";";
+            return out;
+        }
+
+        /** Gives access to the experiment record so that runs gathered from several processes can be
+            written with OMPL's own log writer. */
+        class AssembledBenchmark : public ot::Benchmark
+        {
+          public:
+            using ot::Benchmark::Benchmark;
+            CompleteExperiment &experiment() { return exp_; }
+        };
+
+        /** Everything an experiment's processes share (built before the children are forked; nothing here
+            owns a random number generator). */
+        struct ExperimentSetup
+        {
+            const Campaign *campaign{nullptr};
+            const Experiment *experiment{nullptr};
+            const PlannerRegistry *registry{nullptr};
+            World world;
+            Query query;
+            CollisionModelPtr model;
+            double optimum{std::numeric_limits<double>::quiet_NaN()};
+            double optimumSeconds{0.0};
+            double metricStep{1e-3};
+        };
+
+        /** Captures what OMPL's benchmark writes to std::cerr when a planner throws. */
+        class CerrCapture
+        {
+          public:
+            CerrCapture() : old_(std::cerr.rdbuf(buffer_.rdbuf())) {}
+            ~CerrCapture() { std::cerr.rdbuf(old_); }
+            std::string take()
+            {
+                std::string s = buffer_.str();
+                buffer_.str("");
+                return s;
+            }
+
+          private:
+            std::ostringstream buffer_;
+            std::streambuf *old_;
+        };
+
+        /** Child process: run planner \e spec for runs [first, runs) through ompl::tools::Benchmark and
+            stream each run's properties, path and progress to \e fd. Never returns. */
+        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t first,
+                                          std::uint32_t seed, int fd)
+        {
+            int code = 0;
+            try
+            {
+                ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                // The seed must be set before any random number generator exists in this process; the
+                // campaign process and the experiment process never allocate one.
+                ompl::RNG::setSeed(seed);
+                const Campaign &c = *xs.campaign;
+                // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
+                // generator (its path simplifier's).
+                const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+                const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+                ob::PlannerPtr planner = xs.registry->create(spec.planner, si, spec.params);
+                planner->setName(spec.displayName);
+                ss->setPlanner(planner);
+
+                ot::Benchmark benchmark(*ss, xs.experiment->name);
+                benchmark.addPlanner(planner);
+                CerrCapture capture;
+                std::size_t current = first; // index of the run in progress
+                std::size_t started = 0;     // runs started in this process
+                const auto sendProgress = [&](std::size_t runIndex)
+                {
+                    const auto &pd = benchmark.getRecordedExperimentData().planners;
+                    if (pd.empty() || pd[0].runsProgressData.empty())
+                        return;
+                    std::string payload;
+                    for (const auto &sample : pd[0].runsProgressData.back())
+                        payload += encodeMap(sample) + kGroupSep;
+                    sendMessage(fd, 'G', runIndex, payload);
+                };
+                benchmark.setPreRunEvent(
+                    [&](const ob::PlannerPtr &p)
+                    {
+                        if (started > 0)
+                            sendProgress(current);
+                        current = first + started++;
+                        if (started == 1)
+                        {
+                            const auto &data = benchmark.getRecordedExperimentData();
+                            std::map<std::string, std::string> common;
+                            p->params().getParams(common);
+                            p->getSpaceInformation()->params().getParams(common);
+                            std::ostringstream props;
+                            p->printProperties(props);
+                            std::string names = "time REAL";
+                            for (const auto &kv : p->getPlannerProgressProperties())
+                                names += std::string(1, kGroupSep) + kv.first;
+                            sendMessage(fd, 'C', 0, encodeMap(common));
+                            sendMessage(fd, 'S', 0,
+                                        encodeMap({{"host", data.host},
+                                                   {"cpu", data.cpuInfo},
+                                                   {"properties", props.str()},
+                                                   {"progress", names}}));
+                        }
+                    });
+                benchmark.setPostRunEvent(
+                    [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
+                    {
+                        const std::string err = capture.take();
+                        if (err.find("error executing planner") != std::string::npos)
+                        {
+                            run["status ENUM"] = std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                            run["solved BOOLEAN"] = "0";
+                        }
+                        run["run index INTEGER"] = std::to_string(current);
+                        run["seed INTEGER"] = std::to_string(seed);
+                        run["exact optimum REAL"] = num(xs.optimum);
+                        for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
+                        {
+                            const auto &fns = p->getPlannerProgressProperties();
+                            const auto it = fns.find(name);
+                            if (it != fns.end() && run.count(name) == 0)
+                                run[name] = it->second();
+                        }
+                        std::string path;
+                        const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
+                        if (pdef->hasSolution() &&
+                            run["status ENUM"] != std::to_string(static_cast<int>(ob::PlannerStatus::CRASH)))
+                        {
+                            const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
+                            const std::vector<Vec2> pts = pathPoints(*geo);
+                            const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
+                            run["path length REAL"] = num(m.length);
+                            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+                            run["min clearance REAL"] = num(m.minClearance);
+                            run["mean clearance REAL"] = num(m.meanClearance);
+                            run["smoothness REAL"] = num(m.smoothness);
+                            run["max curvature REAL"] = num(m.maxCurvature);
+                            run["angle over length REAL"] = num(m.angleOverLength);
+                            run["cusps INTEGER"] = std::to_string(m.cusps);
+                            if (pdef->hasExactSolution())
+                                run["optimality gap REAL"] = num(optimalityGapPercent(m.length, xs.optimum));
+                            path = encodePath(pts);
+                        }
+                        std::map<std::string, std::string> payload = run;
+                        payload["\x01path"] = path;
+                        sendMessage(fd, 'R', current, encodeMap(payload));
+                    });
+                ot::Benchmark::Request req(c.timeLimit, c.memoryLimit,
+                                           static_cast<unsigned int>(c.runs - first), c.progressInterval,
+                                           false, false, false);
+                benchmark.benchmark(req);
+                if (started > 0)
+                    sendProgress(current);
+                sendMessage(fd, 'E', current, "");
+            }
+            catch (const std::exception &e)
+            {
+                sendMessage(fd, 'X', 0, e.what());
+                code = 3;
+            }
+            catch (...)
+            {
+                sendMessage(fd, 'X', 0, "unknown exception");
+                code = 3;
+            }
+            ::close(fd);
+            ::_exit(code);
+        }
+
+        /** The data of one planner across all its runs (possibly gathered from several processes). */
+        struct PlannerRecord
+        {
+            std::map<std::string, std::string> common;
+            std::string properties;
+            std::vector<std::string> progressNames;
+            std::vector<ot::Benchmark::RunProperties> runs;
+            std::vector<ot::Benchmark::RunProgressData> progress;
+            std::vector<std::string> paths;
+            std::vector<bool> have;
+        };
+
+        struct WorkerInfo
+        {
+            std::string host;
+            std::string cpuInfo;
+        };
+
+        /** Experiment process: run every planner of the campaign on this experiment in child processes,
+            then write the log and the path sidecar. Reports each run to \e progressFd. */
+        int runExperimentProcess(ExperimentSetup &xs, int progressFd, double &solveSeconds)
+        {
+            const Campaign &c = *xs.campaign;
+            const Experiment &e = *xs.experiment;
+            const Clock::time_point t0 = Clock::now();
+            const ompl::time::point start = ompl::time::now();
+            WorkerInfo info;
+            std::vector<PlannerRecord> records(c.planners.size());
+            solveSeconds = 0.0;
+            const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
+            const double watchdog = 2.0 * c.timeLimit + 20.0;
+
+            for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+            {
+                const PlannerSpec &spec = c.planners[pi];
+                PlannerRecord &rec = records[pi];
+                rec.runs.resize(c.runs);
+                rec.progress.resize(c.runs);
+                rec.paths.resize(c.runs);
+                rec.have.assign(c.runs, false);
+                std::size_t next = 0;
+                while (next < c.runs)
+                {
+                    const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
+                    int fds[2];
+                    if (::pipe(fds) != 0)
+                        throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+                    std::cout.flush();
+                    std::cerr.flush();
+                    const pid_t pid = ::fork();
+                    if (pid < 0)
+                        throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+                    if (pid == 0)
+                    {
+                        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+                        const rlimit noCore{0, 0}; // a crashing planner leaves no core file behind
+                        ::setrlimit(RLIMIT_CORE, &noCore);
+                        ::close(fds[0]);
+                        ::close(progressFd);
+                        runPlannerChild(xs, spec, next, seed, fds[1]);
+                    }
+                    ::close(fds[1]);
+                    MessageReader reader;
+                    Clock::time_point last = Clock::now();
+                    bool killed = false;
+                    std::string childError;
+                    char buf[65536];
+                    while (true)
+                    {
+                        pollfd pfd{fds[0], POLLIN, 0};
+                        const int r = ::poll(&pfd, 1, 200);
+                        if (r < 0 && errno == EINTR)
+                            continue;
+                        if (r == 0)
+                        {
+                            if (secondsSince(last) > watchdog)
+                            {
+                                ::kill(pid, SIGKILL);
+                                killed = true;
+                                break;
+                            }
+                            continue;
+                        }
+                        const ssize_t n = ::read(fds[0], buf, sizeof(buf));
+                        if (n < 0 && errno == EINTR)
+                            continue;
+                        if (n <= 0)
+                            break;
+                        reader.feed(buf, static_cast<std::size_t>(n));
+                        Message m;
+                        while (reader.next(m))
+                        {
+                            last = Clock::now();
+                            if (m.type == 'C')
+                                rec.common = decodeMap(m.payload);
+                            else if (m.type == 'S')
+                            {
+                                const auto s = decodeMap(m.payload);
+                                info.host = s.at("host");
+                                info.cpuInfo = s.at("cpu");
+                                rec.properties = s.at("properties");
+                                rec.progressNames = splitOn(s.at("progress"), kGroupSep);
+                                std::sort(rec.progressNames.begin(), rec.progressNames.end());
+                                if (rec.progressNames.size() == 1) // only "time": no progress properties
+                                    rec.progressNames.clear();
+                            }
+                            else if (m.type == 'R' && m.index < c.runs)
+                            {
+                                auto props = decodeMap(m.payload);
+                                rec.paths[m.index] = props["\x01path"];
+                                props.erase("\x01path");
+                                rec.runs[m.index] = props;
+                                rec.have[m.index] = true;
+                                const auto t = props.find("time REAL");
+                                if (t != props.end())
+                                    solveSeconds += std::atof(t->second.c_str());
+                                const bool crash = props["status ENUM"] == std::to_string(crashCode);
+                                std::ostringstream msg;
+                                msg << "r " << e.index << " " << (crash ? 1 : 0) << "\n";
+                                writeAll(progressFd, msg.str());
+                            }
+                            else if (m.type == 'G' && m.index < c.runs)
+                            {
+                                ot::Benchmark::RunProgressData data;
+                                for (const auto &sample : splitOn(m.payload, kGroupSep))
+                                    data.push_back(decodeMap(sample));
+                                rec.progress[m.index] = data;
+                            }
+                            else if (m.type == 'X')
+                                childError = m.payload;
+                        }
+                    }
+                    ::close(fds[0]);
+                    int status = 0;
+                    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+                    {
+                    }
+                    // The first run without a record is the one that crashed (or none did).
+                    std::size_t k = next;
+                    while (k < c.runs && rec.have[k])
+                        ++k;
+                    if (k >= c.runs)
+                        break;
+                    ot::Benchmark::RunProperties crash;
+                    const double elapsed = std::min(secondsSince(last), killed ? watchdog : 1e9);
+                    crash["time REAL"] = num(elapsed);
+                    crash["status ENUM"] = std::to_string(crashCode);
+                    crash["solved BOOLEAN"] = "0";
+                    crash["run index INTEGER"] = std::to_string(k);
+                    crash["seed INTEGER"] = std::to_string(deriveSeed(e.seed, spec.displayName, next));
+                    crash["exact optimum REAL"] = num(xs.optimum);
+                    rec.runs[k] = crash;
+                    rec.have[k] = true;
+                    solveSeconds += elapsed;
+                    std::ostringstream msg;
+                    msg << "r " << e.index << " 1\n";
+                    writeAll(progressFd, msg.str());
+                    std::ostringstream why;
+                    if (killed)
+                        why << "killed after " << watchdog << " s without progress";
+                    else if (WIFSIGNALED(status))
+                        why << "signal " << WTERMSIG(status) << " (" << strsignal(WTERMSIG(status)) << ")";
+                    else
+                        why << "exit code " << WEXITSTATUS(status) << (childError.empty() ? "" : ": ")
+                            << childError;
+                    std::cerr << "mhplan bench: " << e.name << ": planner " << spec.displayName << " run "
+                              << k << " crashed (" << why.str() << "); recorded as Crash\n";
+                    next = k + 1;
+                }
+            }
+
+            // Assemble the experiment with OMPL's own record and writer.
+            const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+            AssembledBenchmark bench(*ss, e.name);
+            auto &x = bench.experiment();
+            x.name = e.name;
+            x.maxTime = c.timeLimit;
+            x.maxMem = c.memoryLimit;
+            x.runCount = c.runs;
+            x.startTime = start;
+            x.seed = e.seed;
+            x.host = info.host;
+            x.cpuInfo = info.cpuInfo;
+            std::ostringstream setupInfo;
+            ss->print(setupInfo);
+            setupInfo << "\nProperties of benchmarked planners:\n";
+            for (const auto &r : records)
+                setupInfo << r.properties;
+            x.setupInfo = setupInfo.str();
+            x.parameters["campaign TEXT"] = c.name;
+            x.parameters["world TEXT"] = xs.world.name;
+            x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
+            x.parameters["world_type TEXT"] = xs.world.type();
+            x.parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
+            x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
+            x.parameters["query TEXT"] = xs.query.name;
+            std::ostringstream q;
+            q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
+              << xs.query.goal.y << ")";
+            x.parameters["query_points TEXT"] = q.str();
+            // Experiment properties go to the database verbatim (no NaN to NULL conversion): leave an unknown
+            // optimum out.
+            if (std::isfinite(xs.optimum))
+            {
+                x.parameters["exact_optimum REAL"] = num(xs.optimum);
+                x.parameters["optimum_seconds REAL"] = num(xs.optimumSeconds);
+            }
+            x.parameters["collision_backend TEXT"] = xs.model->name();
+            x.parameters["config_hash TEXT"] = e.configHash;
+            x.parameters["mhplan_version TEXT"] = version();
+            for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+            {
+                ot::Benchmark::PlannerExperiment pe;
+                pe.name = "geometric_" + c.planners[pi].displayName;
+                pe.common = records[pi].common;
+                pe.runs = records[pi].runs;
+                if (!records[pi].progressNames.empty())
+                {
+                    pe.progressPropertyNames = records[pi].progressNames;
+                    pe.runsProgressData = records[pi].progress;
+                }
+                x.planners.push_back(std::move(pe));
+            }
+            x.totalDuration = secondsSince(t0);
+
+            std::ostringstream log;
+            bench.saveResultsToStream(log);
+            std::string text = log.str();
+            // Debian's OMPL 1.5.2 writes an empty version ("OMPL version "); Planner Arena needs the real
+            // one.
+            const std::string versionLine = "OMPL version " + omplVersion();
+            if (text.rfind("OMPL version", 0) == 0)
+                text.replace(0, text.find('\n'), versionLine);
+            else
+                text = versionLine + "\n" + text;
+
+            std::ostringstream paths;
+            paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n";
+            for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+                for (std::size_t k = 0; k < c.runs; ++k)
+                    if (!records[pi].paths[k].empty())
+                        paths << "geometric_" << c.planners[pi].displayName << "\t" << k << "\t"
+                              << records[pi].paths[k] << "\n";
+
+            // Paths first, the log last: a log on disk means a finished experiment.
+            fs::create_directories(c.logDir);
+            const auto atomicWrite = [](const std::string &file, const std::string &content)
+            {
+                const std::string tmp = file + ".tmp" + std::to_string(::getpid());
+                {
+                    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+                    out << content;
+                    if (!out)
+                        throw std::runtime_error("cannot write '" + tmp + "'");
+                }
+                fs::rename(tmp, file);
+            };
+            atomicWrite(pathsFile(c, e), paths.str());
+            atomicWrite(logFile(c, e), text);
+            return 0;
+        }
+
+        /** Build the shared problem of an experiment (no random number generator is created here). */
+        void prepareExperiment(ExperimentSetup &xs)
+        {
+            const Campaign &c = *xs.campaign;
+            const Experiment &e = *xs.experiment;
+            xs.world = loadWorld(e.worldFile);
+            xs.query = xs.world.query(e.query);
+            xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
+            xs.metricStep = defaultMetricStep(xs.world);
+#ifdef MHPLAN_BENCH_HAVE_OPTIMUM
+            const Clock::time_point t0 = Clock::now();
+            const OptimumResult opt = computeOptimum(xs.world, xs.query);
+            xs.optimumSeconds = secondsSince(t0);
+            if (opt.found)
+                xs.optimum = opt.length;
+#endif
+        }
+
+        /** Check every planner and parameter in a throw-away process (so that this process never
+            allocates a random number generator before the run processes set their seeds). */
+        void validatePlanners(const Campaign &c, const PlannerRegistry &registry, const World &world,
+                              const Query &query)
+        {
+            int fds[2];
+            if (::pipe(fds) != 0)
+                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid == 0)
+            {
+                ::close(fds[0]);
+                std::string error;
+                try
+                {
+                    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+                    const CollisionModelPtr model =
+                        makeCollisionModel(world, parseCollisionBackend(c.collision));
+                    const og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+                    for (std::size_t i = 0; i < c.planners.size(); ++i)
+                    {
+                        try
+                        {
+                            registry.create(c.planners[i].planner, ss->getSpaceInformation(),
+                                            c.planners[i].params);
+                        }
+                        catch (const std::exception &ex)
+                        {
+                            error = c.file + ": planners[" + std::to_string(i) + "] (" +
+                                    c.planners[i].displayName + "): " + ex.what();
+                            break;
+                        }
+                    }
+                }
+                catch (const std::exception &ex)
+                {
+                    error = ex.what();
+                }
+                writeAll(fds[1], error);
+                ::close(fds[1]);
+                ::_exit(0);
+            }
+            ::close(fds[1]);
+            std::string error;
+            char buf[4096];
+            ssize_t n;
+            while ((n = ::read(fds[0], buf, sizeof(buf))) > 0 || (n < 0 && errno == EINTR))
+                if (n > 0)
+                    error.append(buf, static_cast<std::size_t>(n));
+            ::close(fds[0]);
+            int status = 0;
+            ::waitpid(pid, &status, 0);
+            if (!error.empty())
+                throw InputError(error);
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+                throw std::runtime_error("checking the campaign's planners crashed the checking process");
+        }
+
+        std::string formatDuration(double s)
+        {
+            if (!std::isfinite(s) || s < 0)
+                return "--";
+            const long total = std::lround(s);
+            std::ostringstream out;
+            if (total >= 3600)
+                out << total / 3600 << "h" << std::setw(2) << std::setfill('0') << (total / 60) % 60 << "m";
+            else if (total >= 60)
+                out << total / 60 << "m" << std::setw(2) << std::setfill('0') << total % 60 << "s";
+            else
+                out << total << "s";
+            return out.str();
+        }
+
+        /** Terminal progress: experiments and runs done, crashes, elapsed time and ETA. */
+        class ProgressBar
+        {
+          public:
+            ProgressBar(bool enabled, std::size_t experiments, std::size_t runs)
+                : enabled_(enabled), experiments_(experiments), runs_(runs), start_(Clock::now())
+            {
+            }
+            void update(std::size_t expDone, std::size_t runsDone, std::size_t crashes, bool force = false)
+            {
+                if (!enabled_)
+                    return;
+                if (!force && secondsSince(lastDraw_) < 0.2)
+                    return;
+                lastDraw_ = Clock::now();
+                const double elapsed = secondsSince(start_);
+                const double frac = runs_ ? static_cast<double>(runsDone) / static_cast<double>(runs_) : 1.0;
+                const double eta = frac > 0.0 ? elapsed * (1.0 - frac) / frac : -1.0;
+                const int width = 28;
+                const int filled = static_cast<int>(frac * width);
+                std::ostringstream line;
+                line << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+                     << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << std::setw(3)
+                     << static_cast<int>(100.0 * frac) << "% experiments " << expDone << "/" << experiments_
+                     << " runs " << runsDone << "/" << runs_;
+                if (crashes > 0)
+                    line << " crashes " << crashes;
+                line << " elapsed " << formatDuration(elapsed) << " ETA "
+                     << (frac > 0 ? formatDuration(eta) : "--") << "   ";
+                std::cerr << line.str() << std::flush;
+            }
+            void finish()
+            {
+                if (enabled_)
+                    std::cerr << "\n";
+            }
+
+          private:
+            bool enabled_;
+            std::size_t experiments_;
+            std::size_t runs_;
+            Clock::time_point start_;
+            Clock::time_point lastDraw_{};
+        };
+    } // namespace
+
+    bool logIsComplete(const std::string &log, const std::string &configHash)
+    {
+        std::ifstream in(log);
+        if (!in)
+            return false;
+        std::string line;
+        bool hashOk = false;
+        std::size_t n = 0;
+        while (std::getline(in, line) && n < 64 && !hashOk)
+        {
+            ++n;
+            if (line.rfind("config_hash TEXT = ", 0) == 0)
+                hashOk = line.substr(19) == configHash;
+        }
+        if (!hashOk)
+            return false;
+        // A finished log ends with the last planner's "." line.
+        std::string last;
+        while (std::getline(in, line))
+            if (!line.empty())
+                last = line;
+        return last == ".";
+    }
+
+    CampaignSummary runCampaign(const Campaign &campaign, const RunOptions &options)
+    {
+        const Clock::time_point t0 = Clock::now();
+        if (!options.resolveWorld)
+            throw std::invalid_argument("runCampaign: options.resolveWorld must be set");
+        if (options.jobs < 1 || options.jobs > 256)
+            throw InputError("--jobs must be in [1, 256] (got " + std::to_string(options.jobs) + ")");
+        const PlannerRegistry &registry = options.registry ? *options.registry : PlannerRegistry::builtin();
+        std::ostream *msg = options.messages;
+
+        const std::vector<Experiment> all = enumerateExperiments(campaign, options.resolveWorld);
+        const std::vector<Experiment> mine = shardExperiments(all, options.shardIndex, options.shardCount);
+        for (const auto &p : campaign.planners)
+            registry.get(p.planner); // unknown names fail here with the list of registered planners
+        {
+            const World world = loadWorld(all.front().worldFile);
+            validatePlanners(campaign, registry, world, world.query(all.front().query));
+        }
+
+        CampaignSummary summary;
+        summary.experiments = mine.size();
+        std::vector<const Experiment *> todo;
+        for (const auto &e : mine)
+        {
+            if (logIsComplete(logFile(campaign, e), e.configHash))
+                ++summary.skipped;
+            else
+                todo.push_back(&e);
+        }
+        if (msg && summary.skipped > 0)
+            *msg << "mhplan bench: " << summary.skipped << " of " << mine.size()
+                 << " experiments already complete (logs in " << campaign.logDir << "), skipping them\n";
+
+        if (options.run && !todo.empty())
+        {
+            fs::create_directories(campaign.logDir);
+            const std::size_t runsPerExperiment = campaign.planners.size() * campaign.runs;
+            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), todo.size() * runsPerExperiment);
+            struct Active
+            {
+                const Experiment *experiment;
+                int fd;
+                std::string buffer;
+                bool ended{false};
+                double workerSeconds{0.0};
+                double solveSeconds{0.0};
+                std::size_t runsSeen{0};
+            };
+            std::map<pid_t, Active> active;
+            std::size_t nextTodo = 0, expDone = 0, runsDone = 0;
+            ::signal(SIGPIPE, SIG_IGN);
+            while (nextTodo < todo.size() || !active.empty())
+            {
+                while (nextTodo < todo.size() && active.size() < options.jobs)
+                {
+                    const Experiment *e = todo[nextTodo++];
+                    int fds[2];
+                    if (::pipe(fds) != 0)
+                        throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+                    std::cout.flush();
+                    std::cerr.flush();
+                    const pid_t pid = ::fork();
+                    if (pid < 0)
+                        throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+                    if (pid == 0)
+                    {
+                        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+                        ::close(fds[0]);
+                        for (const auto &kv : active)
+                            ::close(kv.second.fd);
+                        int code = 0;
+                        try
+                        {
+                            const Clock::time_point w0 = Clock::now();
+                            ExperimentSetup xs;
+                            xs.campaign = &campaign;
+                            xs.experiment = e;
+                            xs.registry = &registry;
+                            prepareExperiment(xs);
+                            double solve = 0.0;
+                            code = runExperimentProcess(xs, fds[1], solve);
+                            std::ostringstream done;
+                            done.precision(17);
+                            done << "e " << e->index << " " << secondsSince(w0) << " " << solve << "\n";
+                            writeAll(fds[1], done.str());
+                        }
+                        catch (const std::exception &ex)
+                        {
+                            std::cerr << "mhplan bench: experiment " << e->name << " failed: " << ex.what()
+                                      << "\n";
+                            code = 4;
+                        }
+                        ::close(fds[1]);
+                        std::cout.flush();
+                        std::cerr.flush();
+                        ::_exit(code);
+                    }
+                    ::close(fds[1]);
+                    active[pid] = Active{e, fds[0], "", false, 0.0, 0.0, 0};
+                }
+                std::vector<pollfd> pfds;
+                std::vector<pid_t> pids;
+                for (const auto &kv : active)
+                {
+                    if (kv.second.ended)
+                        continue;
+                    pfds.push_back({kv.second.fd, POLLIN, 0});
+                    pids.push_back(kv.first);
+                }
+                if (!pfds.empty())
+                    ::poll(pfds.data(), pfds.size(), 200);
+                for (std::size_t i = 0; i < pfds.size(); ++i)
+                {
+                    if (!(pfds[i].revents & (POLLIN | POLLHUP | POLLERR)))
+                        continue;
+                    Active &a = active[pids[i]];
+                    char buf[4096];
+                    const ssize_t n = ::read(a.fd, buf, sizeof(buf));
+                    if (n <= 0)
+                    {
+                        if (n < 0 && errno == EINTR)
+                            continue;
+                        a.ended = true;
+                        continue;
+                    }
+                    a.buffer.append(buf, static_cast<std::size_t>(n));
+                    std::size_t nl;
+                    while ((nl = a.buffer.find('\n')) != std::string::npos)
+                    {
+                        std::istringstream line(a.buffer.substr(0, nl));
+                        a.buffer.erase(0, nl + 1);
+                        char type = 0;
+                        std::size_t index = 0;
+                        line >> type >> index;
+                        if (type == 'r')
+                        {
+                            int crashed = 0;
+                            line >> crashed;
+                            ++runsDone;
+                            ++a.runsSeen;
+                            ++summary.runs;
+                            summary.crashes += crashed ? 1 : 0;
+                        }
+                        else if (type == 'e')
+                            line >> a.workerSeconds >> a.solveSeconds;
+                    }
+                }
+                bar.update(expDone, runsDone, summary.crashes);
+                // Reap finished experiment processes.
+                for (auto it = active.begin(); it != active.end();)
+                {
+                    if (!it->second.ended)
+                    {
+                        ++it;
+                        continue;
+                    }
+                    int status = 0;
+                    if (::waitpid(it->first, &status, 0) < 0 && errno == EINTR)
+                        continue;
+                    const Active &a = it->second;
+                    ++expDone;
+                    // Runs a failed process never reported still count as done for the bar.
+                    runsDone += runsPerExperiment > a.runsSeen ? runsPerExperiment - a.runsSeen : 0;
+                    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+                                    logIsComplete(logFile(campaign, *a.experiment), a.experiment->configHash);
+                    if (ok)
+                    {
+                        ++summary.completed;
+                        summary.workerSeconds += a.workerSeconds;
+                        summary.solveSeconds += a.solveSeconds;
+                    }
+                    else
+                    {
+                        ++summary.failed;
+                        summary.errors.push_back("experiment " + a.experiment->name + " failed (" +
+                                                 (WIFSIGNALED(status)
+                                                      ? "signal " + std::to_string(WTERMSIG(status))
+                                                      : "exit code " + std::to_string(WEXITSTATUS(status))) +
+                                                 "); re-run the campaign to retry it");
+                    }
+                    if (msg && !(options.progressBar && ::isatty(2)))
+                        *msg << "[" << expDone << "/" << todo.size() << "] " << a.experiment->name
+                             << (ok ? " done" : " FAILED") << " (" << std::fixed << std::setprecision(1)
+                             << a.workerSeconds << " s)\n"
+                             << std::defaultfloat;
+                    ::close(a.fd);
+                    it = active.erase(it);
+                    bar.update(expDone, runsDone, summary.crashes, true);
+                }
+            }
+            bar.finish();
+        }
+
+        if (options.merge)
+        {
+            const Clock::time_point m0 = Clock::now();
+            // Merge every complete log of the whole campaign (all shards), so that one final step after
+            // sharded runs builds the database.
+            summary.mergedLogs = mergeDatabase(campaign, all, options.statisticsTool);
+            summary.mergeSeconds = secondsSince(m0);
+        }
+        summary.wallSeconds = secondsSince(t0);
+        return summary;
+    }
+
+    // --- the database
+    // ---------------------------------------------------------------------------------------
+
+    namespace
+    {
+        class Database
+        {
+          public:
+            explicit Database(const std::string &file)
+            {
+                if (sqlite3_open(file.c_str(), &db_) != SQLITE_OK)
+                {
+                    const std::string err = db_ ? sqlite3_errmsg(db_) : "out of memory";
+                    sqlite3_close(db_);
+                    throw std::runtime_error("cannot open database '" + file + "': " + err);
+                }
+                sqlite3_busy_timeout(db_, 10000);
+                exec("PRAGMA foreign_keys = ON");
+            }
+            ~Database() { sqlite3_close(db_); }
+            Database(const Database &) = delete;
+            Database &operator=(const Database &) = delete;
+
+            void exec(const std::string &sql)
+            {
+                char *err = nullptr;
+                if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK)
+                {
+                    const std::string e = err ? err : "?";
+                    sqlite3_free(err);
+                    throw std::runtime_error("database: " + e + " in: " + sql);
+                }
+            }
+
+            bool hasTable(const std::string &name)
+            {
+                Statement st(*this, "SELECT count(*) FROM sqlite_master WHERE type='table' AND name=?");
+                st.bind(1, name);
+                return st.step() && st.integer(0) > 0;
+            }
+
+            class Statement
+            {
+              public:
+                Statement(Database &db, const std::string &sql) : db_(db)
+                {
+                    if (sqlite3_prepare_v2(db.db_, sql.c_str(), -1, &st_, nullptr) != SQLITE_OK)
+                        throw std::runtime_error("database: " + std::string(sqlite3_errmsg(db.db_)) +
+                                                 " in: " + sql);
+                }
+                ~Statement() { sqlite3_finalize(st_); }
+                Statement(const Statement &) = delete;
+                Statement &operator=(const Statement &) = delete;
+                void bind(int i, const std::string &v)
+                {
+                    sqlite3_bind_text(st_, i, v.c_str(), -1, SQLITE_TRANSIENT);
+                }
+                void bind(int i, long long v) { sqlite3_bind_int64(st_, i, v); }
+                void bind(int i, double v) { sqlite3_bind_double(st_, i, v); }
+                bool step()
+                {
+                    const int rc = sqlite3_step(st_);
+                    if (rc == SQLITE_ROW)
+                        return true;
+                    if (rc != SQLITE_DONE)
+                        throw std::runtime_error("database: " + std::string(sqlite3_errmsg(db_.db_)));
+                    return false;
+                }
+                void reset()
+                {
+                    sqlite3_reset(st_);
+                    sqlite3_clear_bindings(st_);
+                }
+                long long integer(int col) { return sqlite3_column_int64(st_, col); }
+                std::string text(int col)
+                {
+                    const auto *t = sqlite3_column_text(st_, col);
+                    return t ? reinterpret_cast<const char *>(t) : "";
+                }
+
+              private:
+                Database &db_;
+                sqlite3_stmt *st_{nullptr};
+            };
+
+          private:
+            sqlite3 *db_{nullptr};
+        };
+
+        /** Run a program with arguments; its standard output goes to \e outputFile. Returns the exit code. */
+        int runProgram(const std::vector<std::string> &argv, const std::string &outputFile)
+        {
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            if (pid == 0)
+            {
+                const int fd = ::open(outputFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+                if (fd >= 0)
+                {
+                    ::dup2(fd, 1);
+                    ::dup2(fd, 2);
+                    ::close(fd);
+                }
+                std::vector<char *> args;
+                for (const auto &a : argv)
+                    args.push_back(const_cast<char *>(a.c_str()));
+                args.push_back(nullptr);
+                ::execv(args[0], args.data());
+                ::_exit(127);
+            }
+            int status = 0;
+            while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            {
+            }
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        }
+
+        std::string readAll(const std::string &file)
+        {
+            std::ifstream in(file);
+            std::ostringstream ss;
+            ss << in.rdbuf();
+            return ss.str();
+        }
+    } // namespace
+
+    std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
+                              const std::string &statisticsTool)
+    {
+        struct Pending
+        {
+            const Experiment *experiment;
+            std::string log;
+            std::string content;
+        };
+        std::vector<Pending> pending;
+        long long maxBefore = 0;
+        const fs::path dbPath(campaign.database);
+        if (dbPath.has_parent_path())
+            fs::create_directories(dbPath.parent_path());
+        {
+            Database db(campaign.database);
+            db.exec("CREATE TABLE IF NOT EXISTS mhplan_logs (file TEXT PRIMARY KEY, experiment TEXT, "
+                    "experimentid INTEGER, log_fingerprint TEXT, merged DATETIME)");
+            std::map<std::string, std::pair<std::string, long long>> merged;
+            {
+                Database::Statement st(db, "SELECT file, log_fingerprint, experimentid FROM mhplan_logs");
+                while (st.step())
+                    merged[st.text(0)] = {st.text(1), st.integer(2)};
+            }
+            const bool haveExperiments = db.hasTable("experiments");
+            for (const auto &e : experiments)
+            {
+                const std::string log = logFile(campaign, e);
+                if (!logIsComplete(log, e.configHash))
+                    continue;
+                const std::string key = fs::path(log).filename().string();
+                const std::string content = fingerprint(readAll(log));
+                const auto it = merged.find(key);
+                if (it != merged.end() && it->second.first == content)
+                    continue;
+                if (it != merged.end() && haveExperiments)
+                {
+                    // The experiment was re-run with another configuration: replace its old rows.
+                    Database::Statement del(db, "DELETE FROM experiments WHERE id = ?");
+                    del.bind(1, it->second.second);
+                    del.step();
+                    Database::Statement del2(db, "DELETE FROM mhplan_logs WHERE file = ?");
+                    del2.bind(1, key);
+                    del2.step();
+                }
+                pending.push_back({&e, log, content});
+            }
+            if (pending.empty())
+                return 0;
+            if (haveExperiments)
+            {
+                Database::Statement st(db, "SELECT coalesce(max(id), 0) FROM experiments");
+                if (st.step())
+                    maxBefore = st.integer(0);
+            }
+        }
+
+        std::vector<std::string> argv{statisticsTool, "-a", "-d", campaign.database};
+        for (const auto &p : pending)
+            argv.push_back(p.log);
+        const std::string output = campaign.database + ".merge-output.txt";
+        const int rc = runProgram(argv, output);
+        if (rc != 0)
+            throw std::runtime_error(statisticsTool + " failed with exit code " + std::to_string(rc) + ":\n" +
+                                     readAll(output));
+        fs::remove(output);
+
+        Database db(campaign.database);
+        db.exec("BEGIN");
+        db.exec("CREATE TABLE IF NOT EXISTS paths (runid INTEGER PRIMARY KEY, points TEXT, "
+                "FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE)");
+        std::vector<long long> ids;
+        {
+            Database::Statement st(db, "SELECT id FROM experiments WHERE id > ? ORDER BY id");
+            st.bind(1, maxBefore);
+            while (st.step())
+                ids.push_back(st.integer(0));
+        }
+        if (ids.size() != pending.size())
+            throw std::runtime_error("database '" + campaign.database + "': expected " +
+                                     std::to_string(pending.size()) +
+                                     " new experiments after the merge, found " + std::to_string(ids.size()) +
+                                     " (was it written concurrently?)");
+        Database::Statement record(db,
+                                   "INSERT OR REPLACE INTO mhplan_logs VALUES (?, ?, ?, ?, datetime('now'))");
+        Database::Statement findRun(
+            db, "SELECT runs.id FROM runs JOIN plannerConfigs ON runs.plannerid = "
+                "plannerConfigs.id WHERE runs.experimentid = ? AND plannerConfigs.name = ? "
+                "AND runs.run_index = ?");
+        Database::Statement insertPath(db, "INSERT OR REPLACE INTO paths VALUES (?, ?)");
+        for (std::size_t i = 0; i < pending.size(); ++i)
+        {
+            const Experiment &e = *pending[i].experiment;
+            record.bind(1, fs::path(pending[i].log).filename().string());
+            record.bind(2, e.name);
+            record.bind(3, ids[i]);
+            record.bind(4, pending[i].content);
+            record.step();
+            record.reset();
+            std::ifstream in(pathsFile(campaign, e));
+            std::string line;
+            while (std::getline(in, line))
+            {
+                if (line.empty() || line[0] == '#')
+                    continue;
+                const std::vector<std::string> cols = splitOn(line, '\t');
+                if (cols.size() != 3)
+                    continue;
+                findRun.bind(1, ids[i]);
+                findRun.bind(2, cols[0]);
+                findRun.bind(3, std::atoll(cols[1].c_str()));
+                const bool found = findRun.step();
+                const long long runId = found ? findRun.integer(0) : -1;
+                findRun.reset();
+                if (!found)
+                    continue;
+                insertPath.bind(1, runId);
+                insertPath.bind(2, cols[2]);
+                insertPath.step();
+                insertPath.reset();
+            }
+        }
+        db.exec("COMMIT");
+        return pending.size();
+    }
+} // namespace mhplan::bench

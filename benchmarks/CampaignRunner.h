@@ -1,0 +1,83 @@
+/* mhplan: running a benchmark campaign. Every (world, query) experiment is one ompl::tools::Benchmark
+   experiment; its runs execute in child processes so that a planner that throws, aborts, crashes or hangs
+   is recorded with status Crash while the campaign goes on. Logs are OMPL benchmark logs (one per
+   experiment, with a real version line), merged into one SQLite database by ompl_benchmark_statistics. */
+#ifndef MHPLAN_BENCH_CAMPAIGN_RUNNER_H
+#define MHPLAN_BENCH_CAMPAIGN_RUNNER_H
+
+#include "Campaign.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    class PlannerRegistry;
+}
+
+namespace mhplan::bench
+{
+    /** \brief How to run a campaign. */
+    struct RunOptions
+    {
+        /** \brief Experiments run at the same time, each in its own process (1..256). */
+        unsigned int jobs{1};
+        /** \brief Run only part \e shardIndex (1-based) of \e shardCount disjoint parts. */
+        unsigned int shardIndex{1};
+        unsigned int shardCount{1};
+        /** \brief Run the experiments whose logs are missing or stale. */
+        bool run{true};
+        /** \brief Append the finished logs to the campaign's database afterwards. */
+        bool merge{true};
+        /** \brief Draw a progress bar on stderr (only when stderr is a terminal). */
+        bool progressBar{true};
+        /** \brief Where progress lines and the summary go when there is no bar (may be null). */
+        std::ostream *messages{nullptr};
+        /** \brief The converter from logs to the database. */
+        std::string statisticsTool{"/usr/bin/ompl_benchmark_statistics"};
+        /** \brief Planners to draw from (default: PlannerRegistry::builtin()). */
+        const PlannerRegistry *registry{nullptr};
+        /** \brief How world names are resolved (required). */
+        WorldResolver resolveWorld;
+    };
+
+    /** \brief What a campaign did and how long it took. */
+    struct CampaignSummary
+    {
+        std::size_t experiments{0}; ///< experiments in this shard
+        std::size_t skipped{0};     ///< already complete (resume)
+        std::size_t completed{0};   ///< run now, log written
+        std::size_t failed{0};      ///< worker process failed (no log)
+        std::size_t runs{0};        ///< planner runs executed now
+        std::size_t crashes{0};     ///< of which recorded as Crash
+        std::size_t mergedLogs{0};  ///< logs appended to the database now
+        double wallSeconds{0.0};    ///< whole call
+        double workerSeconds{0.0};  ///< sum over experiments of their processes' wall time
+        double solveSeconds{0.0};   ///< sum of the planners' solve times (OMPL's "time" of each run)
+        double mergeSeconds{0.0};   ///< building the database
+        std::vector<std::string> errors;
+        /** \brief (worker + merge - solve) / (worker + merge): time outside solve calls. */
+        double overheadFraction() const;
+    };
+
+    /** \brief Run (the shard of) a campaign and merge its logs. Throws InputError for a bad campaign
+        (unknown planner or parameter, missing world) before any work starts. */
+    CampaignSummary runCampaign(const Campaign &campaign, const RunOptions &options);
+
+    /** \brief The log file of an experiment. */
+    std::string logFile(const Campaign &campaign, const Experiment &experiment);
+    /** \brief The solution-path sidecar of an experiment's log (tab-separated: planner, run, points). */
+    std::string pathsFile(const Campaign &campaign, const Experiment &experiment);
+
+    /** \brief True when \e log exists, is complete and was made with configuration \e configHash. */
+    bool logIsComplete(const std::string &log, const std::string &configHash);
+
+    /** \brief Append the complete logs of \e experiments that the database does not hold yet (or holds
+        from another configuration, which is replaced) with ompl_benchmark_statistics, then add their
+        solution paths to the table solution_paths(runid, idx, x, y). Returns the number of logs merged. */
+    std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
+                              const std::string &statisticsTool);
+} // namespace mhplan::bench
+
+#endif

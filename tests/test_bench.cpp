@@ -1,0 +1,440 @@
+/* Benchmark campaigns end to end: a tiny campaign (two worlds, GA twice under distinct names, RRT*, and two
+   deliberately crashing planners) is run, merged into an OMPL database and checked for its experiments,
+   planners, runs and columns; the optimality gap is recomputed from the stored values; sharded runs merge
+   to the unsharded row count with identical results; a re-run resumes (skips finished experiments). */
+#include "Campaign.h"
+#include "CampaignRunner.h"
+#include "Registry.h"
+#include "World.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/util/Exception.h>
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace mhplan;
+using namespace mhplan::bench;
+namespace ob = ompl::base;
+namespace fs = std::filesystem;
+
+namespace
+{
+    /** A planner that never returns normally: "throw" raises an ompl::Exception (a std::runtime_error, which
+        OMPL's benchmark catches), "abort" kills its process, "segfault" raises SIGSEGV. */
+    class CrashPlanner : public ob::Planner
+    {
+      public:
+        explicit CrashPlanner(const ob::SpaceInformationPtr &si) : ob::Planner(si, "CrashTest")
+        {
+            declareParam<std::string>("mode", this, &CrashPlanner::setMode, &CrashPlanner::getMode,
+                                      "throw,abort,segfault");
+        }
+        void setMode(const std::string &m) { mode_ = m; }
+        std::string getMode() const { return mode_; }
+        ob::PlannerStatus solve(const ob::PlannerTerminationCondition &) override
+        {
+            checkValidity();
+            if (mode_ == "throw")
+                throw ompl::Exception("CrashTest", "deliberate failure");
+            if (mode_ == "segfault")
+                std::raise(SIGSEGV);
+            std::abort();
+        }
+
+      private:
+        std::string mode_{"abort"};
+    };
+
+    const PlannerRegistry &testRegistry()
+    {
+        static const PlannerRegistry registry = []
+        {
+            PlannerRegistry r = PlannerRegistry::builtin();
+            r.add({"CrashTest", "test", "always fails",
+                   [](const ob::SpaceInformationPtr &si) { return std::make_shared<CrashPlanner>(si); }});
+            return r;
+        }();
+        return registry;
+    }
+
+    std::string resolveShipped(const std::string &name)
+    {
+        if (fs::exists(name))
+            return name;
+        return std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml";
+    }
+
+    /** The tiny campaign with its database under a fresh directory \e tag. */
+    Campaign tinyCampaign(const std::string &tag)
+    {
+        Campaign c = loadCampaign(std::string(MHPLAN_TEST_DATA_DIR) + "/bench_tiny.yaml");
+        const fs::path dir =
+            fs::temp_directory_path() / ("mhplan_test_bench_" + std::to_string(::getpid())) / tag;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        c.database = (dir / "tiny.db").string();
+        c.logDir = (dir / "logs").string();
+        c.planners.push_back({"CrashAbort", "CrashTest", {{"mode", "abort"}}});
+        c.planners.push_back({"CrashThrow", "CrashTest", {{"mode", "throw"}}});
+        return c;
+    }
+
+    RunOptions options(unsigned int jobs = 1)
+    {
+        RunOptions o;
+        o.jobs = jobs;
+        o.progressBar = false;
+        o.registry = &testRegistry();
+        o.resolveWorld = resolveShipped;
+        return o;
+    }
+
+    /** Minimal read-only SQL access for the assertions. */
+    class Sql
+    {
+      public:
+        explicit Sql(const std::string &file)
+        {
+            if (sqlite3_open_v2(file.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
+                ADD_FAILURE() << "cannot open " << file;
+        }
+        ~Sql() { sqlite3_close(db_); }
+        /** Rows of text values (NULL as "NULL"). */
+        std::vector<std::vector<std::string>> rows(const std::string &sql) const
+        {
+            std::vector<std::vector<std::string>> out;
+            sqlite3_stmt *st = nullptr;
+            if (sqlite3_prepare_v2(db_, sql.c_str(), -1, &st, nullptr) != SQLITE_OK)
+            {
+                ADD_FAILURE() << sqlite3_errmsg(db_) << " in " << sql;
+                return out;
+            }
+            while (sqlite3_step(st) == SQLITE_ROW)
+            {
+                std::vector<std::string> row;
+                for (int i = 0; i < sqlite3_column_count(st); ++i)
+                {
+                    const auto *t = sqlite3_column_text(st, i);
+                    row.push_back(t ? reinterpret_cast<const char *>(t) : "NULL");
+                }
+                out.push_back(row);
+            }
+            sqlite3_finalize(st);
+            return out;
+        }
+        long long count(const std::string &sql) const
+        {
+            const auto r = rows(sql);
+            return r.empty() ? -1 : std::atoll(r[0][0].c_str());
+        }
+        std::set<std::string> columns(const std::string &table) const
+        {
+            std::set<std::string> out;
+            for (const auto &r : rows("PRAGMA table_info(" + table + ")"))
+                out.insert(r[1]);
+            return out;
+        }
+
+      private:
+        sqlite3 *db_{nullptr};
+    };
+
+    /** path_length of every run keyed by (experiment, planner, run index). */
+    std::map<std::string, std::string> lengthsByRun(const Sql &sql)
+    {
+        std::map<std::string, std::string> out;
+        for (const auto &r :
+             sql.rows("SELECT experiments.name, plannerConfigs.name, runs.run_index, "
+                      "runs.path_length FROM runs JOIN experiments ON runs.experimentid = "
+                      "experiments.id JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
+            out[r[0] + "|" + r[1] + "|" + r[2]] = r[3];
+        return out;
+    }
+
+    constexpr int kRunsPerExperiment = 5 * 3; // planners x runs
+} // namespace
+
+TEST(Campaign, ParsesAndRefusesBadInput)
+{
+    const Campaign c = loadCampaign(std::string(MHPLAN_TEST_DATA_DIR) + "/bench_tiny.yaml");
+    EXPECT_EQ(c.name, "tiny");
+    EXPECT_EQ(c.runs, 3u);
+    EXPECT_DOUBLE_EQ(c.timeLimit, 0.05);
+    ASSERT_EQ(c.planners.size(), 3u);
+    EXPECT_EQ(c.planners[1].displayName, "GA");
+    EXPECT_EQ(c.planners[2].displayName, "GA_small");
+    EXPECT_EQ(c.planners[2].planner, "GA");
+    EXPECT_EQ(c.planners[2].params.at("max_iterations"), "3");
+    EXPECT_EQ(c.logDir, "tiny.db.logs");
+
+    const auto error = [](const std::string &text)
+    {
+        try
+        {
+            parseCampaign(text, "bad.yaml");
+        }
+        catch (const InputError &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\nrunz: 3\n").find("unknown key 'runz'"), std::string::npos);
+    EXPECT_NE(error("worlds: [a]\nplanners: [GA, GA]\n").find("duplicate planner name 'GA'"),
+              std::string::npos);
+    EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\nruns: 0\n").find("field 'runs'"), std::string::npos);
+    EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\ntime_limit: x\n").find("field 'time_limit'"),
+              std::string::npos);
+    EXPECT_NE(error("planners: [RRT]\n").find("field 'worlds': missing"), std::string::npos);
+    EXPECT_NE(error("worlds: [a]\nplanners:\n  - {planner: RRT, name: 'a b'}\n").find("blanks"),
+              std::string::npos);
+}
+
+TEST(Campaign, SeedsAndShardsAreDeterministic)
+{
+    EXPECT_EQ(deriveSeed(1, "bfo_case1-default", 0), deriveSeed(1, "bfo_case1-default", 0));
+    EXPECT_NE(deriveSeed(1, "bfo_case1-default", 0), deriveSeed(2, "bfo_case1-default", 0));
+    EXPECT_NE(deriveSeed(1, "bfo_case1-default", 0), deriveSeed(1, "bfo_case1-default", 1));
+    EXPECT_NE(deriveSeed(1, "GA", 0), 0u);
+    Campaign c = tinyCampaign("enumerate");
+    const auto all = enumerateExperiments(c, resolveShipped);
+    ASSERT_EQ(all.size(), 2u);
+    EXPECT_EQ(all[0].name, "bfo_case1-default");
+    EXPECT_EQ(all[1].name, "lrsma_scenario1-default");
+    const auto a = shardExperiments(all, 1, 2), b = shardExperiments(all, 2, 2);
+    ASSERT_EQ(a.size() + b.size(), all.size());
+    EXPECT_EQ(a[0].name, all[0].name);
+    EXPECT_EQ(b[0].name, all[1].name);
+    EXPECT_THROW(shardExperiments(all, 0, 2), InputError);
+    EXPECT_THROW(shardExperiments(all, 3, 2), InputError);
+    // The fingerprint follows the configuration.
+    Campaign d = c;
+    d.runs = 4;
+    EXPECT_NE(enumerateExperiments(d, resolveShipped)[0].configHash, all[0].configHash);
+}
+
+TEST(Campaign, RefusesUnknownPlannersAndParametersBeforeRunning)
+{
+    Campaign c = tinyCampaign("refuse");
+    c.planners.push_back({"X", "NoSuchPlanner", {}});
+    EXPECT_THROW(runCampaign(c, options()), InputError);
+    c.planners.back() = {"X", "GA", {{"no_such_parameter", "1"}}};
+    try
+    {
+        runCampaign(c, options());
+        ADD_FAILURE() << "expected InputError";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("no_such_parameter"), std::string::npos);
+    }
+    EXPECT_FALSE(fs::exists(c.database));
+}
+
+class TinyCampaign : public ::testing::Test
+{
+  protected:
+    static void SetUpTestSuite()
+    {
+        campaign_ = new Campaign(tinyCampaign("full"));
+        summary_ = new CampaignSummary(runCampaign(*campaign_, options(2)));
+    }
+    static void TearDownTestSuite()
+    {
+        delete campaign_;
+        delete summary_;
+    }
+    static Campaign *campaign_;
+    static CampaignSummary *summary_;
+};
+Campaign *TinyCampaign::campaign_ = nullptr;
+CampaignSummary *TinyCampaign::summary_ = nullptr;
+
+TEST_F(TinyCampaign, DatabaseHasExpectedExperimentsPlannersRunsAndColumns)
+{
+    EXPECT_EQ(summary_->experiments, 2u);
+    EXPECT_EQ(summary_->completed, 2u);
+    EXPECT_EQ(summary_->failed, 0u) << (summary_->errors.empty() ? "" : summary_->errors[0]);
+    EXPECT_EQ(summary_->runs, 2u * kRunsPerExperiment);
+    EXPECT_EQ(summary_->mergedLogs, 2u);
+    const Sql sql(campaign_->database);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments"), 2);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs"), 2 * kRunsPerExperiment);
+    std::set<std::string> planners;
+    for (const auto &r : sql.rows("SELECT DISTINCT name FROM plannerConfigs"))
+        planners.insert(r[0]);
+    EXPECT_EQ(planners, (std::set<std::string>{"geometric_RRTstar", "geometric_GA", "geometric_GA_small",
+                                               "geometric_CrashAbort", "geometric_CrashThrow"}));
+    // The two GA configurations are distinct planner configurations with their own settings.
+    const auto settings =
+        sql.rows("SELECT DISTINCT plannerConfigs.name, plannerConfigs.settings FROM runs JOIN "
+                 "plannerConfigs ON runs.plannerid = plannerConfigs.id WHERE runs.experimentid = "
+                 "(SELECT min(id) FROM experiments) AND plannerConfigs.name LIKE 'geometric_GA%'");
+    ASSERT_EQ(settings.size(), 2u);
+    EXPECT_NE(settings[0][1], settings[1][1]);
+    EXPECT_NE(settings[0][1].find("max_iterations = "), std::string::npos);
+    // A real version line (Debian's OMPL leaves it empty).
+    for (const auto &r : sql.rows("SELECT version FROM experiments"))
+        EXPECT_EQ(r[0].rfind("OMPL 1.", 0), 0u) << r[0];
+    const std::set<std::string> exp = sql.columns("experiments");
+    for (const char *c :
+         {"world", "world_type", "world_file", "obstacle_count", "robot_radius", "query", "config_hash"})
+        EXPECT_TRUE(exp.count(c)) << "experiments." << c;
+    const std::set<std::string> runs = sql.columns("runs");
+    for (const char *c :
+         {"time", "status", "solved", "path_length", "exact_optimum", "optimality_gap", "collision_free",
+          "min_clearance", "mean_clearance", "smoothness", "max_curvature", "angle_over_length", "cusps",
+          "iterations", "fitness_evaluations", "run_index", "seed"})
+        EXPECT_TRUE(runs.count(c)) << "runs." << c;
+    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments WHERE world = 'bfo_case1' AND obstacle_count > 0"),
+              1);
+    // Every run index 0..2 of every planner and experiment is present once.
+    EXPECT_EQ(
+        sql.count("SELECT count(DISTINCT experimentid || '/' || plannerid || '/' || run_index) FROM runs"),
+        2 * kRunsPerExperiment);
+}
+
+TEST_F(TinyCampaign, GapEqualsRecomputedFromStoredLengthAndOptimum)
+{
+    const Sql sql(campaign_->database);
+    if (sql.columns("experiments").count("exact_optimum") == 0)
+        GTEST_SKIP() << "no exact optimum in this build (src/Optimum.cpp not in mhplan_core)";
+    const auto rows = sql.rows("SELECT runs.path_length, runs.exact_optimum, runs.optimality_gap, "
+                               "experiments.exact_optimum FROM runs JOIN experiments ON runs.experimentid = "
+                               "experiments.id WHERE runs.optimality_gap IS NOT NULL");
+    EXPECT_GE(rows.size(), 6u); // at least the GA runs have exact solutions
+    for (const auto &r : rows)
+    {
+        const double length = std::atof(r[0].c_str()), optimum = std::atof(r[1].c_str()),
+                     gap = std::atof(r[2].c_str());
+        EXPECT_EQ(r[1], r[3]); // the run's optimum is the experiment's
+        ASSERT_GT(optimum, 0.0);
+        EXPECT_NEAR(gap, 100.0 * (length - optimum) / optimum, 1e-9 * std::max(1.0, std::abs(gap)));
+        EXPECT_GE(gap, -1e-6); // no valid path beats the exact optimum
+    }
+}
+
+TEST_F(TinyCampaign, CrashingPlannersAreRecordedAsCrashAndTheRestRuns)
+{
+    const Sql sql(campaign_->database);
+    const std::string crash =
+        sql.rows("SELECT value FROM enums WHERE name = 'status' AND description = 'Crash'").at(0).at(0);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                        "WHERE plannerConfigs.name LIKE 'geometric_Crash%' AND runs.status = " +
+                        crash),
+              2 * 2 * 3);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs WHERE status = " + crash), 2 * 2 * 3);
+    EXPECT_EQ(summary_->crashes, 2u * 2 * 3);
+    // The planners after and before the crashing ones solved their problems.
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                        "WHERE plannerConfigs.name = 'geometric_GA' AND runs.solved = 1"),
+              6);
+}
+
+TEST_F(TinyCampaign, SolutionPathsAreSavedPerRun)
+{
+    const Sql sql(campaign_->database);
+    const long long withPath = sql.count("SELECT count(*) FROM runs WHERE path_length IS NOT NULL");
+    EXPECT_GT(withPath, 0);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM paths"), withPath);
+    // A stored path starts at the query's start and its length is the run's path_length.
+    for (const auto &r :
+         sql.rows("SELECT paths.points, runs.path_length FROM paths JOIN runs ON paths.runid = "
+                  "runs.id JOIN experiments ON runs.experimentid = experiments.id WHERE "
+                  "experiments.world = 'bfo_case1'"))
+    {
+        std::vector<std::pair<double, double>> pts;
+        std::size_t pos = 0;
+        while (pos < r[0].size())
+        {
+            const std::size_t end = r[0].find(';', pos);
+            double x = 0, y = 0;
+            if (std::sscanf(r[0].substr(pos, end - pos).c_str(), "%lf %lf", &x, &y) == 2)
+                pts.emplace_back(x, y);
+            pos = end == std::string::npos ? r[0].size() : end + 1;
+        }
+        ASSERT_GE(pts.size(), 2u);
+        EXPECT_DOUBLE_EQ(pts.front().first, 0.0);
+        EXPECT_DOUBLE_EQ(pts.front().second, 0.0);
+        double length = 0.0;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            length += std::hypot(pts[i].first - pts[i - 1].first, pts[i].second - pts[i - 1].second);
+        EXPECT_NEAR(length, std::atof(r[1].c_str()), 1e-9 * length);
+    }
+    // Progress samples of the optimizing planners carry the best cost.
+    EXPECT_TRUE(sql.columns("progress").count("best_cost"));
+    EXPECT_GT(sql.count("SELECT count(*) FROM progress WHERE best_cost IS NOT NULL"), 0);
+}
+
+TEST_F(TinyCampaign, ShardedRunsMergeToTheSameRows)
+{
+    Campaign c = tinyCampaign("sharded");
+    RunOptions o = options();
+    o.merge = false;
+    o.shardIndex = 1;
+    o.shardCount = 2;
+    const CampaignSummary s1 = runCampaign(c, o);
+    o.shardIndex = 2;
+    const CampaignSummary s2 = runCampaign(c, o);
+    EXPECT_EQ(s1.completed + s2.completed, 2u);
+    EXPECT_FALSE(fs::exists(c.database));
+    RunOptions m = options();
+    m.run = false;
+    const CampaignSummary merged = runCampaign(c, m);
+    EXPECT_EQ(merged.mergedLogs, 2u);
+    const Sql sharded(c.database), whole(campaign_->database);
+    EXPECT_EQ(sharded.count("SELECT count(*) FROM runs"), whole.count("SELECT count(*) FROM runs"));
+    EXPECT_EQ(sharded.count("SELECT count(*) FROM experiments"), 2);
+    // Seeds derive from names, not from the process layout: the GA runs (iteration-bounded) are identical.
+    const auto a = lengthsByRun(sharded), b = lengthsByRun(whole);
+    std::size_t compared = 0;
+    for (const auto &kv : a)
+        if (kv.first.find("|geometric_GA") != std::string::npos)
+        {
+            ASSERT_TRUE(b.count(kv.first)) << kv.first;
+            EXPECT_EQ(kv.second, b.at(kv.first)) << kv.first;
+            ++compared;
+        }
+    EXPECT_EQ(compared, 2u * 2 * 3);
+}
+
+TEST_F(TinyCampaign, ReRunResumesAndDoesNotDuplicate)
+{
+    Campaign c = tinyCampaign("resume");
+    const CampaignSummary first = runCampaign(c, options());
+    ASSERT_EQ(first.completed, 2u);
+    const CampaignSummary again = runCampaign(c, options());
+    EXPECT_EQ(again.skipped, 2u);
+    EXPECT_EQ(again.completed, 0u);
+    EXPECT_EQ(again.runs, 0u);
+    EXPECT_EQ(again.mergedLogs, 0u);
+    {
+        const Sql sql(c.database);
+        EXPECT_EQ(sql.count("SELECT count(*) FROM experiments"), 2);
+    }
+    // Lose one experiment (as if killed while it ran): only that one runs again, and its rows are replaced.
+    const auto exps = enumerateExperiments(c, resolveShipped);
+    fs::remove(logFile(c, exps[1]));
+    const CampaignSummary third = runCampaign(c, options());
+    EXPECT_EQ(third.skipped, 1u);
+    EXPECT_EQ(third.completed, 1u);
+    EXPECT_EQ(third.runs, static_cast<std::size_t>(kRunsPerExperiment));
+    EXPECT_EQ(third.mergedLogs, 1u);
+    const Sql sql(c.database);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments"), 2);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs"), 2 * kRunsPerExperiment);
+    // A changed configuration is not mistaken for finished work.
+    c.runs = 2;
+    EXPECT_FALSE(logIsComplete(logFile(c, enumerateExperiments(c, resolveShipped)[0]),
+                               enumerateExperiments(c, resolveShipped)[0].configHash));
+}
