@@ -1,0 +1,632 @@
+/* Tests of the exact optimum: closed forms, the shipped seed worlds, random worlds against a dense roadmap
+   (and, for point robots among polygons and on grids, against a brute-force visibility graph), and the
+   grid octile optimum against a plain Dijkstra. */
+#include "Collision.h"
+#include "Generators.h"
+#include "GridCollision.h"
+#include "Optimum.h"
+#include "WorldIO.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <queue>
+#include <random>
+#include <cstdlib>
+
+using namespace mhplan;
+
+namespace
+{
+    constexpr double kPi = 3.14159265358979323846;
+
+    /** Portable uniform numbers (fixed seeds give the same worlds everywhere). */
+    class Rng
+    {
+      public:
+        explicit Rng(std::uint64_t seed) : engine_(seed) {}
+        double uniform(double lo, double hi)
+        {
+            return lo + (hi - lo) * (static_cast<double>(engine_() >> 11) * 0x1.0p-53);
+        }
+
+      private:
+        std::mt19937_64 engine_;
+    };
+
+    World box10(double robotRadius = 0.0)
+    {
+        World w;
+        w.name = "test";
+        w.bounds = {0.0, 10.0, 0.0, 10.0};
+        w.robotRadius = robotRadius;
+        return w;
+    }
+
+    /** Every consecutive pair of the polyline passes the exact motion validator of the world's model. */
+    ::testing::AssertionResult polylineValid(const World &world, const std::vector<Vec2> &path)
+    {
+        const CollisionModelPtr model = makeCollisionModel(world);
+        if (path.empty())
+            return ::testing::AssertionFailure() << "empty path";
+        for (std::size_t i = 0; i + 1 < path.size(); ++i)
+            if (!model->segmentValid(path[i], path[i + 1]))
+                return ::testing::AssertionFailure()
+                       << "segment " << i << " (" << path[i].x << ", " << path[i].y << ") -> ("
+                       << path[i + 1].x << ", " << path[i + 1].y << ") invalid, clearance "
+                       << model->segmentClearance(path[i], path[i + 1]);
+        return ::testing::AssertionSuccess();
+    }
+
+    double polyline(const std::vector<Vec2> &p)
+    {
+        double s = 0.0;
+        for (std::size_t i = 0; i + 1 < p.size(); ++i)
+            s += distance(p[i], p[i + 1]);
+        return s;
+    }
+
+    /** Shortest path over a graph given as adjacency lists (plain Dijkstra). */
+    double dijkstra(const std::vector<std::vector<std::pair<int, double>>> &adj, int s, int t)
+    {
+        std::vector<double> dist(adj.size(), std::numeric_limits<double>::infinity());
+        using Item = std::pair<double, int>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+        dist[s] = 0.0;
+        open.emplace(0.0, s);
+        while (!open.empty())
+        {
+            const auto [d, u] = open.top();
+            open.pop();
+            if (d > dist[u])
+                continue;
+            for (const auto &[v, w] : adj[u])
+                if (d + w < dist[v])
+                {
+                    dist[v] = d + w;
+                    open.emplace(dist[v], v);
+                }
+        }
+        return dist[t];
+    }
+
+    /** A dense PRM*-style roadmap: a lattice of \e n x \e n points plus \e extra random samples, start and
+        goal; every pair closer than \e radius joined when the exact motion validator accepts it. */
+    double roadmapLength(const World &world, const Query &q, int n, int extra, double radiusCells,
+                         std::uint64_t seed)
+    {
+        const CollisionModelPtr model = makeCollisionModel(world);
+        const Box in = world.bounds.inflated(-world.robotRadius);
+        std::vector<Vec2> pts{q.start, q.goal};
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+            {
+                const Vec2 p{in.xmin + in.width() * (i + 0.5) / n, in.ymin + in.height() * (j + 0.5) / n};
+                if (model->isValid(p))
+                    pts.push_back(p);
+            }
+        Rng rng(seed);
+        for (int k = 0; k < extra; ++k)
+        {
+            const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
+            if (model->isValid(p))
+                pts.push_back(p);
+        }
+        const double radius = radiusCells * std::max(in.width(), in.height()) / n;
+        // Bucket the points for the neighbour search.
+        const int nb = std::max(1, static_cast<int>(std::max(in.width(), in.height()) / radius));
+        const double cs = std::max(in.width(), in.height()) / nb;
+        std::vector<std::vector<int>> buckets(static_cast<std::size_t>(nb + 1) * (nb + 1));
+        auto bucketOf = [&](const Vec2 &p)
+        {
+            const int bx = std::clamp(static_cast<int>((p.x - in.xmin) / cs), 0, nb);
+            const int by = std::clamp(static_cast<int>((p.y - in.ymin) / cs), 0, nb);
+            return std::make_pair(bx, by);
+        };
+        for (std::size_t i = 0; i < pts.size(); ++i)
+        {
+            const auto [bx, by] = bucketOf(pts[i]);
+            buckets[static_cast<std::size_t>(by) * (nb + 1) + bx].push_back(static_cast<int>(i));
+        }
+        std::vector<std::vector<std::pair<int, double>>> adj(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i)
+        {
+            const auto [bx, by] = bucketOf(pts[i]);
+            for (int y = std::max(0, by - 1); y <= std::min(nb, by + 1); ++y)
+                for (int x = std::max(0, bx - 1); x <= std::min(nb, bx + 1); ++x)
+                    for (int j : buckets[static_cast<std::size_t>(y) * (nb + 1) + x])
+                    {
+                        if (j <= static_cast<int>(i))
+                            continue;
+                        const double d = distance(pts[i], pts[j]);
+                        if (d > radius || !model->segmentValid(pts[i], pts[j]))
+                            continue;
+                        adj[i].emplace_back(j, d);
+                        adj[j].emplace_back(static_cast<int>(i), d);
+                    }
+        }
+        return dijkstra(adj, 0, 1);
+    }
+
+    /** Brute-force visibility graph for a point robot: every pair of candidate points checked with the
+        world's exact motion validator (no pruning, no spatial index). */
+    double bruteVisibility(const World &world, const Query &q, const std::vector<Vec2> &corners)
+    {
+        const CollisionModelPtr model = makeCollisionModel(world);
+        std::vector<Vec2> pts{q.start, q.goal};
+        pts.insert(pts.end(), corners.begin(), corners.end());
+        std::vector<std::vector<std::pair<int, double>>> adj(pts.size());
+        for (std::size_t i = 0; i < pts.size(); ++i)
+            for (std::size_t j = i + 1; j < pts.size(); ++j)
+                if (model->segmentValid(pts[i], pts[j]))
+                {
+                    const double d = distance(pts[i], pts[j]);
+                    adj[i].emplace_back(static_cast<int>(j), d);
+                    adj[j].emplace_back(static_cast<int>(i), d);
+                }
+        return dijkstra(adj, 0, 1);
+    }
+
+    std::vector<Vec2> polygonVertices(const World &w)
+    {
+        std::vector<Vec2> out;
+        for (const auto &p : w.polygons)
+            out.insert(out.end(), p.vertices.begin(), p.vertices.end());
+        return out;
+    }
+
+    std::vector<Vec2> gridCornerPoints(const OccupancyGrid &g)
+    {
+        std::vector<Vec2> out;
+        for (int vy = 0; vy <= g.height(); ++vy)
+            for (int vx = 0; vx <= g.width(); ++vx)
+            {
+                int blocked = 0;
+                for (int dy = -1; dy <= 0; ++dy)
+                    for (int dx = -1; dx <= 0; ++dx)
+                        blocked += g.blocked(vx + dx, vy + dy) ? 1 : 0;
+                if (blocked > 0 && blocked < 4)
+                    out.push_back({g.origin().x + vx * g.cellSize(), g.origin().y + vy * g.cellSize()});
+            }
+        return out;
+    }
+
+    Query query(const Vec2 &s, const Vec2 &g)
+    {
+        return {"q", s, g};
+    }
+} // namespace
+
+// ------------------------------------------------------------------------------------------------------
+// Closed forms.
+
+TEST(Optimum, StraightLineWhenFree)
+{
+    World w = box10();
+    const OptimumResult r = computeOptimum(w, query({1, 2}, {8, 6}));
+    ASSERT_TRUE(r.found);
+    EXPECT_NEAR(r.length, std::hypot(7.0, 4.0), 1e-12);
+    EXPECT_EQ(r.method, "tangent-graph");
+    ASSERT_EQ(r.path.size(), 2u);
+}
+
+/*   One disc between start and goal:   S ----\__(  c  )__/---- G
+     L = 2 sqrt(d^2 - R^2) + R (pi - 2 acos(R / d)), d = |S - c| = |G - c|. */
+TEST(Optimum, OneDiscClosedForm)
+{
+    for (double robot : {0.0, 0.3})
+    {
+        World w = box10(robot);
+        w.circles.push_back({{5.0, 5.0}, 1.7});
+        const OptimumResult r = computeOptimum(w, query({1, 5}, {9, 5}));
+        ASSERT_TRUE(r.found);
+        const double R = 1.7 + robot;
+        const double d = 4.0;
+        const double expected = 2.0 * std::sqrt(d * d - R * R) + R * (kPi - 2.0 * std::acos(R / d));
+        EXPECT_NEAR(r.length, expected, 1e-9) << "robot radius " << robot;
+        double sum = 0.0;
+        int arcs = 0;
+        for (const auto &p : r.pieces)
+        {
+            sum += p.length;
+            arcs += p.arc && p.sweep != 0.0 ? 1 : 0;
+        }
+        EXPECT_NEAR(sum, r.length, 1e-12);
+        EXPECT_EQ(arcs, 1);
+        EXPECT_TRUE(polylineValid(w, r.path));
+        // The polyline is a close, slightly longer approximation.
+        EXPECT_GE(polyline(r.path), r.length - 1e-9);
+        EXPECT_LE(polyline(r.path), r.length + 1e-4);
+    }
+}
+
+/* Two overlapping discs (centres 2 apart, radii 1.5): the path may not pass through the lens; it runs over
+   both: tangent, arc, the common outer tangent (length 2), arc, tangent. */
+TEST(Optimum, TwoOverlappingDiscs)
+{
+    World w = box10();
+    w.circles.push_back({{4.0, 5.0}, 1.5});
+    w.circles.push_back({{6.0, 5.0}, 1.5});
+    const OptimumResult r = computeOptimum(w, query({0.5, 5}, {9.5, 5}));
+    ASSERT_TRUE(r.found);
+    const double R = 1.5;
+    const double d = 3.5;
+    const double expected = 2.0 * std::sqrt(d * d - R * R) + 2.0 * R * (kPi / 2 - std::acos(R / d)) + 2.0;
+    EXPECT_NEAR(r.length, expected, 1e-9);
+    EXPECT_TRUE(polylineValid(w, r.path));
+}
+
+/* A triangle with its only reachable convex corner at (6, 5); start (2, 2), goal (2, 8).
+   r = 0: S -> (6,5) -> G, 5 + 5. r = 0.5: the corner is a disc of radius 0.5: two tangents and an arc. */
+TEST(Optimum, PolygonCorner)
+{
+    for (double robot : {0.0, 0.5})
+    {
+        World w = box10(robot);
+        w.polygons.push_back(makePolygon({{-1, 4}, {6, 5}, {-1, 6}}));
+        const OptimumResult r = computeOptimum(w, query({2, 2}, {2, 8}));
+        ASSERT_TRUE(r.found);
+        double expected = 10.0;
+        if (robot > 0.0)
+        {
+            const double d = 5.0;
+            const double beta = std::acos(robot / d);
+            const double as = std::atan2(-3.0, -4.0);
+            const double ag = std::atan2(3.0, -4.0);
+            const double sweep = (ag - beta) - (as + beta);
+            expected = 2.0 * std::sqrt(d * d - robot * robot) + robot * sweep;
+        }
+        EXPECT_NEAR(r.length, expected, 1e-9) << "robot radius " << robot;
+        EXPECT_TRUE(polylineValid(w, r.path));
+    }
+}
+
+/* A point robot around a non-convex polygon (a U open to the left) whose reflex corners must be ignored
+   and whose edges still block: S inside the U, G outside on the right. */
+TEST(Optimum, NonConvexPolygon)
+{
+    World w = box10();
+    w.polygons.push_back(makePolygon({{2, 2}, {8, 2}, {8, 8}, {2, 8}, {2, 7}, {7, 7}, {7, 3}, {2, 3}}));
+    const OptimumResult r = computeOptimum(w, query({5, 5}, {9, 5}));
+    ASSERT_TRUE(r.found);
+    // Out through the opening at x = 2 (corner (2, 7) or (2, 3)), around (8, 8) or (8, 2).
+    const double expected = std::sqrt(13.0) + 1.0 + 6.0 + std::sqrt(10.0);
+    EXPECT_NEAR(r.length, expected, 1e-9);
+    EXPECT_TRUE(polylineValid(w, r.path));
+}
+
+/* The box: start on the boundary, and a disc that crosses the lower wall: the path must go over it. */
+TEST(Optimum, BoxBoundary)
+{
+    World w = box10();
+    w.circles.push_back({{5.0, 0.0}, 2.0});
+    const OptimumResult r = computeOptimum(w, query({0, 0}, {10, 0}));
+    ASSERT_TRUE(r.found);
+    const double expected = 2.0 * std::sqrt(21.0) + 2.0 * (kPi - 2.0 * std::acos(0.4));
+    EXPECT_NEAR(r.length, expected, 1e-9);
+    EXPECT_TRUE(polylineValid(w, r.path));
+
+    // Start and goal on the wall with a free straight line along it.
+    World free = box10();
+    free.circles.push_back({{5.0, 5.0}, 1.0});
+    const OptimumResult along = computeOptimum(free, query({0, 0}, {10, 0}));
+    EXPECT_NEAR(along.length, 10.0, 1e-12);
+    EXPECT_TRUE(polylineValid(free, along.path));
+
+    // A disc touching all four walls: passage only by touching the walls; the arc runs through the contact
+    // points (0, 5) and (5, 10).
+    World big = box10();
+    big.circles.push_back({{5.0, 5.0}, 5.0});
+    const OptimumResult r2 = computeOptimum(big, query({0.5, 0.5}, {9.5, 9.5}));
+    ASSERT_TRUE(r2.found);
+    const double d = 4.5 * std::sqrt(2.0);
+    const double beta = std::acos(5.0 / d);
+    EXPECT_NEAR(r2.length, 2.0 * std::sqrt(d * d - 25.0) + 5.0 * (kPi - 2.0 * beta), 1e-9);
+
+    // With a robot disc, a wall-crossing disc closes the passage entirely.
+    World closed = box10(0.5);
+    closed.circles.push_back({{5.0, 5.0}, 4.6});
+    const OptimumResult none = computeOptimum(closed, query({1, 1}, {9, 9}));
+    EXPECT_FALSE(none.found);
+    EXPECT_TRUE(std::isinf(none.length));
+}
+
+TEST(Optimum, InvalidInputs)
+{
+    World w = box10();
+    w.circles.push_back({{5.0, 5.0}, 1.0});
+    EXPECT_THROW(computeOptimum(w, query({5, 5}, {9, 9})), InputError);
+    EXPECT_THROW(computeOptimum(w, query({1, 1}, {11, 9})), InputError);
+    OptimumOptions bad;
+    bad.arcDeviation = 0.0;
+    EXPECT_THROW(computeOptimum(w, query({1, 1}, {9, 9}), bad), std::invalid_argument);
+    EXPECT_THROW(computeGridOctileOptimum(w, query({1, 1}, {9, 9})), InputError);
+    GeneratorOptions o;
+    o.width = o.height = 8;
+    o.robotRadius = 0.2;
+    const World g = generateGrid(o);
+    EXPECT_THROW(computeOptimum(g, g.queries.front()), InputError);
+}
+
+// ------------------------------------------------------------------------------------------------------
+// Shipped worlds.
+
+TEST(Optimum, SeedWorldsReproduceTheSpec)
+{
+    const World c1 = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/bfo_case1.yaml");
+    const World c2 = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/bfo_case2.yaml");
+    const OptimumResult r1 = computeOptimum(c1, c1.queries.front());
+    const OptimumResult r2 = computeOptimum(c2, c2.queries.front());
+    ASSERT_TRUE(r1.found);
+    ASSERT_TRUE(r2.found);
+    EXPECT_NEAR(r1.length, 14.2734, 5e-5);
+    EXPECT_NEAR(r2.length, 14.4198, 5e-5);
+    EXPECT_TRUE(polylineValid(c1, r1.path));
+    EXPECT_TRUE(polylineValid(c2, r2.path));
+    std::cout << "[optimum] bfo_case1 " << r1.length << " in " << r1.seconds * 1e3 << " ms; bfo_case2 "
+              << r2.length << " in " << r2.seconds * 1e3 << " ms (" << r2.graphNodes << " nodes, "
+              << r2.graphEdges << " edges)\n";
+}
+
+TEST(Optimum, EveryShippedWorld)
+{
+    for (const char *name : {"bfo_case1", "bfo_case1_moved", "bfo_case2", "lrsma_scenario1",
+                             "lrsma_scenario2", "lrsma_scenario3", "gms_grid10", "gms_grid20", "gms_grid30"})
+    {
+        const World w = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml");
+        for (const Query &q : w.queries)
+        {
+            const OptimumResult r = computeOptimum(w, q);
+            ASSERT_TRUE(r.found) << name;
+            EXPECT_TRUE(polylineValid(w, r.path)) << name;
+            EXPECT_GE(r.length, distance(q.start, q.goal) - 1e-12) << name;
+            if (w.isGrid())
+            {
+                const OptimumResult oct = computeGridOctileOptimum(w, q);
+                ASSERT_TRUE(oct.found);
+                EXPECT_LE(r.length, oct.length + 1e-9) << name;
+                EXPECT_NEAR(r.lengthCells * w.grid->cellSize(), r.length, 1e-12);
+            }
+            std::cout << "[optimum] " << name << " '" << q.name << "': " << r.length << " (" << r.method
+                      << ", " << r.seconds * 1e3 << " ms)\n";
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------------------
+// Random worlds: the optimum is valid, never longer than a dense roadmap (which never beats it by more
+// than 1e-9 relative) and, for point robots among polygons and on grids, equal to a brute-force
+// visibility graph.
+
+namespace
+{
+    std::vector<Vec2> starPolygon(Rng &rng, const Vec2 &c)
+    {
+        const int k = static_cast<int>(rng.uniform(5.0, 9.999));
+        // Jittered even angles: consecutive gaps stay below pi, so the star polygon is simple.
+        std::vector<double> angles;
+        const double offset = rng.uniform(0.0, 2.0 * kPi);
+        for (int i = 0; i < k; ++i)
+            angles.push_back(offset + 2.0 * kPi * (i + rng.uniform(0.0, 0.8)) / k);
+        std::vector<Vec2> v;
+        for (double a : angles)
+        {
+            const double r = rng.uniform(0.3, 1.3);
+            v.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+        }
+        return v;
+    }
+
+    enum class Kind
+    {
+        Circles,
+        Polygons,
+        Mixed
+    };
+
+    World randomWorld(Kind kind, int index)
+    {
+        Rng rng(1000 + 7919 * static_cast<std::uint64_t>(index) + 31 * static_cast<int>(kind));
+        World w = box10(index % 2 == 0 ? 0.0 : rng.uniform(0.05, 0.3));
+        w.name = "random";
+        const int n = static_cast<int>(rng.uniform(4.0, 12.0));
+        for (int i = 0; i < n; ++i)
+        {
+            const Vec2 c{rng.uniform(-0.5, 10.5), rng.uniform(-0.5, 10.5)};
+            const bool circle = kind == Kind::Circles || (kind == Kind::Mixed && rng.uniform(0.0, 1.0) < 0.5);
+            if (circle)
+                w.circles.push_back({c, rng.uniform(0.2, 1.5)});
+            else if (rng.uniform(0.0, 1.0) < 0.5)
+                w.polygons.push_back(makePolygon(
+                    rectangleCorners(c, rng.uniform(0.3, 2.5), rng.uniform(0.3, 2.5), rng.uniform(0.0, kPi)),
+                    "rectangle"));
+            else
+            {
+                const std::vector<Vec2> star = starPolygon(rng, c);
+                if (polygonIsSimple(star))
+                    w.polygons.push_back(makePolygon(star));
+            }
+        }
+        const CollisionModelPtr model = makeCollisionModel(w);
+        const Box in = w.bounds.inflated(-w.robotRadius);
+        auto sample = [&]
+        {
+            for (;;)
+            {
+                const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
+                if (model->isValid(p))
+                    return p;
+            }
+        };
+        Vec2 s = sample();
+        Vec2 g = sample();
+        // Half of the queries run corner to corner (start and goal on the admissible box).
+        if (index % 4 < 2 && model->isValid({in.xmin, in.ymin}) && model->isValid({in.xmax, in.ymax}))
+        {
+            s = {in.xmin, in.ymin};
+            g = {in.xmax, in.ymax};
+        }
+        w.queries.push_back({"default", s, g});
+        return w;
+    }
+
+    void checkAgainstRoadmap(Kind kind, const char *label)
+    {
+        double worstGap = 0.0, sumGap = 0.0;
+        int compared = 0, bruteCompared = 0;
+        for (int i = 0; i < 100; ++i)
+        {
+            const World w = randomWorld(kind, i);
+            const Query &q = w.queries.front();
+            const OptimumResult r = computeOptimum(w, q);
+            const double road = roadmapLength(w, q, 48, 300, 2.6, 77 + i);
+            if (std::isfinite(road))
+            {
+                ASSERT_TRUE(r.found) << label << " world " << i;
+                if (road < r.length * (1.0 - 1e-9) && std::getenv("MHPLAN_OPTIMUM_DUMP"))
+                    std::cout << worldToYaml(w) << "\n";
+                ASSERT_GE(road, r.length * (1.0 - 1e-9)) << label << " world " << i;
+                worstGap = std::max(worstGap, road / r.length - 1.0);
+                sumGap += road / r.length - 1.0;
+                ++compared;
+            }
+            if (!r.found)
+                continue;
+            ASSERT_TRUE(polylineValid(w, r.path)) << label << " world " << i;
+            double sum = 0.0;
+            for (const auto &p : r.pieces)
+                sum += p.length;
+            EXPECT_NEAR(sum, r.length, 1e-9 * r.length) << label << " world " << i;
+            if (w.robotRadius == 0.0 && w.circles.empty())
+            {
+                const double brute = bruteVisibility(w, q, polygonVertices(w));
+                EXPECT_NEAR(brute, r.length, 1e-9 * r.length) << label << " world " << i;
+                ++bruteCompared;
+            }
+        }
+        EXPECT_GE(compared, 60) << label;
+        std::cout << "[optimum] " << label << ": roadmap / optimum - 1 over " << compared << " worlds: mean "
+                  << sumGap / std::max(compared, 1) << ", max " << worstGap
+                  << "; brute-force visibility graph " << bruteCompared << " worlds\n";
+    }
+} // namespace
+
+TEST(OptimumRandom, CircleWorlds)
+{
+    checkAgainstRoadmap(Kind::Circles, "circles");
+}
+
+TEST(OptimumRandom, PolygonWorlds)
+{
+    checkAgainstRoadmap(Kind::Polygons, "polygons");
+}
+
+TEST(OptimumRandom, MixedWorlds)
+{
+    checkAgainstRoadmap(Kind::Mixed, "mixed");
+}
+
+namespace
+{
+    World randomGrid(int index)
+    {
+        GeneratorOptions o;
+        o.seed = 500 + static_cast<std::uint64_t>(index);
+        o.width = 8 + index % 13;
+        o.height = 8 + (index * 7) % 11;
+        o.density = 0.15 + 0.01 * (index % 16);
+        o.cellSize = index % 3 == 0 ? 0.5 : 1.0;
+        return generateGrid(o);
+    }
+
+    /** Plain Dijkstra over the MovingAI 8-connected cell graph (independent of computeGridOctileOptimum). */
+    double plainOctile(const OccupancyGrid &g, const Vec2 &s, const Vec2 &t)
+    {
+        const int W = g.width();
+        std::vector<std::vector<std::pair<int, double>>> adj(static_cast<std::size_t>(W) * g.height());
+        for (int y = 0; y < g.height(); ++y)
+            for (int x = 0; x < W; ++x)
+            {
+                if (g.blocked(x, y))
+                    continue;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                    {
+                        if ((dx == 0 && dy == 0) || g.blocked(x + dx, y + dy))
+                            continue;
+                        if (dx != 0 && dy != 0 && (g.blocked(x + dx, y) || g.blocked(x, y + dy)))
+                            continue;
+                        adj[static_cast<std::size_t>(y) * W + x].emplace_back(
+                            (y + dy) * W + x + dx, dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
+                    }
+            }
+        return dijkstra(adj, g.cellY(s.y) * W + g.cellX(s.x), g.cellY(t.y) * W + g.cellX(t.x));
+    }
+} // namespace
+
+TEST(OptimumRandom, GridWorlds)
+{
+    double worstGap = 0.0;
+    for (int i = 0; i < 100; ++i)
+    {
+        const World w = randomGrid(i);
+        const Query &q = w.queries.front();
+        const OptimumResult r = computeOptimum(w, q);
+        ASSERT_TRUE(r.found) << "grid " << i;
+        EXPECT_EQ(r.method, "grid-any-angle");
+        ASSERT_TRUE(polylineValid(w, r.path)) << "grid " << i;
+        const double brute = bruteVisibility(w, q, gridCornerPoints(*w.grid));
+        ASSERT_NEAR(brute, r.length, 1e-9 * r.length) << "grid " << i;
+        EXPECT_NEAR(r.lengthCells, r.length / w.grid->cellSize(), 1e-12);
+        const double road =
+            roadmapLength(w, q, 4 * std::max(w.grid->width(), w.grid->height()), 200, 2.6, 3 + i);
+        if (std::isfinite(road))
+        {
+            ASSERT_GE(road, r.length * (1.0 - 1e-9)) << "grid " << i;
+            worstGap = std::max(worstGap, road / r.length - 1.0);
+        }
+        const OptimumResult oct = computeGridOctileOptimum(w, q);
+        ASSERT_TRUE(oct.found);
+        EXPECT_NEAR(oct.lengthCells, plainOctile(*w.grid, q.start, q.goal), 1e-9) << "grid " << i;
+        EXPECT_NEAR(oct.length, oct.lengthCells * w.grid->cellSize(), 1e-12);
+        EXPECT_LE(r.length, oct.length + 1e-9);
+    }
+    std::cout << "[optimum] grids: roadmap / optimum - 1 at most " << worstGap << "\n";
+}
+
+TEST(OptimumGrid, OctileSemantics)
+{
+    // 3 x 3 grid, centre blocked: corner to corner needs 4 straight moves (diagonals would cut the corner).
+    auto g = std::make_shared<OccupancyGrid>(3, 3, 2.0);
+    g->setBlocked(1, 1, true);
+    World w;
+    w.name = "tiny";
+    w.grid = g;
+    w.bounds = g->bounds();
+    const Query q{"q", g->cellCenter(0, 0), g->cellCenter(2, 2)};
+    const OptimumResult oct = computeGridOctileOptimum(w, q);
+    ASSERT_TRUE(oct.found);
+    EXPECT_NEAR(oct.lengthCells, 4.0, 1e-12);
+    EXPECT_NEAR(oct.length, 8.0, 1e-12);
+    EXPECT_EQ(oct.path.size(), 5u);
+    // Any-angle: around one corner of the blocked centre cell: 2 * |(1,1) -> (4,2)| = 2 sqrt(10).
+    const OptimumResult any = computeOptimum(w, q);
+    ASSERT_TRUE(any.found);
+    EXPECT_NEAR(any.length, 2.0 * std::sqrt(10.0), 1e-12);
+    EXPECT_NEAR(any.lengthCells, std::sqrt(10.0), 1e-12);
+
+    // A pinch: two diagonal blocked cells let nothing through their common corner.
+    auto p = std::make_shared<OccupancyGrid>(2, 2, 1.0);
+    p->setBlocked(0, 1, true);
+    p->setBlocked(1, 0, true);
+    World pw;
+    pw.name = "pinch";
+    pw.grid = p;
+    pw.bounds = p->bounds();
+    const Query pq{"q", p->cellCenter(0, 0), p->cellCenter(1, 1)};
+    EXPECT_FALSE(computeOptimum(pw, pq).found);
+    EXPECT_FALSE(computeGridOctileOptimum(pw, pq).found);
+}
