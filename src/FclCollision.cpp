@@ -158,8 +158,8 @@ namespace mhplan
         {
             std::vector<Circle> circles;
             std::vector<Polygon> polygons;
-            /** Obstacle id of every FCL object (circles first, then polygons); the objects' user data point
-             * here. */
+            /** Obstacle id of every FCL object (circles, then polygons); each object's user data points here.
+             */
             std::vector<std::size_t> ids;
             std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
             fcl::DynamicAABBTreeCollisionManagerd manager;
