@@ -179,6 +179,16 @@ namespace mhplan
 
     double pointPolygonSignedDistance(const Vec2 &p, const std::vector<Vec2> &poly)
     {
+        // A point exactly on an edge (exact orientation test) is at distance 0, whatever rounding the
+        // closest-point computation would add.
+        const std::size_t n = poly.size();
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const Vec2 &a = poly[i];
+            const Vec2 &b = poly[(i + 1) % n];
+            if (orientation(a, b, p) == 0 && onSegment(p, a, b))
+                return 0.0;
+        }
         const double d = pointPolygonBoundaryDistance(p, poly);
         return pointInPolygon(p, poly) ? -d : d;
     }
