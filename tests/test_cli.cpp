@@ -86,6 +86,8 @@ TEST(Cli, RefusesBadInputWithAClearMessage)
         {"generate circles --output x.map", {".map output needs a grid world"}},
         {"frobnicate", {"unknown command 'frobnicate'", "usage"}},
         {"planners NoSuchPlanner", {"unknown planner"}},
+        {"optimum bfo_case1 --octile", {"--octile needs a grid world"}},
+        {"optimum", {"expected exactly one WORLD"}},
     };
     for (const auto &c : cases)
     {
@@ -136,4 +138,19 @@ TEST(Cli, ListsWorldsAndPlannersWithParameters)
     EXPECT_TRUE(contains(r.out, "range 0.:.05:1.")) << "ranges are listed";
     r = run("version");
     EXPECT_TRUE(contains(r.out, "OMPL 1.5.2")) << r.out;
+}
+
+TEST(Cli, OptimumAndGapAreReported)
+{
+    Result r = run("optimum bfo_case1");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "length:  14.2734")) << r.out; // ../shared/ALGORITHMS.md section 9
+    EXPECT_TRUE(contains(r.out, "tangent-graph")) << r.out;
+    r = run("optimum gms_grid10 --octile");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "grid-octile")) << r.out;
+    r = run("plan bfo_case2 --planner RRTConnect --seed 4 --time 1");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "optimum:   14.4197868")) << r.out;
+    EXPECT_TRUE(contains(r.out, "gap:")) << r.out;
 }

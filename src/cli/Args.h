@@ -2,8 +2,10 @@
 #ifndef MHPLAN_CLI_ARGS_H
 #define MHPLAN_CLI_ARGS_H
 
+#include "Optimum.h"
 #include "World.h"
 
+#include <cstdint>
 #include <map>
 #include <set>
 #include <string>
@@ -48,6 +50,21 @@ namespace mhplan::cli
         std::map<std::string, std::vector<std::string>> repeated_;
         std::set<std::string> flags_;
     };
+
+    /** \brief The one WORLD positional argument (a file or a shipped world name), loaded and validated. */
+    World loadWorldArg(const Args &args);
+    /** \brief --start/--goal, else --query NAME, else the world's first query. */
+    Query queryFromArgs(const World &world, const Args &args);
+    /** \brief Apply --seed (1..2^32-1) to OMPL's RNG before any generator exists; returns the seed in use. */
+    std::uint_fast32_t seedFromArgs(const Args &args);
+
+    /** \brief The exact optimum, or why there is none (a world type it does not support, no path). */
+    struct OptimumOrReason
+    {
+        OptimumResult result;
+        std::string reason;
+    };
+    OptimumOrReason optimumOrReason(const World &world, const Query &query);
 
     /** \brief Parse a list of numbers "a,b,c" for option \e name; throws InputError naming the option. */
     std::vector<double> parseNumberList(const std::string &name, const std::string &text);

@@ -4,6 +4,7 @@
 #include "Collision.h"
 #include "Generators.h"
 #include "GridIO.h"
+#include "Optimum.h"
 #include "Problem.h"
 #include "Registry.h"
 #include "Svg.h"
@@ -72,41 +73,54 @@ namespace mhplan::cli
         return out;
     }
 
-    namespace
+    World loadWorldArg(const Args &args)
     {
-        World loadWorldArg(const Args &args)
-        {
-            if (args.positional().size() != 1)
-                throw InputError("mhplan " + args.command() +
-                                 ": expected exactly one WORLD argument (a file or a shipped "
-                                 "world name; see 'mhplan worlds')");
-            return loadWorld(resolveWorldPath(args.positional()[0]));
-        }
+        if (args.positional().size() != 1)
+            throw InputError("mhplan " + args.command() +
+                             ": expected exactly one WORLD argument (a file or a shipped "
+                             "world name; see 'mhplan worlds')");
+        return loadWorld(resolveWorldPath(args.positional()[0]));
+    }
 
-        Query queryFromArgs(const World &world, const Args &args)
+    Query queryFromArgs(const World &world, const Args &args)
+    {
+        if (args.has("start") || args.has("goal"))
         {
-            if (args.has("start") || args.has("goal"))
-            {
-                if (!(args.has("start") && args.has("goal")))
-                    throw InputError("mhplan " + args.command() + ": give both --start X,Y and --goal X,Y");
-                if (args.has("query"))
-                    throw InputError("mhplan " + args.command() + ": give either --query or --start/--goal");
-                return {"command-line", args.point("start"), args.point("goal")};
-            }
-            return world.queryOrDefault(args.get("query"));
+            if (!(args.has("start") && args.has("goal")))
+                throw InputError("mhplan " + args.command() + ": give both --start X,Y and --goal X,Y");
+            if (args.has("query"))
+                throw InputError("mhplan " + args.command() + ": give either --query or --start/--goal");
+            return {"command-line", args.point("start"), args.point("goal")};
         }
+        return world.queryOrDefault(args.get("query"));
+    }
 
-        std::uint_fast32_t seedFromArgs(const Args &args)
+    std::uint_fast32_t seedFromArgs(const Args &args)
+    {
+        const long long seed = args.integer("seed", 0);
+        if (args.has("seed") && (seed <= 0 || seed > 0xFFFFFFFFLL))
+            throw InputError("mhplan " + args.command() + ": --seed must be in [1, 4294967295] (got " +
+                             args.get("seed") + ")");
+        if (args.has("seed"))
+            ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
+        return ompl::RNG::getSeed();
+    }
+
+    OptimumOrReason optimumOrReason(const World &world, const Query &query)
+    {
+        OptimumOrReason out;
+        try
         {
-            const long long seed = args.integer("seed", 0);
-            if (args.has("seed") && (seed <= 0 || seed > 0xFFFFFFFFLL))
-                throw InputError("mhplan " + args.command() + ": --seed must be in [1, 4294967295] (got " +
-                                 args.get("seed") + ")");
-            if (args.has("seed"))
-                ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
-            return ompl::RNG::getSeed();
+            out.result = computeOptimum(world, query);
+            if (!out.result.found)
+                out.reason = "start and goal are not connected";
         }
-    } // namespace
+        catch (const InputError &e)
+        {
+            out.reason = e.what();
+        }
+        return out;
+    }
 
     int cmdPlan(const Argv &argv)
     {
@@ -156,7 +170,16 @@ namespace mhplan::cli
         bool collisionFree = true;
         for (std::size_t i = 1; i < pts.size(); ++i)
             collisionFree = collisionFree && model->segmentValid(pts[i - 1], pts[i]);
-        std::cout << std::setprecision(9) << "length:    " << polylineLength(pts) << "\n";
+        const double length = polylineLength(pts);
+        std::cout << std::setprecision(9) << "length:    " << length << "\n";
+        const OptimumOrReason optimum = optimumOrReason(world, query);
+        if (optimum.result.found)
+            std::cout << "optimum:   " << optimum.result.length << " (" << optimum.result.method << ")\n"
+                      << std::setprecision(4)
+                      << "gap:       " << 100.0 * optimalityGap(length, optimum.result) << " %\n"
+                      << std::setprecision(9);
+        else
+            std::cout << "optimum:   not available (" << optimum.reason << ")\n";
         std::cout << "valid:     " << (collisionFree ? "yes" : "NO") << " (exact segment check)\n";
         std::cout << "path:      " << pts.size() << " states\n";
         for (const auto &p : pts)
@@ -339,13 +362,21 @@ namespace mhplan::cli
                   << " run(s) per pair\n\n";
         std::cout << std::left << std::setw(18) << "world" << std::setw(17) << "planner" << std::right
                   << std::setw(7) << "exact" << std::setw(12) << "best len" << std::setw(12) << "median len"
-                  << std::setw(11) << "time [s]"
+                  << std::setw(12) << "optimum" << std::setw(12) << "median gap" << std::setw(11)
+                  << "time [s]"
                   << "\n";
         for (const auto &file : files)
         {
             const World world = loadWorld(file);
             const Query &query = world.queryOrDefault("");
             const CollisionModelPtr model = makeCollisionModel(world);
+            const OptimumOrReason optimum = optimumOrReason(world, query);
+            std::ostringstream optText;
+            optText << std::fixed << std::setprecision(4);
+            if (optimum.result.found)
+                optText << optimum.result.length;
+            else
+                optText << "-";
             for (const auto &name : planners)
             {
                 std::vector<double> lengths;
@@ -370,25 +401,32 @@ namespace mhplan::cli
                     lengths.push_back(polylineLength(pts));
                 }
                 std::sort(lengths.begin(), lengths.end());
-                std::ostringstream best, median;
+                std::ostringstream best, median, gap;
                 best << std::fixed << std::setprecision(4);
                 median << std::fixed << std::setprecision(4);
+                gap << std::fixed << std::setprecision(2);
                 if (lengths.empty())
                 {
                     best << "-";
                     median << "-";
+                    gap << "-";
                 }
                 else
                 {
                     best << lengths.front();
                     const std::size_t n = lengths.size();
-                    median << (n % 2 ? lengths[n / 2] : 0.5 * (lengths[n / 2 - 1] + lengths[n / 2]));
+                    const double med = n % 2 ? lengths[n / 2] : 0.5 * (lengths[n / 2 - 1] + lengths[n / 2]);
+                    median << med;
+                    if (optimum.result.found)
+                        gap << 100.0 * optimalityGap(med, optimum.result) << "%";
+                    else
+                        gap << "-";
                 }
                 std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name << std::right
                           << std::setw(4) << exact << "/" << std::left << std::setw(2) << runs << std::right
-                          << std::setw(12) << best.str() << std::setw(12) << median.str() << std::setw(11)
-                          << std::fixed << std::setprecision(3) << totalTime / static_cast<double>(runs)
-                          << "\n"
+                          << std::setw(12) << best.str() << std::setw(12) << median.str() << std::setw(12)
+                          << optText.str() << std::setw(12) << gap.str() << std::setw(11) << std::fixed
+                          << std::setprecision(3) << totalTime / static_cast<double>(runs) << "\n"
                           << std::defaultfloat;
             }
         }

@@ -38,6 +38,9 @@ namespace
              {cmdCompare,
               "compare [WORLD...] [--planners A,B,...] [--time S] [--runs N] [--seed N]\n"
               "        (plan every shipped world, or the given ones, with each planner; print a table)"}},
+            {"optimum",
+             {cmdOptimum, "optimum WORLD [--query NAME | --start X,Y --goal X,Y] [--octile] [--svg FILE]\n"
+                          "        (the exact shortest path: tangent graph, any-angle or 8-connected on grids)"}},
             {"report",
              {cmdReport,
               "report DATABASE [-o DIR]   (HTML report: figures and tables from a benchmark database)"}},
