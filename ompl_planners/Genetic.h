@@ -31,12 +31,19 @@ namespace mhplan
           node improvement is applied to every offspring that is feasible after repair (parameter
           \c node_improvement). The validity checks inside the operators are not counted as fitness
           evaluations; every evaluated individual is.
-        - \c decoding and \c spline_samples do not apply (paths are polylines through the nodes). */
+        - \c decoding and \c spline_samples do not apply (paths are polylines through the nodes).
+        - Planar only: the [GMS] node encoding comes from grid maps and its operators (ring search for node
+          repair, the 8 compass moves of node improvement, the perpendicular bisector of segment repair) are
+          written for the plane; setup() refuses a RealVectorStateSpace of dimension other than 2 with
+          ompl::Exception (use SMA, LRSMA or MGO in R^k). */
     class Genetic : public PopulationPlanner
     {
       public:
         explicit Genetic(const ompl::base::SpaceInformationPtr &si);
         ~Genetic() override;
+
+        /** \brief PopulationPlanner::setup(), then refuse a space that is not 2-dimensional. */
+        void setup() override;
 
         /** \brief Crossover probability (0..1). */
         void setCrossoverRate(double r);

@@ -32,13 +32,24 @@ namespace mhplan
 
     /** \brief Base class of mhplan's metaheuristic planners.
 
-        Problem: a 2D ompl::base::RealVectorStateSpace; start and goal from the problem definition (the
-        first start state, one goal sample). A candidate is the waypoint vector of ALGORITHMS.md 1.1 (see
-        WaypointDecoder), or any list of points (evaluatePath(), used by the GA); its fitness is a
-        PathFitness ([LRSMA] S or [GMS] f1/f2, parameter \c fitness; \c auto picks [GMS] on grid worlds and
-        [LRSMA] otherwise). The base class tracks, independently of the algorithm, the best feasible path
-        ever evaluated by the problem's optimization objective (the reported cost; path length by default)
-        and the best infeasible one by fitness.
+        Problem: any ompl::base::RealVectorStateSpace of dimension k >= 1 with finite bounds (the planar
+        worlds are k = 2), with the user's own validity checker and motion validator; start and goal from
+        the problem definition (the first start state, one goal sample). A candidate is the waypoint vector
+        of ALGORITHMS.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
+        coordinate bounded by the space's bounds on it (see WaypointDecoder; the spline decoding splines
+        each coordinate against t, in any dimension), or any list of points (evaluatePath(), used by the
+        GA); its fitness is a PathFitness ([LRSMA] S or [GMS] f1/f2, parameter \c fitness; \c auto picks
+        [GMS] on grid worlds and [LRSMA] otherwise; see PathFitness for what the penalty measures with a
+        checker that computes no clearance). The base class tracks, independently of the algorithm, the best
+        feasible path ever evaluated by the problem's optimization objective (the reported cost; path length
+        by default) and the best infeasible one by fitness.
+
+        Unsupported problems are refused by setup(), which throws ompl::Exception with a message naming the
+        planner and what it needs (a RealVectorStateSpace with finite bounds; a concrete planner may add its
+        own needs, e.g. the GA's planar encoding) and leaves the planner not set up; solve() calls setup()
+        through checkValidity(), so it throws the same exception. The message is also logged with OMPL_ERROR.
+        (OMPL itself throws ompl::Exception from setup() for missing prerequisites, e.g. a missing projection
+        or validity checker; an exception cannot be overlooked the way a status code can.)
 
         solve(): a first call draws and evaluates the initial population; each call then runs iterations
         until the termination condition holds or \c max_iterations further iterations (0 = no limit) are
@@ -124,6 +135,12 @@ namespace mhplan
         unsigned long evaluationCount() const { return evaluationCount_.load(); }
         /** \brief The fitness actually in use (after resolving "auto"); valid after the first solve(). */
         FitnessKind fitnessKind() const { return fitness_ ? fitness_->kind() : FitnessKind::LengthPenalty; }
+        /** \brief How the [LRSMA] penalty measures a sample point (see PathFitness); valid after the first
+            solve(). */
+        PenaltyMode penaltyMode() const
+        {
+            return fitness_ ? fitness_->penaltyMode() : PenaltyMode::Clearance;
+        }
 
       protected:
         /** \brief Draw and evaluate the initial population; false when interrupted (it is redrawn next call).
@@ -139,21 +156,38 @@ namespace mhplan
 
         /** \brief Decode and evaluate a waypoint vector (dimension() values); updates counts and bests. */
         double evaluate(const double *x);
-        /** \brief Evaluate an explicit path (start ... goal); updates counts and bests. */
+        /** \brief Evaluate an explicit planar path (start ... goal; k = 2 only); updates counts and bests. */
         double evaluatePath(const std::vector<Vec2> &path);
+        /** \brief Evaluate an explicit path of spaceDimension() coordinates per point (start ... goal);
+            updates counts and bests. */
+        double evaluatePoints(const PointsView &path);
 
         /** \brief Uniform random waypoint vector in the bounds. */
         void randomPosition(double *x);
         /** \brief Clamp every coordinate to the bounds (ALGORITHMS.md 1.1). */
         void clampToBounds(double *x) const;
 
-        /** \brief 2m. */
-        unsigned int dimension() const { return 2 * waypoints_; }
-        double lower(unsigned int j) const { return lower_[j & 1u]; }
-        double upper(unsigned int j) const { return upper_[j & 1u]; }
+        /** \brief m k: the waypoints times the state space's dimension. */
+        unsigned int dimension() const { return spaceDim_ * waypoints_; }
+        /** \brief k, the dimension of the RealVectorStateSpace (2 until known). */
+        unsigned int spaceDimension() const { return spaceDim_; }
+        /** \brief Lower bound of candidate coordinate j (the space's bound on coordinate j mod k). */
+        double lower(unsigned int j) const { return lower_[j % spaceDim_]; }
+        /** \brief Upper bound of candidate coordinate j. */
+        double upper(unsigned int j) const { return upper_[j % spaceDim_]; }
+        /** \brief First two coordinates of the start (the planar start). */
         const Vec2 &startPoint() const { return start_; }
+        /** \brief First two coordinates of the goal (the planar goal). */
         const Vec2 &goalPoint() const { return goal_; }
+        /** \brief The start's k coordinates (valid once solve() has prepared the problem). */
+        const double *startCoordinates() const { return startX_.data(); }
+        /** \brief The goal's k coordinates. */
+        const double *goalCoordinates() const { return goalX_.data(); }
         PathFitness &fitness() { return *fitness_; }
+
+        /** \brief Leave the planner not set up, log \e message with OMPL_ERROR (prefixed with the planner's
+            name) and throw ompl::Exception with the same text: how setup() refuses a problem. */
+        [[noreturn]] void refuseSetup(const std::string &message);
 
         /** \brief Mark the structure (population size, dimension, decoding) changed: clear() on next solve.
          */
@@ -162,8 +196,12 @@ namespace mhplan
         ompl::RNG rng_;
 
       private:
+        /** \brief Read the space's dimension and bounds; refuseSetup() when they are unsupported. */
+        void checkSpace();
         bool prepareProblem();
-        void record(const FitnessResult &r, const std::vector<Vec2> &path);
+        void record(const FitnessResult &r, const PointsView &path);
+        /** \brief Write point \e i of \e points into \e state. */
+        void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
         void reportSolution(bool &exact, bool &approximate);
         void fireIntermediate();
 
@@ -180,9 +218,11 @@ namespace mhplan
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         bool problemReady_{false};
         bool initialised_{false};
+        unsigned int spaceDim_{2};
         Vec2 start_, goal_;
-        double lower_[2]{0.0, 0.0};
-        double upper_[2]{0.0, 0.0};
+        std::vector<double> startX_, goalX_;
+        std::vector<double> lower_{0.0, 0.0};
+        std::vector<double> upper_{0.0, 0.0};
         WaypointDecoder decoder_;
         std::unique_ptr<PathFitness> fitness_;
         /** \brief State buffers for the objective's motion costs. */
@@ -191,11 +231,14 @@ namespace mhplan
 
         bool haveFeasible_{false};
         ompl::base::Cost bestFeasibleCost_;
-        std::vector<Vec2> bestFeasiblePath_;
+        /** \brief Best paths as flat point lists (k values per point). */
+        std::vector<double> bestFeasiblePath_;
         bool haveInfeasible_{false};
         double bestInfeasibleFitness_{0.0};
         double bestInfeasibleViolation_{0.0};
-        std::vector<Vec2> bestInfeasiblePath_;
+        std::vector<double> bestInfeasiblePath_;
+        /** \brief Reused buffer of evaluatePath(). */
+        std::vector<double> planarPath_;
         bool improved_{false};
 
         std::atomic<double> bestCostValue_;

@@ -30,6 +30,15 @@ namespace mhplan
 
     Genetic::~Genetic() = default;
 
+    void Genetic::setup()
+    {
+        PopulationPlanner::setup();
+        if (spaceDimension() != 2)
+            refuseSetup("needs a 2-dimensional RealVectorStateSpace: the [GMS] node encoding and its repair, "
+                        "revision and node-improvement operators are planar (grid maps); got dimension " +
+                        std::to_string(spaceDimension()) + ". Use SMA, LRSMA or MGO in R^k.");
+    }
+
     void Genetic::setCrossoverRate(double r)
     {
         checkParameterRange("crossover_rate", r, 0.0, 1.0);

@@ -1,5 +1,6 @@
 #include "PathEncoding.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace mhplan
@@ -22,31 +23,65 @@ namespace mhplan
     void WaypointDecoder::configure(const Vec2 &start, const Vec2 &goal, unsigned int waypoints,
                                     PathDecoding decoding, unsigned int samples)
     {
+        const double s[2] = {start.x, start.y}, g[2] = {goal.x, goal.y};
+        configure(s, g, 2, waypoints, decoding, samples);
+    }
+
+    void WaypointDecoder::configure(const double *start, const double *goal, unsigned int dim,
+                                    unsigned int waypoints, PathDecoding decoding, unsigned int samples)
+    {
         if (samples < 2)
             throw std::invalid_argument("parameter 'spline_samples' must be in [2, 100000]; got " +
                                         std::to_string(samples));
-        start_ = start;
-        goal_ = goal;
+        if (dim < 1)
+            throw std::invalid_argument(
+                "WaypointDecoder: the state space dimension must be at least 1; got 0");
+        dim_ = dim;
+        start_.assign(start, start + dim);
+        goal_.assign(goal, goal + dim);
         waypoints_ = waypoints;
         decoding_ = decoding;
         sampleCount_ = samples;
         const std::size_t knots = waypoints + 2;
-        knots_.assign(knots, Vec2());
-        knots_.front() = start;
-        knots_.back() = goal;
-        mx_.assign(knots, 0.0);
-        my_.assign(knots, 0.0);
+        knots_.assign(knots * dim, 0.0);
+        std::copy(start_.begin(), start_.end(), knots_.begin());
+        std::copy(goal_.begin(), goal_.end(), knots_.end() - dim);
+        moments_.assign(knots * dim, 0.0);
         rhs_.assign(knots, 0.0);
         cprime_.assign(knots, 0.0);
-        samples_.assign(samples, Vec2());
-        path_.assign(decoding == PathDecoding::Spline ? samples : knots, Vec2());
+        samples_.assign(std::size_t(samples) * dim, 0.0);
+        path_.assign((decoding == PathDecoding::Spline ? samples : knots) * std::size_t(dim), 0.0);
     }
 
-    void WaypointDecoder::splineMoments(bool yCoordinate, std::vector<double> &M)
+    const std::vector<Vec2> &WaypointDecoder::path() const
     {
-        const std::size_t n = knots_.size();
-        auto y = [&](std::size_t i) { return yCoordinate ? knots_[i].y : knots_[i].x; };
-        std::fill(M.begin(), M.end(), 0.0);
+        if (dim_ != 2)
+            throw std::logic_error("WaypointDecoder::path(): planar view of a " + std::to_string(dim_) +
+                                   "-dimensional path; use pathView()");
+        planarPath_.resize(path_.size() / 2);
+        for (std::size_t i = 0; i < planarPath_.size(); ++i)
+            planarPath_[i] = Vec2(path_[2 * i], path_[2 * i + 1]);
+        return planarPath_;
+    }
+
+    const std::vector<Vec2> &WaypointDecoder::samples() const
+    {
+        if (decoding_ == PathDecoding::Spline)
+            return path();
+        if (dim_ != 2)
+            throw std::logic_error("WaypointDecoder::samples(): planar view of " + std::to_string(dim_) +
+                                   "-dimensional samples; use samplesView()");
+        planarSamples_.resize(samples_.size() / 2);
+        for (std::size_t i = 0; i < planarSamples_.size(); ++i)
+            planarSamples_[i] = Vec2(samples_[2 * i], samples_[2 * i + 1]);
+        return planarSamples_;
+    }
+
+    void WaypointDecoder::splineMoments(unsigned int c, double *M)
+    {
+        const std::size_t n = waypoints_ + 2;
+        auto y = [&](std::size_t i) { return knot(i, c); };
+        std::fill(M, M + n, 0.0);
         if (n < 3)
             return; // a straight line
         if (n == 3)
@@ -90,40 +125,44 @@ namespace mhplan
 
     void WaypointDecoder::decode(const double *x)
     {
-        for (unsigned int i = 0; i < waypoints_; ++i)
-            knots_[i + 1] = Vec2(x[2 * i], x[2 * i + 1]);
-        const std::size_t n = knots_.size();
+        const unsigned int k = dim_;
+        std::copy(x, x + std::size_t(waypoints_) * k, knots_.begin() + k);
+        const std::size_t n = waypoints_ + 2;
         const double tmax = static_cast<double>(n - 1);
         if (decoding_ == PathDecoding::Polyline)
         {
-            for (std::size_t i = 0; i < n; ++i)
-                path_[i] = knots_[i];
-            for (unsigned int k = 0; k < sampleCount_; ++k)
+            std::copy(knots_.begin(), knots_.end(), path_.begin());
+            for (unsigned int s = 0; s < sampleCount_; ++s)
             {
-                const double t = tmax * k / (sampleCount_ - 1);
-                std::size_t i = std::min(static_cast<std::size_t>(t), n - 2);
+                const double t = tmax * s / (sampleCount_ - 1);
+                const std::size_t i = std::min(static_cast<std::size_t>(t), n - 2);
                 const double u = t - static_cast<double>(i);
-                samples_[k] = knots_[i] + (knots_[i + 1] - knots_[i]) * u;
+                const double *p0 = knots_.data() + i * k, *p1 = p0 + k;
+                double *q = samples_.data() + std::size_t(s) * k;
+                for (unsigned int c = 0; c < k; ++c)
+                    q[c] = p0[c] + (p1[c] - p0[c]) * u;
             }
-            samples_.back() = goal_;
+            std::copy(goal_.begin(), goal_.end(), samples_.end() - k);
             return;
         }
-        splineMoments(false, mx_);
-        splineMoments(true, my_);
-        for (unsigned int k = 0; k < sampleCount_; ++k)
+        for (unsigned int c = 0; c < k; ++c)
+            splineMoments(c, moments_.data() + std::size_t(c) * n);
+        for (unsigned int s = 0; s < sampleCount_; ++s)
         {
-            const double t = tmax * k / (sampleCount_ - 1);
+            const double t = tmax * s / (sampleCount_ - 1);
             const std::size_t i = std::min(static_cast<std::size_t>(t), n - 2);
             const double u = t - static_cast<double>(i); // in [0, 1]
             const double v = 1.0 - u;
             const double a3 = v * v * v / 6.0, b3 = u * u * u / 6.0;
-            const Vec2 &p0 = knots_[i], &p1 = knots_[i + 1];
-            path_[k].x =
-                mx_[i] * a3 + mx_[i + 1] * b3 + (p0.x - mx_[i] / 6.0) * v + (p1.x - mx_[i + 1] / 6.0) * u;
-            path_[k].y =
-                my_[i] * a3 + my_[i + 1] * b3 + (p0.y - my_[i] / 6.0) * v + (p1.y - my_[i + 1] / 6.0) * u;
+            double *q = path_.data() + std::size_t(s) * k;
+            for (unsigned int c = 0; c < k; ++c)
+            {
+                const double *M = moments_.data() + std::size_t(c) * n;
+                q[c] = M[i] * a3 + M[i + 1] * b3 + (knot(i, c) - M[i] / 6.0) * v +
+                       (knot(i + 1, c) - M[i + 1] / 6.0) * u;
+            }
         }
-        path_.front() = start_;
-        path_.back() = goal_;
+        std::copy(start_.begin(), start_.end(), path_.begin());
+        std::copy(goal_.begin(), goal_.end(), path_.end() - k);
     }
 } // namespace mhplan

@@ -7,8 +7,11 @@
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Exception.h>
 #include <ompl/util/String.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -35,6 +38,10 @@ namespace mhplan
           waypoints_(defaults.waypoints), decoding_(defaults.decoding),
           bestCostValue_(std::numeric_limits<double>::infinity())
     {
+        if (const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get()))
+            spaceDim_ = std::max(1u, space->getDimension());
+        lower_.assign(spaceDim_, 0.0);
+        upper_.assign(spaceDim_, 0.0);
         specs_.approximateSolutions = true;
         specs_.optimizingPaths = true;
         specs_.canReportIntermediateSolutions = true;
@@ -217,9 +224,48 @@ namespace mhplan
             clear();
     }
 
+    void PopulationPlanner::refuseSetup(const std::string &message)
+    {
+        setup_ = false;
+        const std::string text = getName() + ": " + message;
+        OMPL_ERROR("%s", text.c_str());
+        throw ompl::Exception(text);
+    }
+
+    void PopulationPlanner::checkSpace()
+    {
+        const ob::StateSpacePtr &ss = si_->getStateSpace();
+        const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(ss.get());
+        if (space == nullptr)
+            refuseSetup(
+                "needs an ompl::base::RealVectorStateSpace (a candidate path is a vector of waypoints "
+                "in R^k); got the state space '" +
+                ss->getName() + "'" + (ss->isCompound() ? ", a compound space" : "") +
+                ". SO(2)/SO(3)/SE(2)/SE(3), compound and other spaces are not supported.");
+        const unsigned int k = space->getDimension();
+        if (k == 0)
+            refuseSetup("needs a RealVectorStateSpace of dimension at least 1; got dimension 0");
+        const ob::RealVectorBounds &b = space->getBounds();
+        for (unsigned int j = 0; j < k; ++j)
+            if (!std::isfinite(b.low[j]) || !std::isfinite(b.high[j]) || b.low[j] > b.high[j])
+            {
+                std::ostringstream msg;
+                msg << std::setprecision(12) << "needs finite bounds low <= high on every coordinate of the "
+                    << "RealVectorStateSpace (waypoints are drawn uniformly in them); coordinate " << j
+                    << " has [" << b.low[j] << ", " << b.high[j] << "]";
+                refuseSetup(msg.str());
+            }
+        if (k != spaceDim_)
+            invalidate();
+        spaceDim_ = k;
+        lower_.assign(b.low.begin(), b.low.end());
+        upper_.assign(b.high.begin(), b.high.end());
+    }
+
     void PopulationPlanner::setup()
     {
         ob::Planner::setup();
+        checkSpace();
     }
 
     void PopulationPlanner::clear()
@@ -239,31 +285,26 @@ namespace mhplan
 
     bool PopulationPlanner::prepareProblem()
     {
-        const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get());
-        if (space == nullptr || space->getDimension() != 2)
-        {
-            OMPL_ERROR("%s: needs a 2D RealVectorStateSpace", getName().c_str());
-            return false;
-        }
+        checkSpace();
+        const unsigned int k = spaceDim_;
         const ob::State *start = pis_.nextStart();
         if (start == nullptr)
         {
             OMPL_ERROR("%s: no valid start state", getName().c_str());
             return false;
         }
-        start_ = statePosition(start);
+        const double *sv = start->as<ob::RealVectorStateSpace::StateType>()->values;
+        startX_.assign(sv, sv + k);
         const ob::State *goal = pis_.nextGoal();
         if (goal == nullptr)
         {
             OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
             return false;
         }
-        goal_ = statePosition(goal);
-        const ob::RealVectorBounds &b = space->getBounds();
-        lower_[0] = b.low[0];
-        lower_[1] = b.low[1];
-        upper_[0] = b.high[0];
-        upper_[1] = b.high[1];
+        const double *gv = goal->as<ob::RealVectorStateSpace::StateType>()->values;
+        goalX_.assign(gv, gv + k);
+        start_ = Vec2(startX_[0], k > 1 ? startX_[1] : 0.0);
+        goal_ = Vec2(goalX_[0], k > 1 ? goalX_[1] : 0.0);
 
         FitnessKind kind = FitnessKind::LengthPenalty;
         if (fitnessName_ == "auto")
@@ -284,15 +325,19 @@ namespace mhplan
             costB_ = si_->allocState();
         }
         fitness_->configure(kind, weights_);
-        decoder_.configure(start_, goal_, waypoints_, decoding_, splineSamples_);
-        bestFeasiblePath_.reserve(std::max(256u, splineSamples_));
-        bestInfeasiblePath_.reserve(std::max(256u, splineSamples_));
+        decoder_.configure(startX_.data(), goalX_.data(), k, waypoints_, decoding_, splineSamples_);
+        bestFeasiblePath_.reserve(std::size_t(std::max(256u, splineSamples_)) * k);
+        bestInfeasiblePath_.reserve(std::size_t(std::max(256u, splineSamples_)) * k);
         if (seed_ != 0)
             rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
-        OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u, %s decoding, %s fitness%s", getName().c_str(),
-                    static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_, iterations_, waypoints_,
-                    toString(decoding_).c_str(), toString(kind).c_str(),
-                    fitness_->exactCircles() ? " (exact circle formula)" : "");
+        const PenaltyMode mode = fitness_->penaltyMode();
+        OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u waypoints in R^%u, %s decoding, %s fitness%s",
+                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+                    iterations_, waypoints_, k, toString(decoding_).c_str(), toString(kind).c_str(),
+                    mode == PenaltyMode::ExactCircles ? " (exact circle formula)"
+                    : mode == PenaltyMode::ValidityOnly
+                        ? " (the validity checker computes no clearance: the penalty counts invalid samples)"
+                        : "");
         problemReady_ = true;
         return true;
     }
@@ -345,21 +390,44 @@ namespace mhplan
     double PopulationPlanner::evaluate(const double *x)
     {
         decoder_.decode(x);
-        const FitnessResult r = fitness_->evaluate(decoder_.path(), decoder_.samples());
-        record(r, decoder_.path());
+        const PointsView path = decoder_.pathView();
+        const FitnessResult r = fitness_->evaluate(path, decoder_.samplesView());
+        record(r, path);
         return r.fitness;
     }
 
     double PopulationPlanner::evaluatePath(const std::vector<Vec2> &path)
+    {
+        if (spaceDim_ != 2)
+            throw std::logic_error(getName() +
+                                   ": evaluatePath() takes planar points; the space has dimension " +
+                                   std::to_string(spaceDim_) + " (use evaluatePoints())");
+        planarPath_.resize(2 * path.size());
+        for (std::size_t i = 0; i < path.size(); ++i)
+        {
+            planarPath_[2 * i] = path[i].x;
+            planarPath_[2 * i + 1] = path[i].y;
+        }
+        return evaluatePoints({planarPath_.data(), path.size(), 2});
+    }
+
+    double PopulationPlanner::evaluatePoints(const PointsView &path)
     {
         const FitnessResult r = fitness_->evaluate(path, path);
         record(r, path);
         return r.fitness;
     }
 
-    void PopulationPlanner::record(const FitnessResult &r, const std::vector<Vec2> &path)
+    void PopulationPlanner::toState(ob::State *state, const std::vector<double> &points, std::size_t i) const
+    {
+        const auto begin = points.begin() + static_cast<std::ptrdiff_t>(i * spaceDim_);
+        std::copy(begin, begin + spaceDim_, state->as<ob::RealVectorStateSpace::StateType>()->values);
+    }
+
+    void PopulationPlanner::record(const FitnessResult &r, const PointsView &path)
     {
         ++evaluationCount_;
+        const double *begin = path.data, *end = path.data + path.size() * path.dim;
         if (r.feasible)
         {
             // The reported cost is the problem's objective, not the fitness.
@@ -368,10 +436,12 @@ namespace mhplan
             if (opt)
             {
                 cost = opt->identityCost();
+                double *a = costA_->as<ob::RealVectorStateSpace::StateType>()->values;
+                double *b = costB_->as<ob::RealVectorStateSpace::StateType>()->values;
                 for (std::size_t i = 1; i < path.size(); ++i)
                 {
-                    setStatePosition(costA_, path[i - 1]);
-                    setStatePosition(costB_, path[i]);
+                    std::copy(path[i - 1], path[i - 1] + path.dim, a);
+                    std::copy(path[i], path[i] + path.dim, b);
                     cost = opt->combineCosts(cost, opt->motionCost(costA_, costB_));
                 }
             }
@@ -381,7 +451,7 @@ namespace mhplan
             {
                 haveFeasible_ = true;
                 bestFeasibleCost_ = cost;
-                bestFeasiblePath_.assign(path.begin(), path.end());
+                bestFeasiblePath_.assign(begin, end);
                 bestCostValue_ = cost.value();
                 fireIntermediate();
             }
@@ -391,7 +461,7 @@ namespace mhplan
             haveInfeasible_ = true;
             bestInfeasibleFitness_ = r.fitness;
             bestInfeasibleViolation_ = r.violation;
-            bestInfeasiblePath_.assign(path.begin(), path.end());
+            bestInfeasiblePath_.assign(begin, end);
         }
     }
 
@@ -400,12 +470,13 @@ namespace mhplan
         const auto &callback = pdef_->getIntermediateSolutionCallback();
         if (!callback)
             return;
+        const std::size_t count = bestFeasiblePath_.size() / spaceDim_;
         std::vector<ob::State *> states;
-        states.reserve(bestFeasiblePath_.size());
-        for (const Vec2 &p : bestFeasiblePath_)
+        states.reserve(count);
+        for (std::size_t i = 0; i < count; ++i)
         {
             states.push_back(si_->allocState());
-            setStatePosition(states.back(), p);
+            toState(states.back(), bestFeasiblePath_, i);
         }
         const std::vector<const ob::State *> view(states.begin(), states.end());
         callback(this, view, bestFeasibleCost_);
@@ -416,7 +487,7 @@ namespace mhplan
     void PopulationPlanner::reportSolution(bool &exact, bool &approximate)
     {
         exact = approximate = false;
-        const std::vector<Vec2> *points = nullptr;
+        const std::vector<double> *points = nullptr;
         if (haveFeasible_)
             points = &bestFeasiblePath_;
         else if (haveInfeasible_)
@@ -425,9 +496,9 @@ namespace mhplan
             return;
         auto path = std::make_shared<og::PathGeometric>(si_);
         ob::State *s = si_->allocState();
-        for (const Vec2 &p : *points)
+        for (std::size_t i = 0; i < points->size() / spaceDim_; ++i)
         {
-            setStatePosition(s, p);
+            toState(s, *points, i);
             path->append(s);
         }
         si_->freeState(s);
@@ -451,21 +522,22 @@ namespace mhplan
     void PopulationPlanner::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        const std::vector<Vec2> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
+        const std::vector<double> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
+        const std::size_t count = points.size() / spaceDim_;
         ob::State *s = si_->allocState();
-        for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t i = 0; i < count; ++i)
         {
-            setStatePosition(s, points[i]);
+            toState(s, points, i);
             // PlannerData copies the states it is given.
             const ob::PlannerDataVertex v(s);
             if (i == 0)
                 data.addStartVertex(v);
-            else if (i + 1 == points.size())
+            else if (i + 1 == count)
                 data.addGoalVertex(v);
             else
                 data.addVertex(v);
         }
-        for (std::size_t i = 1; i < points.size(); ++i)
+        for (std::size_t i = 1; i < count; ++i)
             data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
         si_->freeState(s);
     }
