@@ -863,7 +863,10 @@ namespace mhplan
                a superset of the visible corners; candidate() confirms each exactly). */
             void scanFrom(int u, const Vec2 &p)
             {
-                const double eps = 1e-10;
+                // A lattice origin gives exact slopes (quotients of small integers, correctly rounded, so
+                // equal rationals give equal doubles); any other origin gets blocked intervals shrunk by eps.
+                const bool lattice = p.x == std::floor(p.x) && p.y == std::floor(p.y);
+                const double eps = lattice ? 0.0 : 1e-10;
                 for (int oct = 0; oct < 8; ++oct)
                 {
                     const int sx = (oct & 1) ? -1 : 1;
@@ -882,7 +885,7 @@ namespace mhplan
                         const int b = static_cast<int>(std::floor(Q + sq * vMid));
                         return swap ? grid_.blocked(b, a) : grid_.blocked(a, b);
                     };
-                    std::vector<std::pair<double, double>> vis{{0.0, 1.0}}, nextVis;
+                    std::vector<std::pair<double, double>> vis{{0.0, 1.0}}, nextVis, scratch;
                     const int maxK = W_ + H_ + 4;
                     for (int k = 0; k <= maxK && !vis.empty(); ++k)
                     {
@@ -909,7 +912,8 @@ namespace mhplan
                         nextVis = vis;
                         auto subtract = [&](double a, double b)
                         {
-                            std::vector<std::pair<double, double>> out;
+                            std::vector<std::pair<double, double>> &out = scratch;
+                            out.clear();
                             for (const auto &iv : nextVis)
                             {
                                 if (b <= iv.first || a >= iv.second)
@@ -945,7 +949,7 @@ namespace mhplan
                         }
                         // The lower ray along a grid line is blocked where the cells on both sides are.
                         if (onLine && cellBlocked(uMid, 0.5) && cellBlocked(uMid, -0.5))
-                            subtract(-kInf, 1e-12);
+                            subtract(-kInf, 2.0 * eps + 1e-12);
                         vis.swap(nextVis);
                     }
                 }

@@ -630,3 +630,50 @@ TEST(OptimumGrid, OctileSemantics)
     EXPECT_FALSE(computeOptimum(pw, pq).found);
     EXPECT_FALSE(computeGridOctileOptimum(pw, pq).found);
 }
+
+// ------------------------------------------------------------------------------------------------------
+// Scale: the times are printed (not asserted: tests never depend on the machine's speed).
+
+TEST(OptimumScale, ThousandCircles)
+{
+    GeneratorOptions o;
+    o.seed = 42;
+    o.count = 1000;
+    o.bounds = {0.0, 100.0, 0.0, 100.0};
+    o.minSize = 0.2;
+    o.maxSize = 1.5;
+    const World w = generateCircles(o);
+    const OptimumResult r = computeOptimum(w, w.queries.front());
+    ASSERT_TRUE(r.found);
+    EXPECT_TRUE(polylineValid(w, r.path));
+    EXPECT_GE(r.length, distance(w.queries.front().start, w.queries.front().goal));
+    std::cout << "[optimum] 1000 circles: " << r.length << " in " << r.seconds << " s (" << r.graphNodes
+              << " nodes, " << r.graphEdges << " edges)\n";
+}
+
+TEST(OptimumScale, Maze512)
+{
+    // A perfect maze by randomised depth-first search (255 x 255 maze cells = 511 x 511 grid cells), in a
+    // 512 x 512 grid (the extra row and column blocked).
+    GeneratorOptions o;
+    o.seed = 7;
+    o.width = o.height = 255;
+    const World m = generateMaze(o);
+    auto g = std::make_shared<OccupancyGrid>(512, 512, 1.0);
+    for (int y = 0; y < 512; ++y)
+        for (int x = 0; x < 512; ++x)
+            g->setBlocked(x, y, m.grid->blocked(x, y));
+    World w = m;
+    w.grid = g;
+    w.bounds = g->bounds();
+    const Query &q = w.queries.front();
+    const OptimumResult any = computeOptimum(w, q);
+    const OptimumResult oct = computeGridOctileOptimum(w, q);
+    ASSERT_TRUE(any.found);
+    ASSERT_TRUE(oct.found);
+    EXPECT_LE(any.length, oct.length);
+    EXPECT_TRUE(polylineValid(w, any.path));
+    std::cout << "[optimum] 512 x 512 maze: any-angle " << any.length << " in " << any.seconds << " s ("
+              << any.graphNodes << " nodes, " << any.graphEdges << " edges); octile " << oct.lengthCells
+              << " cells in " << oct.seconds << " s\n";
+}
