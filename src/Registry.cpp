@@ -7,6 +7,8 @@
 #include "Genetic.h"
 #include "BacterialForaging.h"
 #include "ArtificialPotentialField.h"
+#include "AStar.h"
+#include "ThetaStar.h"
 
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/fmt/BFMT.h>
@@ -102,6 +104,10 @@ namespace mhplan
                "Search tree with resolution independent density estimation (Gipson et al. 2013)",
                omplAllocator<og::STRIDE>()});
         // mhplan's planners: one line each (see ompl_planners/).
+        r.add({"AStar", "mhplan", "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
+               omplAllocator<AStar>()});
+        r.add({"ThetaStar", "mhplan", "Theta*, any-angle A* on the same lattice (Nash et al. 2007)",
+               omplAllocator<ThetaStar>()});
         r.add({"BFO", "mhplan", "Bacterial foraging optimization, online APF walk (Passino 2002; [BFO])",
                omplAllocator<BacterialForaging>()});
         r.add({"ATBFO", "mhplan", "Adaptive-tumble bacterial foraging, online APF walk (Abbas & Ali 2016)",

@@ -18,6 +18,7 @@ namespace mhplan::cli
     int cmdCompare(const Argv &argv);
     int cmdBench(const Argv &argv);
     int cmdReport(const Argv &argv);
+    int cmdScen(const Argv &argv);
     int cmdOptimum(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */

@@ -47,6 +47,9 @@ namespace
             {"bench",
              {cmdBench, "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
                         "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
+            {"scen",
+             {cmdScen, "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
+                       "        (run every problem of a MovingAI scenario file; compare lengths with its optima)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };
