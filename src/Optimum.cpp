@@ -21,6 +21,9 @@ namespace mhplan
         constexpr double kPi = 3.14159265358979323846;
         constexpr double kTwoPi = 2.0 * kPi;
         constexpr double kInf = std::numeric_limits<double>::infinity();
+        /** Largest number of convex corners for the disc-robot grid optimum (the tangent graph checks all
+            pairs of corner discs). */
+        constexpr std::size_t kMaxGridDiscCorners = 4000;
 
         /** Angle in [0, 2 pi). */
         double normAngle(double a)
@@ -464,8 +467,11 @@ namespace mhplan
         class TangentGraphBuilder
         {
           public:
-            TangentGraphBuilder(const World &w, const Query &q, const OptimumOptions &opt)
-                : world_(w), query_(q), opt_(opt), r_(w.robotRadius),
+            /** \e keepVertex, when given, selects the polygon vertices that get a disc (grids: the convex
+                corners of the blocked region, not every corner of every cell). */
+            TangentGraphBuilder(const World &w, const Query &q, const OptimumOptions &opt,
+                                std::function<bool(const Vec2 &)> keepVertex = {})
+                : world_(w), query_(q), opt_(opt), keepVertex_(std::move(keepVertex)), r_(w.robotRadius),
                   inner_(w.bounds.inflated(-w.robotRadius)),
                   scale_(std::max(w.bounds.width(), w.bounds.height())), tol_(1e-9 * scale_),
                   index_(inner_.inflated(tol_), w.circles.size() + w.polygons.size())
@@ -508,6 +514,7 @@ namespace mhplan
             const World &world_;
             const Query &query_;
             const OptimumOptions &opt_;
+            std::function<bool(const Vec2 &)> keepVertex_;
             double r_;
             Box inner_;
             double scale_;
@@ -535,7 +542,7 @@ namespace mhplan
                         const Vec2 &prev = v[(i + m - 1) % m];
                         const Vec2 &next = v[(i + 1) % m];
                         // Counter-clockwise vertices: convex where the boundary turns left.
-                        if (cross(v[i] - prev, next - v[i]) <= 0.0)
+                        if (cross(v[i] - prev, next - v[i]) <= 0.0 || (keepVertex_ && !keepVertex_(v[i])))
                             continue;
                         Disc d;
                         d.c = v[i];
@@ -955,6 +962,61 @@ namespace mhplan
                 }
             }
         };
+        /** Convex corners of the blocked region: lattice points with exactly one blocked cell of four. */
+        bool convexCorner(const OccupancyGrid &g, int vx, int vy)
+        {
+            int count = 0;
+            for (int dy = -1; dy <= 0; ++dy)
+                for (int dx = -1; dx <= 0; ++dx)
+                    count += g.blocked(vx + dx, vy + dy) ? 1 : 0;
+            return count == 1;
+        }
+
+        /** A disc robot on a grid: the tangent graph over the blocked cells on the region's boundary as
+            squares, with discs at the region's convex corners only. */
+        OptimumResult gridDiscRobot(const World &world, const Query &query, const OptimumOptions &options)
+        {
+            const OccupancyGrid &g = *world.grid;
+            std::size_t corners = 0;
+            for (int vy = 0; vy <= g.height(); ++vy)
+                for (int vx = 0; vx <= g.width(); ++vx)
+                    corners += convexCorner(g, vx, vy) ? 1 : 0;
+            if (corners > kMaxGridDiscCorners)
+                throw InputError("optimum: grid world '" + world.name + "' with robot radius " +
+                                 std::to_string(world.robotRadius) + " has " + std::to_string(corners) +
+                                 " convex corners; the disc-robot grid optimum supports at most " +
+                                 std::to_string(kMaxGridDiscCorners) + " (a point robot has no such limit)");
+            World squares;
+            squares.name = world.name;
+            squares.bounds = world.bounds;
+            squares.robotRadius = world.robotRadius;
+            for (int iy = 0; iy < g.height(); ++iy)
+                for (int ix = 0; ix < g.width(); ++ix)
+                {
+                    if (!g.blocked(ix, iy))
+                        continue;
+                    bool boundary = false;
+                    for (int dy = -1; dy <= 1 && !boundary; ++dy)
+                        for (int dx = -1; dx <= 1 && !boundary; ++dx)
+                            boundary = g.inside(ix + dx, iy + dy) && !g.blocked(ix + dx, iy + dy);
+                    if (!boundary)
+                        continue;
+                    const Box b = g.cellBox(ix, iy);
+                    squares.polygons.push_back(makePolygon(
+                        {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}}, "cell"));
+                }
+            auto keep = [&g](const Vec2 &v)
+            {
+                const int vx = static_cast<int>(std::lround((v.x - g.origin().x) / g.cellSize()));
+                const int vy = static_cast<int>(std::lround((v.y - g.origin().y) / g.cellSize()));
+                return convexCorner(g, vx, vy);
+            };
+            TangentGraphBuilder builder(squares, query, options, keep);
+            OptimumResult res = builder.run();
+            res.method = "grid-tangent-graph";
+            res.lengthCells = res.found ? res.length / g.cellSize() : 0.0;
+            return res;
+        }
     } // namespace
 
     std::vector<Vec2> piecesToPolyline(const std::vector<OptimumPiece> &pieces, double maxDeviation,
@@ -1018,12 +1080,14 @@ namespace mhplan
         const auto t0 = std::chrono::steady_clock::now();
         if (world.isGrid())
         {
-            if (world.robotRadius > 0.0)
-                throw InputError("optimum: world '" + world.name + "' is a grid world with robot radius " +
-                                 std::to_string(world.robotRadius) +
-                                 "; the any-angle grid optimum supports a point robot (radius 0) only");
             GridCollisionModel model(world);
             validateQuery(world, query, model);
+            if (world.robotRadius > 0.0)
+            {
+                OptimumResult res = gridDiscRobot(world, query, options);
+                res.seconds = secondsSince(t0);
+                return res;
+            }
             GridAnyAngle solver(world, query, model);
             OptimumResult res = solver.run(options);
             res.seconds = secondsSince(t0);

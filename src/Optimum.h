@@ -54,7 +54,7 @@ namespace mhplan
         std::size_t graphEdges{0};
         /** \brief True when a path exists. */
         bool found{false};
-        /** \brief "tangent-graph", "grid-any-angle" or "grid-octile". */
+        /** \brief "tangent-graph", "grid-any-angle", "grid-tangent-graph" or "grid-octile". */
         std::string method;
     };
 
@@ -83,15 +83,22 @@ namespace mhplan
         the Euclidean heuristic finds the shortest path in the graph, which is the exact optimum (shortest
         paths in the plane among such obstacles consist of tangent segments and arcs of these discs).
 
-        Grid worlds (point robot only; any-angle): blocked cells are closed squares, cells outside the grid
-        are blocked, and a "pinch" corner where two blocked cells meet diagonally blocks passage (see
+        Grid worlds, point robot (any-angle): blocked cells are closed squares, cells outside the grid are
+        blocked, and a "pinch" corner where two blocked cells meet diagonally blocks passage (see
         GridCollision.h). The optimum is a shortest path in the visibility graph of the convex corners of
         the blocked region (lattice points with exactly one blocked cell among their four), restricted to
         edges taut at both ends; the visible corners of each node are found by an octant sweep of the cells
-        (shadow casting) and every edge is confirmed exactly by GridCollisionModel::segmentValid.
+        (shadow casting, exact slopes from lattice points) and every edge is confirmed exactly by
+        GridCollisionModel::segmentValid. method "grid-any-angle".
 
-        Throws InputError for a grid world with a robot radius > 0 (not supported) and for a start or goal
-        that is not valid; returns found = false when start and goal are not connected. */
+        Grid worlds, disc robot (r > 0): the tangent graph above over the blocked cells on the region's
+        boundary taken as squares, with discs of radius r at the convex corners of the blocked region only
+        (pinches need no rule: the inflated squares overlap there). All pairs of corner discs are tried, so
+        grids with more than 4000 convex corners throw InputError. method "grid-tangent-graph".
+
+        Throws InputError for a start or goal that is not valid (validateQuery) and for the too-large disc
+        robot grids above; returns found = false when start and goal are not connected. \e seconds includes
+        building the collision model used to validate the query. */
     OptimumResult computeOptimum(const World &world, const Query &query, const OptimumOptions &options = {});
 
     /** \brief The 8-connected grid optimum with MovingAI semantics: moves between free cells, straight moves

@@ -344,8 +344,11 @@ TEST(Optimum, InvalidInputs)
     bad.arcDeviation = 0.0;
     EXPECT_THROW(computeOptimum(w, query({1, 1}, {9, 9}), bad), std::invalid_argument);
     EXPECT_THROW(computeGridOctileOptimum(w, query({1, 1}, {9, 9})), InputError);
+    // A disc robot on a grid with too many convex corners for the all-pairs tangent graph.
     GeneratorOptions o;
-    o.width = o.height = 8;
+    o.seed = 3;
+    o.width = o.height = 200;
+    o.density = 0.2;
     o.robotRadius = 0.2;
     const World g = generateGrid(o);
     EXPECT_THROW(computeOptimum(g, g.queries.front()), InputError);
@@ -595,6 +598,39 @@ TEST(OptimumRandom, GridWorlds)
         EXPECT_LE(r.length, oct.length + 1e-9);
     }
     std::cout << "[optimum] grids: roadmap / optimum - 1 at most " << worstGap << "\n";
+}
+
+TEST(OptimumRandom, GridWorldsDiscRobot)
+{
+    double worstGap = 0.0;
+    for (int i = 0; i < 100; ++i)
+    {
+        GeneratorOptions o;
+        o.seed = 900 + static_cast<std::uint64_t>(i);
+        o.width = 6 + i % 9;
+        o.height = 6 + (i * 5) % 8;
+        o.density = 0.15 + 0.01 * (i % 12);
+        o.cellSize = i % 2 == 0 ? 1.0 : 0.5;
+        // Up to half a cell: a free cell's centre is always valid.
+        o.robotRadius = o.cellSize * (0.05 + 0.45 * ((i * 37) % 100) / 100.0);
+        const World w = generateGrid(o);
+        const Query &q = w.queries.front();
+        const OptimumResult r = computeOptimum(w, q);
+        const double road =
+            roadmapLength(w, q, 4 * std::max(w.grid->width(), w.grid->height()), 200, 2.6, 11 + i);
+        if (std::isfinite(road))
+        {
+            ASSERT_TRUE(r.found) << "grid " << i;
+            ASSERT_GE(road, r.length * (1.0 - 1e-9)) << "grid " << i;
+            worstGap = std::max(worstGap, road / r.length - 1.0);
+        }
+        if (!r.found)
+            continue;
+        EXPECT_EQ(r.method, "grid-tangent-graph");
+        ASSERT_TRUE(polylineValid(w, r.path)) << "grid " << i;
+        EXPECT_NEAR(r.lengthCells, r.length / w.grid->cellSize(), 1e-12);
+    }
+    std::cout << "[optimum] disc-robot grids: roadmap / optimum - 1 at most " << worstGap << "\n";
 }
 
 TEST(OptimumGrid, OctileSemantics)
