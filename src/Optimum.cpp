@@ -428,7 +428,7 @@ namespace mhplan
         }
 
         void finish(OptimumResult &res, const Graph &g, int s, int t, const Query &query, double scale,
-                    const OptimumOptions &opt)
+                    const Box &inner, const OptimumOptions &opt)
         {
             double length = kInf;
             const std::vector<int> nodes = g.shortestPath(s, t, length);
@@ -445,6 +445,9 @@ namespace mhplan
                 res.path = {query.start, query.goal};
             else
                 res.path = piecesToPolyline(res.pieces, opt.arcDeviation * scale, 1e-10 * scale);
+            // Points pushed off an arc that touches the bounds return onto them.
+            for (Vec2 &p : res.path)
+                p = {std::clamp(p.x, inner.xmin, inner.xmax), std::clamp(p.y, inner.ymin, inner.ymax)};
             res.path.front() = query.start;
             res.path.back() = query.goal;
         }
@@ -506,7 +509,7 @@ namespace mhplan
                         connect(static_cast<int>(i), static_cast<int>(j));
                 for (auto &d : discs_)
                     addArcs(d);
-                finish(res, g_, discs_[s].pointNode, discs_[t].pointNode, query_, scale_, opt_);
+                finish(res, g_, discs_[s].pointNode, discs_[t].pointNode, query_, scale_, inner_, opt_);
                 return res;
             }
 
@@ -811,7 +814,8 @@ namespace mhplan
                 scanFrom(t, cellUnits(query_.goal));
                 if (model_.segmentValid(query_.start, query_.goal))
                     g_.addEdge(s, t, distance(query_.start, query_.goal));
-                finish(res, g_, s, t, query_, std::max(world_.bounds.width(), world_.bounds.height()), opt);
+                finish(res, g_, s, t, query_, std::max(world_.bounds.width(), world_.bounds.height()),
+                       world_.bounds, opt);
                 res.lengthCells = res.length / s_;
                 return res;
             }
@@ -1048,13 +1052,40 @@ namespace mhplan
             {
                 const double ratio = (p.radius + push) / (p.radius + std::max(maxDeviation, 2.0 * push));
                 const double hmax = std::max(2.0 * std::acos(std::min(1.0, ratio)), 1e-6);
-                const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(p.sweep) / hmax)));
-                const double h = p.sweep / n;
-                const double R = (p.radius + push) / std::cos(0.5 * h);
                 const double th0 = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x);
-                for (int k = 1; k <= n; ++k)
-                    out.push_back(polar(p.center, R, th0 + (k - 0.5) * h));
-                out.push_back(pushed(p, p.to));
+                const double th1 = th0 + p.sweep;
+                // Split at the axis directions, where the arc reaches its extreme coordinates: there the
+                // polyline has a vertex on the (pushed) circle, so an arc that touches the bounds keeps its
+                // polyline inside them once clamped.
+                std::vector<double> cuts{th0};
+                const double quarter = 0.5 * kPi;
+                const double margin = 1e-9;
+                if (p.sweep > 0.0)
+                    for (double a = (std::floor(th0 / quarter) + 1.0) * quarter; a < th1 - margin;
+                         a += quarter)
+                    {
+                        if (a > th0 + margin)
+                            cuts.push_back(a);
+                    }
+                else
+                    for (double a = (std::ceil(th0 / quarter) - 1.0) * quarter; a > th1 + margin;
+                         a -= quarter)
+                    {
+                        if (a < th0 - margin)
+                            cuts.push_back(a);
+                    }
+                cuts.push_back(th1);
+                for (std::size_t c = 0; c + 1 < cuts.size(); ++c)
+                {
+                    const double span = cuts[c + 1] - cuts[c];
+                    const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(span) / hmax)));
+                    const double h = span / n;
+                    const double R = (p.radius + push) / std::cos(0.5 * h);
+                    for (int k = 1; k <= n; ++k)
+                        out.push_back(polar(p.center, R, cuts[c] + (k - 0.5) * h));
+                    out.push_back(c + 2 < cuts.size() ? polar(p.center, p.radius + push, cuts[c + 1])
+                                                      : pushed(p, p.to));
+                }
             }
         }
         return out;

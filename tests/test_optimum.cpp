@@ -325,6 +325,7 @@ TEST(Optimum, BoxBoundary)
     const double d = 4.5 * std::sqrt(2.0);
     const double beta = std::acos(5.0 / d);
     EXPECT_NEAR(r2.length, 2.0 * std::sqrt(d * d - 25.0) + 5.0 * (kPi - 2.0 * beta), 1e-9);
+    EXPECT_TRUE(polylineValid(big, r2.path));
 
     // With a robot disc, a wall-crossing disc closes the passage entirely.
     World closed = box10(0.5);
@@ -332,6 +333,35 @@ TEST(Optimum, BoxBoundary)
     const OptimumResult none = computeOptimum(closed, query({1, 1}, {9, 9}));
     EXPECT_FALSE(none.found);
     EXPECT_TRUE(std::isinf(none.length));
+}
+
+/* Touching is allowed: two discs that touch at (4, 5) let a point robot pass straight through the contact
+   point; a start on a circle and a start on a polygon corner need no special casing. */
+TEST(Optimum, TouchingContacts)
+{
+    World w = box10();
+    w.circles.push_back({{3.0, 5.0}, 1.0});
+    w.circles.push_back({{5.0, 5.0}, 1.0});
+    const OptimumResult r = computeOptimum(w, query({4, 2}, {4, 8}));
+    ASSERT_TRUE(r.found);
+    EXPECT_NEAR(r.length, 6.0, 1e-12);
+    EXPECT_TRUE(polylineValid(w, r.path));
+
+    // Start on the first circle (at its leftmost point), goal behind it: the path hugs the circle.
+    const OptimumResult onCircle = computeOptimum(w, query({2, 5}, {3, 3}));
+    ASSERT_TRUE(onCircle.found);
+    // From (2,5) along the circle (centre (3,5), radius 1) to the tangent point of the goal (3,3)
+    // (d = 2, beta = acos(1/2) = pi/3): the tangent point at angle -pi/2 - pi/3 = 7 pi/6, so an arc of pi/6
+    // from angle pi, then the tangent of length sqrt(3).
+    EXPECT_NEAR(onCircle.length, kPi / 6.0 + std::sqrt(3.0), 1e-9);
+    EXPECT_TRUE(polylineValid(w, onCircle.path));
+
+    World p = box10();
+    p.polygons.push_back(makePolygon({{4, 4}, {6, 4}, {6, 6}, {4, 6}}));
+    const OptimumResult fromCorner = computeOptimum(p, query({4, 4}, {6, 6.5}));
+    ASSERT_TRUE(fromCorner.found);
+    EXPECT_NEAR(fromCorner.length, 2.0 + std::hypot(2.0, 0.5), 1e-12);
+    EXPECT_TRUE(polylineValid(p, fromCorner.path));
 }
 
 TEST(Optimum, InvalidInputs)
