@@ -11,7 +11,8 @@
 
 namespace mhplan
 {
-    /** \brief One piece of an exact optimal path: a straight segment, or an arc of a circle. */
+    /** \brief One piece of an exact optimal path: a straight segment, or an arc of a circle. An arc with
+        sweep 0 (length 0) marks a point where the path touches a disc between two segments. */
     struct OptimumPiece
     {
         /** \brief True for an arc, false for a straight segment. */
@@ -39,10 +40,13 @@ namespace mhplan
         /** \brief The same length in grid cell units (length / cellSize) for grid worlds; 0 otherwise. */
         double lengthCells{0.0};
         /** \brief A polyline for drawing and for the motion validator: start, the pieces' end points, and
-            every arc replaced by a circumscribed polyline (vertices at most \e arcDeviation outside the
-            circle, every chord tangent to it) with all points on arcs pushed outwards by 1e-10 of the world's
-            size, so that the polyline touches no obstacle in floating point. Its length is slightly above
-            \e length (by at most the arc deviation per radian of arc); \e length is the exact value. */
+            every arc replaced by a circumscribed polyline (split at the axis directions; vertices at most
+            OptimumOptions::arcDeviation times the world's size outside the circle, every chord tangent to
+           it), all points on discs pushed outwards by 1e-10 of the world's size, then clamped into the
+           admissible box. So the polyline touches no obstacle in floating point and passes the exact motion
+           validator, except in degenerate worlds where an arc of the optimum touches another obstacle (not
+           the bounds) within the arc deviation. Its length is slightly above \e length; \e length and \e
+           pieces are exact. */
         std::vector<Vec2> path;
         /** \brief The exact path as segments and arcs (empty when not found). */
         std::vector<OptimumPiece> pieces;
