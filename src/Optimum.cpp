@@ -493,23 +493,52 @@ namespace mhplan
                     index_.insert(nc + static_cast<int>(k), w.polygons[k].bbox.inflated(r_ + tol_));
             }
 
+            /** Builds the graph over the discs that meet the ellipse {x : |x - s| + |x - g| <= U} and the
+                tangent segments that can lie on a path of length <= U; a shortest path of length <= U in
+                that graph is the optimum (every shorter path stays inside the ellipse). U grows from 1.05
+                times the straight-line distance to infinity until that holds. */
             OptimumResult run()
             {
                 OptimumResult res;
                 res.method = "tangent-graph";
                 collectDiscs();
-                const int s = static_cast<int>(discs_.size()) - 2;
-                const int t = s + 1;
-                discs_[s].pointNode = g_.addNode(query_.start);
-                discs_[t].pointNode = g_.addNode(query_.goal);
-                discs_[s].pointValid = discs_[t].pointValid = 1;
-                const std::size_t n = discs_.size();
-                for (std::size_t i = 0; i < n; ++i)
-                    for (std::size_t j = i + 1; j < n; ++j)
-                        connect(static_cast<int>(i), static_cast<int>(j));
-                for (auto &d : discs_)
-                    addArcs(d);
-                finish(res, g_, discs_[s].pointNode, discs_[t].pointNode, query_, scale_, inner_, opt_);
+                const double straight = distance(query_.start, query_.goal);
+                for (double slack : {1.05, 1.4, kInf})
+                {
+                    bound_ = slack * straight + tol_;
+                    if (!(straight > 100.0 * tol_) || !(bound_ < kInf))
+                        bound_ = kInf;
+                    g_ = Graph();
+                    for (auto &d : discs_)
+                    {
+                        d.pointNode = -1;
+                        d.nodes.clear();
+                    }
+                    const int s = static_cast<int>(discs_.size()) - 2;
+                    const int t = s + 1;
+                    discs_[s].pointNode = g_.addNode(query_.start);
+                    discs_[t].pointNode = g_.addNode(query_.goal);
+                    discs_[s].pointValid = discs_[t].pointValid = 1;
+                    std::vector<int> active;
+                    for (std::size_t i = 0; i < discs_.size(); ++i)
+                    {
+                        const Disc &d = discs_[i];
+                        if (distance(d.c, query_.start) + distance(d.c, query_.goal) - 2.0 * d.rho <= bound_)
+                            active.push_back(static_cast<int>(i));
+                    }
+                    for (std::size_t i = 0; i < active.size(); ++i)
+                        for (std::size_t j = i + 1; j < active.size(); ++j)
+                            connect(active[i], active[j]);
+                    for (int i : active)
+                        addArcs(discs_[i]);
+                    res = OptimumResult();
+                    res.method = "tangent-graph";
+                    finish(res, g_, discs_[s].pointNode, discs_[t].pointNode, query_, scale_, inner_, opt_);
+                    if (res.found && res.length <= bound_)
+                        break;
+                    if (bound_ == kInf)
+                        break;
+                }
                 return res;
             }
 
@@ -525,6 +554,8 @@ namespace mhplan
             BucketIndex index_;
             std::vector<Disc> discs_;
             Graph g_;
+            /** Paths longer than this are not looked for (see run()). */
+            double bound_{kInf};
 
             void collectDiscs()
             {
@@ -719,6 +750,11 @@ namespace mhplan
                         const Vec2 t2 = b.c - nrm * rho2;
                         const Vec2 dir = t2 - t1;
                         if (!taut(a, dir) || !taut(b, dir))
+                            continue;
+                        // Either direction: the segment lies on no path of length <= bound_ otherwise.
+                        const double via = std::min(distance(query_.start, t1) + distance(t2, query_.goal),
+                                                    distance(query_.start, t2) + distance(t1, query_.goal));
+                        if (via + distance(t1, t2) > bound_)
                             continue;
                         if (!endFree(a, t1) || !endFree(b, t2))
                             continue;

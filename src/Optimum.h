@@ -52,7 +52,8 @@ namespace mhplan
         std::vector<OptimumPiece> pieces;
         /** \brief Wall-clock time spent (graph construction and search), seconds. */
         double seconds{0.0};
-        /** \brief Nodes of the graph searched (tangent points, corners or cells, start and goal included). */
+        /** \brief Nodes of the (last) graph searched (tangent points, corners or cells, start and goal
+            included). */
         std::size_t graphNodes{0};
         /** \brief Undirected edges of the graph searched (segments and arcs). */
         std::size_t graphEdges{0};
@@ -83,7 +84,11 @@ namespace mhplan
         another obstacle or outside the box are discarded; the bounds need no nodes because the admissible
         box is convex (a shortest path may run along it as a straight segment, never bend on it). Checks
         use a tolerance of 1e-9 of the world's size, so paths that touch obstacles are kept. A uniform
-        bucket grid over the obstacles makes every segment check visit only the buckets it crosses. A* with
+        bucket grid over the obstacles makes every segment check visit only the buckets it crosses. Only
+        discs meeting the ellipse {x : |x - start| + |x - goal| <= U} and tangent segments that fit on a path
+        of length <= U are built, for U = 1.05, then 1.4 times the straight-line distance, then unbounded,
+        until the graph's shortest path is no longer than U (then it is the optimum: shorter paths never
+        leave the ellipse). A* with
         the Euclidean heuristic finds the shortest path in the graph, which is the exact optimum (shortest
         paths in the plane among such obstacles consist of tangent segments and arcs of these discs).
 
