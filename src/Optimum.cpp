@@ -843,15 +843,36 @@ namespace mhplan
                 seen_.assign(corners, -1);
                 const int s = g_.addNode(query_.start);
                 const int t = g_.addNode(query_.goal);
-                for (int u = 0; u < corners; ++u)
-                    scanFrom(u, Vec2{static_cast<double>(lattice_[u].first),
-                                     static_cast<double>(lattice_[u].second)});
-                scanFrom(s, cellUnits(query_.start));
-                scanFrom(t, cellUnits(query_.goal));
-                if (model_.segmentValid(query_.start, query_.goal))
-                    g_.addEdge(s, t, distance(query_.start, query_.goal));
-                finish(res, g_, s, t, query_, std::max(world_.bounds.width(), world_.bounds.height()),
-                       world_.bounds, opt);
+                // First try a tight ellipse (2% above the straight line), then the octile bound, which is
+                // always enough; a path no longer than the bound in use is the optimum.
+                const double ceiling = upperBound();
+                std::vector<double> bounds;
+                const double tight = 1.02 * distance(query_.start, query_.goal) + 1e-9 * s_;
+                if (tight < ceiling)
+                    bounds.push_back(tight);
+                bounds.push_back(ceiling);
+                for (double bound : bounds)
+                {
+                    bound_ = bound;
+                    for (auto &adj : g_.adj)
+                        adj.clear();
+                    g_.edgeCount = 0;
+                    seen_.assign(corners, -1);
+                    for (int u = 0; u < corners; ++u)
+                        if (distance(g_.pos[u], query_.start) + distance(g_.pos[u], query_.goal) <= bound_)
+                            scanFrom(u, Vec2{static_cast<double>(lattice_[u].first),
+                                             static_cast<double>(lattice_[u].second)});
+                    scanFrom(s, cellUnits(query_.start));
+                    scanFrom(t, cellUnits(query_.goal));
+                    if (model_.segmentValid(query_.start, query_.goal))
+                        g_.addEdge(s, t, distance(query_.start, query_.goal));
+                    res = OptimumResult();
+                    res.method = "grid-any-angle";
+                    finish(res, g_, s, t, query_, std::max(world_.bounds.width(), world_.bounds.height()),
+                           world_.bounds, opt);
+                    if (res.found && res.length <= bound_)
+                        break;
+                }
                 res.lengthCells = res.length / s_;
                 return res;
             }
@@ -868,6 +889,20 @@ namespace mhplan
             std::vector<int> nodeAt_;
             std::vector<std::pair<int, int>> quadrant_, lattice_;
             std::vector<int> seen_;
+            /** Upper bound on the optimum (see upperBound()); longer paths are not looked for. */
+            double bound_{kInf};
+
+            /** The 8-connected optimum's path, joined to the exact start and goal, is a valid any-angle path:
+                its length bounds the optimum, and a shorter path never leaves the ellipse
+                {x : |x - start| + |x - goal| <= bound}. Infinity when the octile search finds no path. */
+            double upperBound() const
+            {
+                const OptimumResult oct = computeGridOctileOptimum(world_, query_);
+                if (!oct.found)
+                    return kInf;
+                return oct.length + distance(query_.start, oct.path.front()) +
+                       distance(oct.path.back(), query_.goal) + 1e-9 * std::max(1.0, oct.length);
+            }
 
             std::size_t vertexIndex(int vx, int vy) const
             {
@@ -899,7 +934,13 @@ namespace mhplan
                 const double dy = vy - p.y;
                 if (!tautAt(v, dx, dy) || (uIsCorner && !tautAt(u, dx, dy)))
                     return;
-                if (!model_.segmentValid(g_.pos[u], g_.pos[v]))
+                const Vec2 &a = g_.pos[u];
+                const Vec2 &b = g_.pos[v];
+                const double via = std::min(distance(query_.start, a) + distance(b, query_.goal),
+                                            distance(query_.start, b) + distance(a, query_.goal));
+                if (via + distance(a, b) > bound_)
+                    return; // on no path shorter than the octile one
+                if (!model_.segmentValid(a, b))
                     return;
                 g_.addEdge(u, v, distance(g_.pos[u], g_.pos[v]));
             }

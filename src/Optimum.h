@@ -98,7 +98,10 @@ namespace mhplan
         the blocked region (lattice points with exactly one blocked cell among their four), restricted to
         edges taut at both ends; the visible corners of each node are found by an octant sweep of the cells
         (shadow casting, exact slopes from lattice points) and every edge is confirmed exactly by
-        GridCollisionModel::segmentValid. method "grid-any-angle".
+        GridCollisionModel::segmentValid. Only corners and edges inside the ellipse of the bound U
+        are used, U = 1.02 times the straight-line distance first, then the length of the 8-connected
+        optimum joined to the exact start and goal (a valid path, so always enough). method
+        "grid-any-angle".
 
         Grid worlds, disc robot (r > 0): the tangent graph above over the blocked cells on the region's
         boundary taken as squares, with discs of radius r at the convex corners of the blocked region only
