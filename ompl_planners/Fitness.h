@@ -79,7 +79,10 @@ namespace mhplan
           min(distance outside / 1 m, 1) to the mean: the outside of the box is treated as an obstacle.
         - A path with f2 = 0 that still fails the motion validator (a thin obstacle between samples) gets
           f2 = 1e-3 (so S rises by eta2 / 1000): it must not tie with a valid path of the same length.
-        Feasibility (reported exact solutions) is decided by the motion validator only.
+        Feasibility (reported exact solutions) is decided by the motion validator, and for foreign checkers
+        also by the space's bounds: OMPL's checkers and its DiscreteMotionValidator do not look at the bounds,
+        and spline samples can overshoot them, so pointValid() and segmentValid() refuse points outside the
+        bounds (mhplan's WorldValidityChecker models check their own box).
 
         [GMS] f1/f2 (1.3): segment clearance is exact for planar WorldValidityChecker models, otherwise
         sampled at the space's validity-checking resolution; with a checker that computes no clearance the
@@ -109,7 +112,7 @@ namespace mhplan
 
         /** \brief The motion validator's verdict on one straight segment (k coordinates each). */
         bool segmentValid(const double *a, const double *b) const;
-        /** \brief The validity checker's verdict on one point. */
+        /** \brief The validity checker's verdict on one point (outside the space's bounds: invalid). */
         bool pointValid(const double *p) const;
         /** \brief Signed clearance from the validity checker (meaningful unless penaltyMode() is
             ValidityOnly). */
@@ -149,6 +152,10 @@ namespace mhplan
       private:
         double collisionViolation(const PointsView &samples) const;
         double outOfBounds(const double *p) const;
+        /** \brief Inside the space's bounds (per coordinate, inclusive). */
+        bool inBounds(const double *p) const;
+        /** \brief The validity checker alone (no bounds). */
+        bool checkerValid(const double *p) const;
         FitnessResult evaluateLengthPenalty(const PointsView &path, const PointsView &samples);
         FitnessResult evaluateGms(const PointsView &path);
         void toState(ompl::base::State *s, const double *p) const;

@@ -148,12 +148,25 @@ namespace mhplan
         std::copy(p, p + dim_, v);
     }
 
+    bool PathFitness::inBounds(const double *p) const
+    {
+        for (unsigned int c = 0; c < dim_; ++c)
+            if (!(p[c] >= low_[c] && p[c] <= high_[c]))
+                return false;
+        return true;
+    }
+
+    bool PathFitness::checkerValid(const double *p) const
+    {
+        toState(s1_, p);
+        return si_->isValid(s1_);
+    }
+
     bool PathFitness::pointValid(const double *p) const
     {
         if (model_)
-            return model_->isValid(Vec2(p[0], p[1]));
-        toState(s1_, p);
-        return si_->isValid(s1_);
+            return model_->isValid(Vec2(p[0], p[1])); // the model checks its box
+        return inBounds(p) && checkerValid(p);
     }
 
     double PathFitness::clearance(const double *p) const
@@ -166,6 +179,9 @@ namespace mhplan
 
     bool PathFitness::segmentValid(const double *a, const double *b) const
     {
+        // The box is convex: a segment between points inside it stays inside.
+        if (!model_ && (!inBounds(a) || !inBounds(b)))
+            return false;
         toState(s1_, a);
         toState(s2_, b);
         return si_->checkMotion(s1_, s2_);
@@ -246,7 +262,7 @@ namespace mhplan
         case PenaltyMode::ValidityOnly:
             for (std::size_t i = 0; i < samples.size(); ++i)
             {
-                if (!pointValid(samples[i]))
+                if (!checkerValid(samples[i])) // the bounds are outOfBounds()'s
                     sum += 1.0;
                 sum += outOfBounds(samples[i]);
             }
