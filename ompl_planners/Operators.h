@@ -17,7 +17,10 @@ namespace mhplan
         rings of samples instead of BFS over cells, ALGORITHMS.md 1.5). Replacement is a population-level
         operator and lives in the planners. Randomness from the RNG passed in.
 
-        \e step is the base length of the operators' moves (default 1% of the bounds' larger side). */
+        \e step is the base length of the operators' moves (default 1% of the bounds' larger side).
+
+        Planar only (rings of 16 angles, 8 compass moves, the perpendicular of a segment): the constructor
+        throws std::invalid_argument when the fitness is configured for a space of dimension other than 2. */
     class PathOperators
     {
       public:

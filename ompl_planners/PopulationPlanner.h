@@ -76,6 +76,8 @@ namespace mhplan
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
         void setup() override;
+        /** \brief The reported path (best feasible, else best infeasible) as a chain of vertices from a start
+            to a goal vertex; the states belong to the planner until clear() or its destruction. */
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
         /** \brief Population size N (2..10000). */
@@ -204,6 +206,7 @@ namespace mhplan
         void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
         void reportSolution(bool &exact, bool &approximate);
         void fireIntermediate();
+        void freePlannerDataStates();
 
         unsigned int populationSize_;
         unsigned int iterations_;
@@ -239,6 +242,8 @@ namespace mhplan
         std::vector<double> bestInfeasiblePath_;
         /** \brief Reused buffer of evaluatePath(). */
         std::vector<double> planarPath_;
+        /** \brief States handed to PlannerData by getPlannerData(), freed by clear(). */
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
         bool improved_{false};
 
         std::atomic<double> bestCostValue_;

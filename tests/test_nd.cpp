@@ -11,6 +11,7 @@
 #include "Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
@@ -178,6 +179,11 @@ TEST_P(NdPlanner, FindsAValidPathAroundTheHypersphere)
     EXPECT_GE(path.length(), shortestAroundSphere(k) - 1e-9);
     EXPECT_LT(path.length(), 1.3 * shortestAroundSphere(k));
     EXPECT_NEAR(path.length(), pp->bestCost(), 1e-9);
+    // The planner data is the same path, k-dimensional states included.
+    ob::PlannerData data(si);
+    p->getPlannerData(data);
+    ASSERT_EQ(data.numVertices(), path.getStateCount());
+    EXPECT_EQ(si->distance(data.getGoalVertex(0).getState(), path.getState(path.getStateCount() - 1)), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Planners, NdPlanner,

@@ -4,12 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace mhplan
 {
     PathOperators::PathOperators(PathFitness &fitness, ompl::RNG &rng, const Box &bounds, double step)
         : fitness_(fitness), rng_(rng), bounds_(bounds), step_(step)
     {
+        if (fitness.spaceDimension() != 2)
+            throw std::invalid_argument("PathOperators: the [GMS] operators are planar; the fitness is "
+                                        "configured for dimension " +
+                                        std::to_string(fitness.spaceDimension()));
     }
 
     bool PathOperators::inBounds(const Vec2 &p) const

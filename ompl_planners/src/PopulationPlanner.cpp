@@ -99,6 +99,7 @@ namespace mhplan
             si_->freeState(costA_);
         if (costB_ != nullptr)
             si_->freeState(costB_);
+        freePlannerDataStates();
     }
 
     void PopulationPlanner::setPopulationSize(unsigned int n)
@@ -272,6 +273,7 @@ namespace mhplan
     {
         ob::Planner::clear();
         clearPopulation();
+        freePlannerDataStates();
         problemReady_ = false;
         initialised_ = false;
         haveFeasible_ = false;
@@ -524,21 +526,27 @@ namespace mhplan
         ob::Planner::getPlannerData(data);
         const std::vector<double> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
         const std::size_t count = points.size() / spaceDim_;
-        ob::State *s = si_->allocState();
+        // PlannerData keeps the state pointers it is given (and merges vertices by pointer): one state per
+        // point, owned by the planner until clear(), as OMPL's planners own their tree's states.
+        unsigned int previous = ob::PlannerData::INVALID_INDEX;
         for (std::size_t i = 0; i < count; ++i)
         {
+            ob::State *s = si_->allocState();
+            plannerDataStates_.push_back(s);
             toState(s, points, i);
-            // PlannerData copies the states it is given.
             const ob::PlannerDataVertex v(s);
-            if (i == 0)
-                data.addStartVertex(v);
-            else if (i + 1 == count)
-                data.addGoalVertex(v);
-            else
-                data.addVertex(v);
+            const unsigned int index = i == 0 ? data.addStartVertex(v)
+                                              : (i + 1 == count ? data.addGoalVertex(v) : data.addVertex(v));
+            if (i > 0)
+                data.addEdge(previous, index);
+            previous = index;
         }
-        for (std::size_t i = 1; i < count; ++i)
-            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-        si_->freeState(s);
+    }
+
+    void PopulationPlanner::freePlannerDataStates()
+    {
+        for (ob::State *s : plannerDataStates_)
+            si_->freeState(s);
+        plannerDataStates_.clear();
     }
 } // namespace mhplan
