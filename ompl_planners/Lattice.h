@@ -314,11 +314,11 @@ namespace mhplan
         unsigned long motionCheckCount() const { return motionCheckCount_.load(); }
         /** \brief The lattice in use (built by the first solve()). */
         const Lattice &lattice() const { return lattice_; }
-        /** \brief Bytes of search state per lattice node (flags, open-list index, g, parent); each open node
-            costs LatticeOpenList::bytesPerOpenNode() more. */
+        /** \brief Bytes of search state per lattice node, padding included: flags and their initial copy,
+            open-list index, g, parent (18); each open node costs LatticeOpenList::bytesPerOpenNode() more. */
         static constexpr std::size_t bytesPerNode()
         {
-            return sizeof(std::uint8_t) + LatticeOpenList::bytesPerNode() + sizeof(double) +
+            return 2 * sizeof(std::uint8_t) + LatticeOpenList::bytesPerNode() + sizeof(double) +
                    sizeof(LatticeNode);
         }
 
