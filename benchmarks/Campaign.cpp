@@ -215,7 +215,7 @@ namespace mhplan::bench
                              ":1: a campaign file must be a YAML mapping (see benchmarks/README.md)");
         r.allowKeys(root, "",
                     {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
-                     "progress_interval", "collision", "worlds", "planners"});
+                     "progress_interval", "planner_data", "collision", "worlds", "planners"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.text(root["campaign"], "campaign")
@@ -230,6 +230,17 @@ namespace mhplan::bench
             c.seed = static_cast<std::uint32_t>(r.integer(root["seed"], "seed", 1, 4294967295LL));
         if (root["progress_interval"].IsDefined())
             c.progressInterval = r.number(root["progress_interval"], "progress_interval", 1e-3, 1e6);
+        if (root["planner_data"].IsDefined())
+        {
+            try
+            {
+                c.plannerData = root["planner_data"].as<bool>();
+            }
+            catch (const YAML::Exception &)
+            {
+                r.fail(root["planner_data"], "planner_data", "expected true or false");
+            }
+        }
         if (root["collision"].IsDefined())
         {
             c.collision = r.text(root["collision"], "collision");
@@ -307,7 +318,7 @@ namespace mhplan::bench
         common.precision(17);
         common << "time " << campaign.timeLimit << "\nmemory " << campaign.memoryLimit << "\nruns "
                << campaign.runs << "\nseed " << campaign.seed << "\ninterval " << campaign.progressInterval
-               << "\ncollision " << campaign.collision << "\n";
+               << "\ncollision " << campaign.collision << "\nplanner data " << campaign.plannerData << "\n";
         for (const auto &p : campaign.planners)
         {
             common << "planner " << p.displayName << " " << p.planner;

@@ -52,6 +52,9 @@ namespace mhplan::bench
         std::uint32_t seed{1};
         /** \brief Seconds between two samples of the planners' progress properties. */
         double progressInterval{0.05};
+        /** \brief Export each run's planner data ("graph states", "graph motions") as OMPL's benchmark does;
+            off saves the time (a PRM* roadmap takes about as long to export as to build). */
+        bool plannerData{true};
         /** \brief Collision back end: auto, analytic, fcl or grid. */
         std::string collision{"auto"};
         /** \brief The SQLite database (relative paths are relative to the working directory). */

@@ -8,9 +8,7 @@
 #include "World.h"
 #include "WorldIO.h"
 
-#ifdef MHPLAN_BENCH_HAVE_OPTIMUM
 #include "Optimum.h"
-#endif
 
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
@@ -241,9 +239,59 @@ namespace mhplan::bench
             std::streambuf *old_;
         };
 
-        /** Child process: run planner \e spec for runs [first, runs) through ompl::tools::Benchmark and
-            stream each run's properties, path and progress to \e fd. Never returns. */
-        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t first,
+        /** Runs another planner unchanged (same name, parameters, specs and progress properties) but hands
+            OMPL's benchmark its planner data only when asked: exporting the roadmap of a PRM* run costs about
+            as much time as the run itself. */
+        class PlannerDataSwitch : public ob::Planner
+        {
+          public:
+            PlannerDataSwitch(ob::PlannerPtr inner, bool plannerData)
+                : ob::Planner(inner->getSpaceInformation(), inner->getName()), inner_(std::move(inner)),
+                  plannerData_(plannerData)
+            {
+                specs_ = inner_->getSpecs();
+                params_ = inner_->params();
+                for (const auto &kv : inner_->getPlannerProgressProperties())
+                    addPlannerProgressProperty(kv.first, kv.second);
+            }
+            void setProblemDefinition(const ob::ProblemDefinitionPtr &pdef) override
+            {
+                ob::Planner::setProblemDefinition(pdef);
+                inner_->setProblemDefinition(pdef);
+            }
+            ob::PlannerStatus solve(const ob::PlannerTerminationCondition &ptc) override
+            {
+                return inner_->solve(ptc);
+            }
+            void clear() override
+            {
+                ob::Planner::clear();
+                inner_->clear();
+            }
+            void setup() override
+            {
+                ob::Planner::setup();
+                inner_->setup();
+            }
+            void checkValidity() override { inner_->checkValidity(); }
+            void printProperties(std::ostream &out) const override { inner_->printProperties(out); }
+            void printSettings(std::ostream &out) const override { inner_->printSettings(out); }
+            void getPlannerData(ob::PlannerData &data) const override
+            {
+                if (plannerData_)
+                    inner_->getPlannerData(data);
+            }
+
+          private:
+            ob::PlannerPtr inner_;
+            bool plannerData_;
+        };
+
+        /** Child process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send the
+           run's properties, path and progress to \e fd. One process per run: the seed applies to exactly this
+           run, OMPL's memory figure is this run's, a crash takes nothing else with it, and no planner is ever
+            cleared or destroyed (the process just ends). Never returns. */
+        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
                                           std::uint32_t seed, int fd)
         {
             int code = 0;
@@ -258,62 +306,52 @@ namespace mhplan::bench
                 // generator (its path simplifier's).
                 const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
                 const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-                ob::PlannerPtr planner = xs.registry->create(spec.planner, si, spec.params);
-                planner->setName(spec.displayName);
+                ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
+                inner->setName(spec.displayName);
+                auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData);
                 ss->setPlanner(planner);
 
                 ot::Benchmark benchmark(*ss, xs.experiment->name);
                 benchmark.addPlanner(planner);
                 CerrCapture capture;
-                std::size_t current = first; // index of the run in progress
-                std::size_t started = 0;     // runs started in this process
-                const auto sendProgress = [&](std::size_t runIndex)
-                {
-                    const auto &pd = benchmark.getRecordedExperimentData().planners;
-                    if (pd.empty() || pd[0].runsProgressData.empty())
-                        return;
-                    std::string payload;
-                    for (const auto &sample : pd[0].runsProgressData.back())
-                        payload += encodeMap(sample) + kGroupSep;
-                    sendMessage(fd, 'G', runIndex, payload);
-                };
                 benchmark.setPreRunEvent(
                     [&](const ob::PlannerPtr &p)
                     {
-                        if (started > 0)
-                            sendProgress(current);
-                        current = first + started++;
-                        if (started == 1)
-                        {
-                            const auto &data = benchmark.getRecordedExperimentData();
-                            std::map<std::string, std::string> common;
-                            p->params().getParams(common);
-                            p->getSpaceInformation()->params().getParams(common);
-                            std::ostringstream props;
-                            p->printProperties(props);
-                            std::string names = "time REAL";
-                            for (const auto &kv : p->getPlannerProgressProperties())
-                                names += std::string(1, kGroupSep) + kv.first;
-                            sendMessage(fd, 'C', 0, encodeMap(common));
-                            sendMessage(fd, 'S', 0,
-                                        encodeMap({{"host", data.host},
-                                                   {"cpu", data.cpuInfo},
-                                                   {"properties", props.str()},
-                                                   {"progress", names}}));
-                        }
+                        const auto &data = benchmark.getRecordedExperimentData();
+                        std::map<std::string, std::string> common;
+                        p->params().getParams(common);
+                        p->getSpaceInformation()->params().getParams(common);
+                        std::ostringstream props;
+                        p->printProperties(props);
+                        std::string names = "time REAL";
+                        for (const auto &kv : p->getPlannerProgressProperties())
+                            names += std::string(1, kGroupSep) + kv.first;
+                        sendMessage(fd, 'C', 0, encodeMap(common));
+                        sendMessage(fd, 'S', 0,
+                                    encodeMap({{"host", data.host},
+                                               {"cpu", data.cpuInfo},
+                                               {"properties", props.str()},
+                                               {"progress", names}}));
                     });
                 benchmark.setPostRunEvent(
                     [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
                     {
-                        const std::string err = capture.take();
-                        if (err.find("error executing planner") != std::string::npos)
+                        const std::string crash = std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                        // OMPL's benchmark catches a std::runtime_error thrown by solve() and only reports it
+                        // on std::cerr: that is a crash too.
+                        if (capture.take().find("error executing planner") != std::string::npos)
                         {
-                            run["status ENUM"] = std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                            run["status ENUM"] = crash;
                             run["solved BOOLEAN"] = "0";
                         }
-                        run["run index INTEGER"] = std::to_string(current);
-                        run["seed INTEGER"] = std::to_string(seed);
-                        run["exact optimum REAL"] = num(xs.optimum);
+                        if (!c.plannerData)
+                        {
+                            run.erase("graph states INTEGER");
+                            run.erase("graph motions INTEGER");
+                        }
+                        run["run index INTEGER"] = std::to_string(runIndex);
+                        run["run seed INTEGER"] = std::to_string(seed);
+                        run["exact optimum length REAL"] = num(xs.optimum);
                         for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
                         {
                             const auto &fns = p->getPlannerProgressProperties();
@@ -323,8 +361,7 @@ namespace mhplan::bench
                         }
                         std::string path;
                         const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
-                        if (pdef->hasSolution() &&
-                            run["status ENUM"] != std::to_string(static_cast<int>(ob::PlannerStatus::CRASH)))
+                        if (pdef->hasSolution() && run["status ENUM"] != crash)
                         {
                             const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
                             const std::vector<Vec2> pts = pathPoints(*geo);
@@ -343,15 +380,20 @@ namespace mhplan::bench
                         }
                         std::map<std::string, std::string> payload = run;
                         payload["\x01path"] = path;
-                        sendMessage(fd, 'R', current, encodeMap(payload));
+                        sendMessage(fd, 'R', runIndex, encodeMap(payload));
                     });
-                ot::Benchmark::Request req(c.timeLimit, c.memoryLimit,
-                                           static_cast<unsigned int>(c.runs - first), c.progressInterval,
-                                           false, false, false);
+                const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
+                                                 false, false);
                 benchmark.benchmark(req);
-                if (started > 0)
-                    sendProgress(current);
-                sendMessage(fd, 'E', current, "");
+                const auto &pd = benchmark.getRecordedExperimentData().planners;
+                if (!pd.empty() && !pd[0].runsProgressData.empty())
+                {
+                    std::string payload;
+                    for (const auto &sample : pd[0].runsProgressData.back())
+                        payload += encodeMap(sample) + kGroupSep;
+                    sendMessage(fd, 'G', runIndex, payload);
+                }
+                sendMessage(fd, 'E', runIndex, "");
             }
             catch (const std::exception &e)
             {
@@ -407,8 +449,7 @@ namespace mhplan::bench
                 rec.progress.resize(c.runs);
                 rec.paths.resize(c.runs);
                 rec.have.assign(c.runs, false);
-                std::size_t next = 0;
-                while (next < c.runs)
+                for (std::size_t next = 0; next < c.runs; ++next)
                 {
                     const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
                     int fds[2];
@@ -430,7 +471,8 @@ namespace mhplan::bench
                     }
                     ::close(fds[1]);
                     MessageReader reader;
-                    Clock::time_point last = Clock::now();
+                    const Clock::time_point runStart = Clock::now();
+                    Clock::time_point last = runStart;
                     bool killed = false;
                     std::string childError;
                     char buf[65536];
@@ -485,7 +527,8 @@ namespace mhplan::bench
                                     solveSeconds += std::atof(t->second.c_str());
                                 const bool crash = props["status ENUM"] == std::to_string(crashCode);
                                 std::ostringstream msg;
-                                msg << "r " << e.index << " " << (crash ? 1 : 0) << "\n";
+                                msg << "r " << e.index << " " << (crash ? 1 : 0) << " " << pi << " "
+                                    << secondsSince(runStart) << "\n";
                                 writeAll(progressFd, msg.str());
                             }
                             else if (m.type == 'G' && m.index < c.runs)
@@ -504,25 +547,22 @@ namespace mhplan::bench
                     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
                     {
                     }
-                    // The first run without a record is the one that crashed (or none did).
-                    std::size_t k = next;
-                    while (k < c.runs && rec.have[k])
-                        ++k;
-                    if (k >= c.runs)
-                        break;
+                    const std::size_t k = next;
+                    if (rec.have[k])
+                        continue;
                     ot::Benchmark::RunProperties crash;
                     const double elapsed = std::min(secondsSince(last), killed ? watchdog : 1e9);
                     crash["time REAL"] = num(elapsed);
                     crash["status ENUM"] = std::to_string(crashCode);
                     crash["solved BOOLEAN"] = "0";
                     crash["run index INTEGER"] = std::to_string(k);
-                    crash["seed INTEGER"] = std::to_string(deriveSeed(e.seed, spec.displayName, next));
-                    crash["exact optimum REAL"] = num(xs.optimum);
+                    crash["run seed INTEGER"] = std::to_string(seed);
+                    crash["exact optimum length REAL"] = num(xs.optimum);
                     rec.runs[k] = crash;
                     rec.have[k] = true;
                     solveSeconds += elapsed;
                     std::ostringstream msg;
-                    msg << "r " << e.index << " 1\n";
+                    msg << "r " << e.index << " 1 " << pi << " " << secondsSince(runStart) << "\n";
                     writeAll(progressFd, msg.str());
                     std::ostringstream why;
                     if (killed)
@@ -532,9 +572,9 @@ namespace mhplan::bench
                     else
                         why << "exit code " << WEXITSTATUS(status) << (childError.empty() ? "" : ": ")
                             << childError;
-                    std::cerr << "mhplan bench: " << e.name << ": planner " << spec.displayName << " run "
-                              << k << " crashed (" << why.str() << "); recorded as Crash\n";
-                    next = k + 1;
+                    std::cerr << (::isatty(2) ? "\n" : "") << "mhplan bench: " << e.name << ": planner "
+                              << spec.displayName << " run " << k << " crashed (" << why.str()
+                              << "); recorded as Crash\n";
                 }
             }
 
@@ -638,13 +678,19 @@ namespace mhplan::bench
             xs.query = xs.world.query(e.query);
             xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
             xs.metricStep = defaultMetricStep(xs.world);
-#ifdef MHPLAN_BENCH_HAVE_OPTIMUM
             const Clock::time_point t0 = Clock::now();
-            const OptimumResult opt = computeOptimum(xs.world, xs.query);
+            try
+            {
+                const OptimumResult opt = computeOptimum(xs.world, xs.query);
+                if (opt.found)
+                    xs.optimum = opt.length;
+            }
+            catch (const InputError &ex)
+            {
+                // E.g. grid worlds with a robot radius: no exact optimum, no gap; the runs still count.
+                std::cerr << "mhplan bench: " << e.name << ": no exact optimum (" << ex.what() << ")\n";
+            }
             xs.optimumSeconds = secondsSince(t0);
-            if (opt.found)
-                xs.optimum = opt.length;
-#endif
         }
 
         /** Check every planner and parameter in a throw-away process (so that this process never
@@ -722,13 +768,40 @@ namespace mhplan::bench
             return out.str();
         }
 
-        /** Terminal progress: experiments and runs done, crashes, elapsed time and ETA. */
+        /** Terminal progress: experiments and runs done, crashes, elapsed time and ETA. The ETA weighs the
+            runs still to do by each planner's mean run time so far (the time limit for planners not seen yet)
+            and scales by the ratio of elapsed time to the run time done (parallelism and overhead). */
         class ProgressBar
         {
           public:
-            ProgressBar(bool enabled, std::size_t experiments, std::size_t runs)
-                : enabled_(enabled), experiments_(experiments), runs_(runs), start_(Clock::now())
+            ProgressBar(bool enabled, std::size_t experiments, std::size_t runs, std::size_t planners,
+                        double timeLimit)
+                : enabled_(enabled), experiments_(experiments), runs_(runs), start_(Clock::now()),
+                  timeLimit_(timeLimit), sum_(planners, 0.0), count_(planners, 0)
             {
+            }
+            void recordRun(std::size_t planner, double seconds)
+            {
+                if (planner < sum_.size())
+                {
+                    sum_[planner] += seconds;
+                    ++count_[planner];
+                }
+            }
+            /** Seconds still needed, or a negative number when unknown. */
+            double eta() const
+            {
+                const std::size_t perPlanner = sum_.empty() ? 0 : runs_ / sum_.size();
+                double done = 0.0, todo = 0.0;
+                for (std::size_t p = 0; p < sum_.size(); ++p)
+                {
+                    done += sum_[p];
+                    const double mean = count_[p] ? sum_[p] / static_cast<double>(count_[p]) : timeLimit_;
+                    todo += mean * static_cast<double>(perPlanner > count_[p] ? perPlanner - count_[p] : 0);
+                }
+                if (!(done > 0.0))
+                    return -1.0;
+                return todo * secondsSince(start_) / done;
             }
             void update(std::size_t expDone, std::size_t runsDone, std::size_t crashes, bool force = false)
             {
@@ -739,7 +812,7 @@ namespace mhplan::bench
                 lastDraw_ = Clock::now();
                 const double elapsed = secondsSince(start_);
                 const double frac = runs_ ? static_cast<double>(runsDone) / static_cast<double>(runs_) : 1.0;
-                const double eta = frac > 0.0 ? elapsed * (1.0 - frac) / frac : -1.0;
+                const double remaining = eta();
                 const int width = 28;
                 const int filled = static_cast<int>(frac * width);
                 std::ostringstream line;
@@ -749,8 +822,8 @@ namespace mhplan::bench
                      << " runs " << runsDone << "/" << runs_;
                 if (crashes > 0)
                     line << " crashes " << crashes;
-                line << " elapsed " << formatDuration(elapsed) << " ETA "
-                     << (frac > 0 ? formatDuration(eta) : "--") << "   ";
+                line << " elapsed " << formatDuration(elapsed) << " ETA " << formatDuration(remaining)
+                     << "   ";
                 std::cerr << line.str() << std::flush;
             }
             void finish()
@@ -765,6 +838,9 @@ namespace mhplan::bench
             std::size_t runs_;
             Clock::time_point start_;
             Clock::time_point lastDraw_{};
+            double timeLimit_;
+            std::vector<double> sum_;
+            std::vector<std::size_t> count_;
         };
     } // namespace
 
@@ -829,7 +905,8 @@ namespace mhplan::bench
         {
             fs::create_directories(campaign.logDir);
             const std::size_t runsPerExperiment = campaign.planners.size() * campaign.runs;
-            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), todo.size() * runsPerExperiment);
+            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), todo.size() * runsPerExperiment,
+                            campaign.planners.size(), campaign.timeLimit);
             struct Active
             {
                 const Experiment *experiment;
@@ -929,7 +1006,10 @@ namespace mhplan::bench
                         if (type == 'r')
                         {
                             int crashed = 0;
-                            line >> crashed;
+                            std::size_t planner = 0;
+                            double seconds = 0.0;
+                            line >> crashed >> planner >> seconds;
+                            bar.recordRun(planner, seconds);
                             ++runsDone;
                             ++a.runsSeen;
                             ++summary.runs;

@@ -407,6 +407,9 @@ namespace mhplan
         double bestApproxH_{std::numeric_limits<double>::infinity()};
         ompl::base::State *costA_{nullptr};
         ompl::base::State *costB_{nullptr};
+        /** \brief States handed to PlannerData (it keeps the pointers): owned here until clear(). */
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
+        void freePlannerDataStates();
 
         std::atomic<double> bestCostValue_;
         std::atomic<unsigned long> iterationCount_{0};

@@ -8,8 +8,10 @@
 #include "Problem.h"
 #include "Registry.h"
 #include "ThetaStar.h"
+#include "Validity.h"
 #include "WorldIO.h"
 
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Console.h>
 
@@ -444,6 +446,25 @@ TEST_F(LatticeContract, ContinuesAfterABudgetAndIsDeterministic)
     EXPECT_EQ(std::stoul(p->getPlannerProgressProperties().at("iterations INTEGER")()), once.iterations);
     EXPECT_EQ(pathPoints(ss->getSolutionPath()), once.points);
     EXPECT_EQ(calls, (once.iterations + 6) / 7 + (once.iterations % 7 == 0 ? 1 : 0));
+}
+
+TEST_F(LatticeContract, PlannerDataHoldsThePath)
+{
+    const World w = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/gms_grid20.yaml");
+    og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
+    ob::PlannerPtr p = PlannerRegistry::builtin().create("ThetaStar", ss->getSpaceInformation());
+    ss->setPlanner(p);
+    ss->setup();
+    ASSERT_EQ(p->solve(ob::plannerNonTerminatingCondition()), ob::PlannerStatus::EXACT_SOLUTION);
+    const std::vector<Vec2> points = pathPoints(ss->getSolutionPath());
+    ob::PlannerData data(ss->getSpaceInformation());
+    p->getPlannerData(data);
+    ASSERT_EQ(data.numVertices(), points.size());
+    EXPECT_EQ(data.numEdges(), points.size() - 1);
+    EXPECT_EQ(data.numStartVertices(), 1u);
+    EXPECT_EQ(data.numGoalVertices(), 1u);
+    for (unsigned int i = 0; i < data.numVertices(); ++i)
+        EXPECT_EQ(statePosition(data.getVertex(i).getState()), points[i]) << i;
 }
 
 TEST_F(LatticeContract, ParametersAreCheckedByName)

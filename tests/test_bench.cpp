@@ -253,6 +253,7 @@ class TinyCampaign : public ::testing::Test
     {
         delete campaign_;
         delete summary_;
+        fs::remove_all(fs::temp_directory_path() / ("mhplan_test_bench_" + std::to_string(::getpid())));
     }
     static Campaign *campaign_;
     static CampaignSummary *summary_;
@@ -292,10 +293,18 @@ TEST_F(TinyCampaign, DatabaseHasExpectedExperimentsPlannersRunsAndColumns)
         EXPECT_TRUE(exp.count(c)) << "experiments." << c;
     const std::set<std::string> runs = sql.columns("runs");
     for (const char *c :
-         {"time", "status", "solved", "path_length", "exact_optimum", "optimality_gap", "collision_free",
-          "min_clearance", "mean_clearance", "smoothness", "max_curvature", "angle_over_length", "cusps",
-          "iterations", "fitness_evaluations", "run_index", "seed"})
+         {"time", "status", "solved", "path_length", "exact_optimum_length", "optimality_gap",
+          "collision_free", "min_clearance", "mean_clearance", "smoothness", "max_curvature",
+          "angle_over_length", "cusps", "iterations", "fitness_evaluations", "run_index", "run_seed"})
         EXPECT_TRUE(runs.count(c)) << "runs." << c;
+    // Planner Arena joins runs with experiments: no run property may repeat an experiment column.
+    for (const std::string &c : runs)
+    {
+        if (c != "id")
+        {
+            EXPECT_EQ(exp.count(c), 0u) << "runs." << c << " repeats an experiments column";
+        }
+    }
     EXPECT_EQ(sql.count("SELECT count(*) FROM experiments WHERE world = 'bfo_case1' AND obstacle_count > 0"),
               1);
     // Every run index 0..2 of every planner and experiment is present once.
@@ -309,7 +318,7 @@ TEST_F(TinyCampaign, GapEqualsRecomputedFromStoredLengthAndOptimum)
     const Sql sql(campaign_->database);
     if (sql.columns("experiments").count("exact_optimum") == 0)
         GTEST_SKIP() << "no exact optimum in this build (src/Optimum.cpp not in mhplan_core)";
-    const auto rows = sql.rows("SELECT runs.path_length, runs.exact_optimum, runs.optimality_gap, "
+    const auto rows = sql.rows("SELECT runs.path_length, runs.exact_optimum_length, runs.optimality_gap, "
                                "experiments.exact_optimum FROM runs JOIN experiments ON runs.experimentid = "
                                "experiments.id WHERE runs.optimality_gap IS NOT NULL");
     EXPECT_GE(rows.size(), 6u); // at least the GA runs have exact solutions

@@ -215,6 +215,14 @@ namespace mhplan
             si_->freeState(costA_);
             si_->freeState(costB_);
         }
+        freePlannerDataStates();
+    }
+
+    void LatticePlanner::freePlannerDataStates()
+    {
+        for (ob::State *s : plannerDataStates_)
+            si_->freeState(s);
+        plannerDataStates_.clear();
     }
 
     void LatticePlanner::setResolution(double r)
@@ -244,6 +252,7 @@ namespace mhplan
     void LatticePlanner::clear()
     {
         ob::Planner::clear();
+        freePlannerDataStates();
         problemReady_ = linksReady_ = finished_ = found_ = false;
         solution_.clear();
         goalLinks_.clear();
@@ -560,22 +569,21 @@ namespace mhplan
     void LatticePlanner::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        if (solution_.empty())
-            return;
-        ob::State *s = si_->allocState();
+        // PlannerData keeps the state pointers it is given (and merges vertices by pointer): one state per
+        // point, owned by the planner until clear().
+        unsigned int previous = ob::PlannerData::INVALID_INDEX;
         for (std::size_t i = 0; i < solution_.size(); ++i)
         {
+            ob::State *s = si_->allocState();
+            plannerDataStates_.push_back(s);
             setStatePosition(s, solution_[i]);
             const ob::PlannerDataVertex v(s);
-            if (i == 0)
-                data.addStartVertex(v);
-            else if (i + 1 == solution_.size())
-                data.addGoalVertex(v);
-            else
-                data.addVertex(v);
+            const unsigned int index =
+                i == 0 ? data.addStartVertex(v)
+                       : (i + 1 == solution_.size() ? data.addGoalVertex(v) : data.addVertex(v));
+            if (i > 0)
+                data.addEdge(previous, index);
+            previous = index;
         }
-        for (std::size_t i = 1; i < solution_.size(); ++i)
-            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-        si_->freeState(s);
     }
 } // namespace mhplan
