@@ -9,6 +9,7 @@
 #include "Fitness.h"
 #include "PopulationPlanner.h"
 #include "Registry.h"
+#include "SlimeMould.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/PlannerData.h>
@@ -22,9 +23,47 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <limits>
 #include <tuple>
+
+// Every heap allocation of this test program is counted (for "no allocation per fitness evaluation"). The
+// operators are kept out of line so that GCC does not pair an inlined free() with operator new.
+namespace
+{
+    std::atomic<unsigned long> gAllocations{0};
+} // namespace
+
+[[gnu::noinline]] void *operator new(std::size_t n)
+{
+    ++gAllocations;
+    if (void *p = std::malloc(n == 0 ? 1 : n))
+        return p;
+    throw std::bad_alloc();
+}
+[[gnu::noinline]] void *operator new[](std::size_t n)
+{
+    return operator new(n);
+}
+[[gnu::noinline]] void operator delete(void *p) noexcept
+{
+    std::free(p);
+}
+[[gnu::noinline]] void operator delete[](void *p) noexcept
+{
+    std::free(p);
+}
+[[gnu::noinline]] void operator delete(void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
+[[gnu::noinline]] void operator delete[](void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
 
 using namespace mhplan;
 namespace ob = ompl::base;
@@ -372,4 +411,96 @@ TEST(NdRefusal, GeneticAlgorithmIsPlanarOnly)
     EXPECT_EQ(msg.rfind("GA: needs a 2-dimensional RealVectorStateSpace", 0), 0u) << msg;
     EXPECT_NE(msg.find("got dimension 3"), std::string::npos) << msg;
     EXPECT_FALSE(p->isSetup());
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// No heap allocation per fitness evaluation, in R^6 (with a motion validator that allocates nothing itself:
+// OMPL's DiscreteMotionValidator allocates a state per call).
+
+namespace
+{
+    /** \brief Exact straight-segment test against the sphere (closest point of the segment to the centre).
+     */
+    class SphereMotionValidator : public ob::MotionValidator
+    {
+      public:
+        explicit SphereMotionValidator(const ob::SpaceInformationPtr &si) : ob::MotionValidator(si) {}
+        bool checkMotion(const ob::State *s1, const ob::State *s2) const override
+        {
+            const unsigned int k = si_->getStateDimension();
+            const double *a = s1->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double *b = s2->as<ob::RealVectorStateSpace::StateType>()->values;
+            double ab = 0.0, ac = 0.0;
+            for (unsigned int j = 0; j < k; ++j)
+            {
+                ab += (b[j] - a[j]) * (b[j] - a[j]);
+                ac += (0.5 - a[j]) * (b[j] - a[j]);
+            }
+            const double t = ab > 0.0 ? std::min(1.0, std::max(0.0, ac / ab)) : 0.0;
+            double d2 = 0.0;
+            for (unsigned int j = 0; j < k; ++j)
+            {
+                const double q = a[j] + t * (b[j] - a[j]) - 0.5;
+                d2 += q * q;
+            }
+            return d2 >= kRadius * kRadius;
+        }
+        bool checkMotion(const ob::State *s1, const ob::State *s2,
+                         std::pair<ob::State *, double> &) const override
+        {
+            return checkMotion(s1, s2);
+        }
+    };
+
+    /** \brief SMA with its protected evaluation hooks opened for the test. */
+    class EvaluationProbe : public SlimeMould
+    {
+      public:
+        using SlimeMould::SlimeMould;
+        double evaluateCandidate(const double *x) { return evaluate(x); }
+        void randomCandidate(double *x) { randomPosition(x); }
+        unsigned int candidateDimension() const { return dimension(); }
+    };
+} // namespace
+
+TEST(NdEvaluation, NoHeapAllocationPerFitnessEvaluation)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const bool clearanceChecker : {false, true})
+        for (const char *decoding : {"polyline", "spline"})
+            for (const char *fitness : {"lrsma", "gms"})
+            {
+                og::SimpleSetupPtr ss = sphereProblem(6, clearanceChecker);
+                const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+                si->setMotionValidator(std::make_shared<SphereMotionValidator>(si));
+                auto probe = std::make_shared<EvaluationProbe>(si);
+                probe->setDecoding(decoding);
+                probe->setFitness(fitness);
+                probe->setSeed(9);
+                probe->setMaxIterations(1);
+                ss->setPlanner(probe);
+                ss->solve(never()); // prepares the problem and the buffers
+                std::vector<double> xs(200 * std::size_t(probe->candidateDimension()));
+                for (std::size_t i = 0; i < 200; ++i)
+                    probe->randomCandidate(xs.data() + i * probe->candidateDimension());
+                const unsigned long before = probe->evaluationCount();
+                const unsigned long allocations = gAllocations.load();
+                for (std::size_t i = 0; i < 200; ++i)
+                    probe->evaluateCandidate(xs.data() + i * probe->candidateDimension());
+                EXPECT_EQ(gAllocations.load() - allocations, 0u)
+                    << decoding << " " << fitness << (clearanceChecker ? " clearance" : " validity-only");
+                EXPECT_EQ(probe->evaluationCount() - before, 200u);
+            }
+    // The counter sees allocations: OMPL's DiscreteMotionValidator allocates a state per checkMotion().
+    og::SimpleSetupPtr ss = sphereProblem(6, true);
+    auto probe = std::make_shared<EvaluationProbe>(ss->getSpaceInformation());
+    probe->setFitness("gms");
+    probe->setMaxIterations(1);
+    ss->setPlanner(probe);
+    ss->solve(never());
+    std::vector<double> x(probe->candidateDimension());
+    probe->randomCandidate(x.data());
+    const unsigned long allocations = gAllocations.load();
+    probe->evaluateCandidate(x.data());
+    EXPECT_GT(gAllocations.load() - allocations, 0u);
 }
