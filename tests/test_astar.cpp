@@ -15,6 +15,8 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Console.h>
 
+#include "CliSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -29,6 +31,9 @@
 #include <sys/wait.h>
 
 using namespace mhplan;
+using mhplan::test::CliResult;
+using mhplan::test::contains;
+using mhplan::test::runCli;
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
@@ -139,31 +144,6 @@ namespace
                 out.push_back({a[0], a[1], b[0], b[1]});
         }
         return out;
-    }
-
-    struct CliResult
-    {
-        int code;
-        std::string out;
-    };
-
-    CliResult runCli(const std::string &args)
-    {
-        const std::string cmd = std::string(MHPLAN_BINARY) + " " + args + " 2>&1";
-        FILE *pipe = popen(cmd.c_str(), "r");
-        if (pipe == nullptr)
-            return {-1, ""};
-        std::string out;
-        std::array<char, 4096> buf{};
-        while (fgets(buf.data(), buf.size(), pipe) != nullptr)
-            out += buf.data();
-        const int status = pclose(pipe);
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-    }
-
-    bool contains(const std::string &hay, const std::string &needle)
-    {
-        return hay.find(needle) != std::string::npos;
     }
 
     std::vector<std::string> readLines(const std::string &path)

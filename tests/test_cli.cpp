@@ -1,36 +1,18 @@
 /* The mhplan program end to end: exit codes and messages as a user sees them. */
+#include "CliSupport.h"
+
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <fstream>
-#include <sys/wait.h>
+
+using mhplan::test::contains;
+using Result = mhplan::test::CliResult;
 
 namespace
 {
-    struct Result
-    {
-        int code;
-        std::string out; // stdout and stderr together
-    };
-
     Result run(const std::string &args)
     {
-        const std::string cmd = std::string(MHPLAN_BINARY) + " " + args + " 2>&1";
-        FILE *pipe = popen(cmd.c_str(), "r");
-        if (pipe == nullptr)
-            return {-1, ""};
-        std::string out;
-        std::array<char, 4096> buf{};
-        while (fgets(buf.data(), buf.size(), pipe) != nullptr)
-            out += buf.data();
-        const int status = pclose(pipe);
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-    }
-
-    bool contains(const std::string &hay, const std::string &needle)
-    {
-        return hay.find(needle) != std::string::npos;
+        return mhplan::test::runCli(args);
     }
 
     std::string tempPath(const std::string &name)
