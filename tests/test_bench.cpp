@@ -4,6 +4,7 @@
    to the unsharded row count with identical results; a re-run resumes (skips finished experiments). */
 #include "Campaign.h"
 #include "CampaignRunner.h"
+#include "CliSupport.h"
 #include "Registry.h"
 #include "World.h"
 
@@ -446,4 +447,40 @@ TEST_F(TinyCampaign, ReRunResumesAndDoesNotDuplicate)
     c.runs = 2;
     EXPECT_FALSE(logIsComplete(logFile(c, enumerateExperiments(c, resolveShipped)[0]),
                                enumerateExperiments(c, resolveShipped)[0].configHash));
+}
+
+TEST(BenchCli, RunsACampaignAndRefusesBadArguments)
+{
+    using mhplan::test::contains;
+    using mhplan::test::runCli;
+    const std::string data = std::string(MHPLAN_TEST_DATA_DIR) + "/bench_tiny.yaml";
+    const fs::path dir = fs::temp_directory_path() / ("mhplan_test_bench_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const std::string db = (dir / "cli.db").string();
+
+    auto r = runCli("bench");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "expected one CAMPAIGN")) << r.out;
+    r = runCli("bench " + data + " --shard 3/2");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "--shard")) << r.out;
+    r = runCli("bench " + data + " --jobs 0");
+    EXPECT_EQ(r.code, 1) << r.out;
+    r = runCli("bench " + data + " --merge-only --no-merge");
+    EXPECT_EQ(r.code, 1) << r.out;
+
+    r = runCli("bench " + data + " --list --database " + db);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "bfo_case1-default\tto do")) << r.out;
+    r = runCli("bench " + data + " --runs 1 --time 0.02 --no-progress --database " + db);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "experiments: 2 (2 run now, 0 already complete, 0 failed)")) << r.out;
+    EXPECT_TRUE(contains(r.out, "runs:        6 (0 recorded as Crash)")) << r.out;
+    EXPECT_TRUE(contains(r.out, "2 log(s) appended")) << r.out;
+    r = runCli("bench " + data + " --runs 1 --time 0.02 --list --database " + db);
+    EXPECT_TRUE(contains(r.out, "bfo_case1-default\tcomplete")) << r.out;
+    // Other settings make other experiments: the logs of 1 run are not taken for 3.
+    r = runCli("bench " + data + " --list --database " + db);
+    EXPECT_TRUE(contains(r.out, "bfo_case1-default\tto do")) << r.out;
+    fs::remove_all(dir);
 }
