@@ -314,6 +314,9 @@ namespace mhplan::bench
                 ot::Benchmark benchmark(*ss, xs.experiment->name);
                 benchmark.addPlanner(planner);
                 CerrCapture capture;
+                // OMPL's collector samples the progress properties from the start of solve() at a fixed
+                // interval but not at its end: the post-run event adds that last sample.
+                std::map<std::string, std::string> finalSample;
                 benchmark.setPreRunEvent(
                     [&](const ob::PlannerPtr &p)
                     {
@@ -352,6 +355,12 @@ namespace mhplan::bench
                         run["run index INTEGER"] = std::to_string(runIndex);
                         run["run seed INTEGER"] = std::to_string(seed);
                         run["exact optimum length REAL"] = num(xs.optimum);
+                        if (!p->getPlannerProgressProperties().empty())
+                        {
+                            finalSample["time REAL"] = run["time REAL"];
+                            for (const auto &kv : p->getPlannerProgressProperties())
+                                finalSample[kv.first] = kv.second();
+                        }
                         for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
                         {
                             const auto &fns = p->getPlannerProgressProperties();
@@ -389,8 +398,17 @@ namespace mhplan::bench
                 if (!pd.empty() && !pd[0].runsProgressData.empty())
                 {
                     std::string payload;
+                    double lastTime = -1.0;
                     for (const auto &sample : pd[0].runsProgressData.back())
+                    {
                         payload += encodeMap(sample) + kGroupSep;
+                        const auto t = sample.find("time REAL");
+                        if (t != sample.end())
+                            lastTime = std::max(lastTime, std::atof(t->second.c_str()));
+                    }
+                    const auto t = finalSample.find("time REAL");
+                    if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
+                        payload += encodeMap(finalSample) + kGroupSep;
                     sendMessage(fd, 'G', runIndex, payload);
                 }
                 sendMessage(fd, 'E', runIndex, "");

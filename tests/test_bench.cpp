@@ -384,6 +384,16 @@ TEST_F(TinyCampaign, SolutionPathsAreSavedPerRun)
     // Progress samples of the optimizing planners carry the best cost.
     EXPECT_TRUE(sql.columns("progress").count("best_cost"));
     EXPECT_GT(sql.count("SELECT count(*) FROM progress WHERE best_cost IS NOT NULL"), 0);
+    // Every progress series ends with a sample at the end of solve(): for the GA the last best cost is the
+    // length of the path it returned.
+    const auto last = sql.rows(
+        "SELECT runs.path_length, progress.best_cost FROM runs JOIN plannerConfigs ON runs.plannerid = "
+        "plannerConfigs.id JOIN progress ON progress.runid = runs.id WHERE plannerConfigs.name = "
+        "'geometric_GA' "
+        "AND runs.solved = 1 AND progress.time = (SELECT max(time) FROM progress WHERE runid = runs.id)");
+    EXPECT_EQ(last.size(), 6u);
+    for (const auto &r : last)
+        EXPECT_NEAR(std::atof(r[1].c_str()), std::atof(r[0].c_str()), 1e-9 * std::atof(r[0].c_str()));
 }
 
 TEST_F(TinyCampaign, ShardedRunsMergeToTheSameRows)

@@ -5,6 +5,7 @@
 #include "Campaign.h"
 #include "CampaignRunner.h"
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -129,9 +130,11 @@ namespace mhplan::cli
         std::cout << std::defaultfloat;
         std::cout << "logs:        " << campaign.logDir << "\n";
         if (options.merge)
-            std::cout << "database:    " << campaign.database << " (" << s.mergedLogs
-                      << " log(s) appended; open it with Planner Arena or 'ompl_benchmark_statistics -d "
-                      << campaign.database << " -p plots.pdf')\n";
+            std::cout << "database:    " << campaign.database << " (" << s.mergedLogs << " log(s) appended)\n"
+                      << "next:        mhplan report " << campaign.database
+                      << " -o REPORT_DIR; Planner Arena; or "
+                      << "ompl_benchmark_statistics -d " << campaign.database << " -p (plots in "
+                      << std::filesystem::path(campaign.database).replace_extension(".pdf").string() << ")\n";
         else if (options.shardCount > 1)
             std::cout << "database:    not built by a shard; after all shards: mhplan bench "
                       << args.positional()[0] << " --merge-only\n";
