@@ -28,7 +28,7 @@ def write_log(path, experiment, world, world_file, optimum, planners, with_progr
     """An OMPL 1.5 benchmark log. planners: name -> list of runs (status, time, length, clearance, progress)."""
     rng = random.Random(seed)
     lines = ["OMPL version 1.5.2", "Experiment %s" % experiment, "3 experiment properties",
-             "world TEXT = %s" % world, "world_file TEXT = %s" % world_file, "optimum REAL = %r" % optimum,
+             "world TEXT = %s" % world, "world_file TEXT = %s" % world_file, "exact_optimum REAL = %r" % optimum,
              "Running on testhost", "Starting at 2026-11-23 12:00:00", "<<<|", "setup", "|>>>", "<<<|", "cpu", "|>>>",
              "%d is the random seed" % seed, "1 seconds per run", "1024 MB per run", "5 runs per planner",
              "3.5 seconds spent to collect the data", "1 enum types", "status|" + "|".join(STATUS),

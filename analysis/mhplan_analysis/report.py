@@ -41,7 +41,7 @@ def _world_name(exp):
 
 
 def _optimum(exp):
-    return dbmod.to_float(dbmod.experiment_value(exp, "optimum", "optimum_length", "exact_optimum"))
+    return dbmod.to_float(dbmod.experiment_value(exp, "exact_optimum", "optimum", "optimum_length"))
 
 
 def _slug(text):
