@@ -38,7 +38,7 @@ namespace mhplan
           (objective cost of the path once the goal is reached, else infinity), \c iterations (steps),
           \c fitness \c evaluations (J evaluations).
         Refuses in setup() a validity checker that does not compute clearance (see PotentialField). */
-    class ArtificialPotentialField : public ompl::base::Planner
+    class ArtificialPotentialField : public ompl::base::Planner, public PotentialFieldSettings
     {
       public:
         explicit ArtificialPotentialField(const ompl::base::SpaceInformationPtr &si);
@@ -49,21 +49,6 @@ namespace mhplan
         void setup() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief xi (0..1e6). */
-        void setAttractionGain(double v);
-        double getAttractionGain() const { return field_.attractionGain; }
-        /** \brief eta (0..1e6). */
-        void setRepulsionGain(double v);
-        double getRepulsionGain() const { return field_.repulsionGain; }
-        /** \brief d0 (1e-6..1e6). */
-        void setInfluenceDistance(double v);
-        double getInfluenceDistance() const { return field_.influenceDistance; }
-        /** \brief D_sense (1e-6..1e6). */
-        void setSensingRange(double v);
-        double getSensingRange() const { return field_.sensingRange; }
-        /** \brief "sum" or "nearest" (see PotentialField). */
-        void setRepulsion(const std::string &mode);
-        std::string getRepulsion() const { return toString(repulsion_); }
         /** \brief lambda, the step length (1e-6..1e6). */
         void setStepSize(double v);
         double getStepSize() const { return stepSize_; }
@@ -105,6 +90,8 @@ namespace mhplan
             BudgetSpent
         };
 
+        /** \brief The field defines the descent: a change restarts it. */
+        void fieldChanged() override;
         bool prepare();
         /** \brief One descent step; false when the termination condition interrupted it (nothing moved). */
         bool step(const ompl::base::PlannerTerminationCondition &ptc);
@@ -112,8 +99,6 @@ namespace mhplan
         void finishIfAtGoal();
         ompl::base::PlannerStatus report();
 
-        PotentialFieldParameters field_;
-        RepulsionMode repulsion_{RepulsionMode::Sum};
         double stepSize_{0.2};
         bool gradient_{false};
         unsigned int directions_{16};

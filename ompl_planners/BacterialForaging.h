@@ -74,7 +74,7 @@ namespace mhplan
         is reached), \c iterations (online: robot steps; global: colony chemotactic steps), \c fitness
         \c evaluations (J evaluations). Randomness only from the member RNG (parameter \c seed or OMPL's
         global seed). The termination condition is tested before every evaluation, inside the swims too. */
-    class BacterialForaging : public PopulationPlanner
+    class BacterialForaging : public PopulationPlanner, public PotentialFieldSettings
     {
       public:
         /** \brief "BFO" (adaptive tumble off) or "ATBFO" (adaptive tumble on by default). */
@@ -128,21 +128,6 @@ namespace mhplan
         /** \brief w_rep (0..1e6). */
         void setRepelWidth(double v);
         double getRepelWidth() const { return repelWidth_; }
-        /** \brief xi of J_goal (0..1e6). */
-        void setAttractionGain(double v);
-        double getAttractionGain() const { return field_.attractionGain; }
-        /** \brief eta of J_obs (0..1e6). */
-        void setRepulsionGain(double v);
-        double getRepulsionGain() const { return field_.repulsionGain; }
-        /** \brief d0 of J_obs (1e-6..1e6). */
-        void setInfluenceDistance(double v);
-        double getInfluenceDistance() const { return field_.influenceDistance; }
-        /** \brief D_sense (1e-6..1e6). */
-        void setSensingRange(double v);
-        double getSensingRange() const { return field_.sensingRange; }
-        /** \brief "sum" (over every obstacle in range, when reachable) or "nearest". */
-        void setRepulsion(const std::string &mode);
-        std::string getRepulsion() const { return toString(repulsion_); }
         /** \brief lambda, the robot's step (1e-6..1e6). */
         void setRobotStep(double v);
         double getRobotStep() const { return robotStep_; }
@@ -182,6 +167,8 @@ namespace mhplan
         };
 
         void declareBfoParams();
+        /** \brief The field defines the online cost: a change restarts the walk. */
+        void fieldChanged() override;
         void updateSpecs();
         bool halt() const;
 
@@ -227,8 +214,6 @@ namespace mhplan
         double attractWidth_{0.2};
         double repelHeight_{0.1};
         double repelWidth_{10.0};
-        PotentialFieldParameters field_;
-        RepulsionMode repulsion_{RepulsionMode::Sum};
         double robotStep_{0.2};
         double goalTolerance_{0.0};
         double sectorAngle_{45.0};

@@ -5,6 +5,7 @@
 
 #include "Collision.h"
 
+#include <ompl/base/GenericParam.h>
 #include <ompl/base/SpaceInformation.h>
 
 #include <string>
@@ -40,6 +41,62 @@ namespace mhplan
     RepulsionMode parseRepulsionMode(const std::string &name);
     /** \brief "sum" or "nearest". */
     std::string toString(RepulsionMode mode);
+
+    /** \brief The potential field's planner parameters, shared by every planner that descends on J (APF, the
+        BFO online mode): a mixin holding PotentialFieldParameters and the RepulsionMode, with their validated
+        setters (std::invalid_argument naming the parameter, its range and the value given) and
+        declareFieldParams(), which declares them on a planner's ParamSet:
+
+        | parameter          | range         | default |
+        | attraction_gain    | 0 .. 1e6      | 0.1     |
+        | repulsion_gain     | 0 .. 1e6      | 0.06    |
+        | influence_distance | 1e-6 .. 1e6   | 1.5     |
+        | sensing_range      | 1e-6 .. 1e6   | 1.2     |
+        | repulsion          | sum, nearest  | sum     |
+
+        Every successful set calls fieldChanged() (the planner restarts what the field defined there). */
+    class PotentialFieldSettings
+    {
+      public:
+        virtual ~PotentialFieldSettings() = default;
+
+        /** \brief xi of J_goal (0..1e6). */
+        void setAttractionGain(double v);
+        /** \brief xi of J_goal. */
+        double getAttractionGain() const { return field_.attractionGain; }
+        /** \brief eta of J_obs (0..1e6). */
+        void setRepulsionGain(double v);
+        /** \brief eta of J_obs. */
+        double getRepulsionGain() const { return field_.repulsionGain; }
+        /** \brief d0 of J_obs (1e-6..1e6). */
+        void setInfluenceDistance(double v);
+        /** \brief d0 of J_obs. */
+        double getInfluenceDistance() const { return field_.influenceDistance; }
+        /** \brief D_sense (1e-6..1e6). */
+        void setSensingRange(double v);
+        /** \brief D_sense. */
+        double getSensingRange() const { return field_.sensingRange; }
+        /** \brief "sum" (over every obstacle in range, when reachable) or "nearest" (see PotentialField). */
+        void setRepulsion(const std::string &mode);
+        /** \brief "sum" or "nearest". */
+        std::string getRepulsion() const { return toString(repulsion_); }
+
+      protected:
+        PotentialFieldSettings() = default;
+        PotentialFieldSettings(const PotentialFieldSettings &) = default;
+        PotentialFieldSettings &operator=(const PotentialFieldSettings &) = default;
+
+        /** \brief Declare the five parameters of the table above on \e params (with their range suggestions).
+         */
+        void declareFieldParams(ompl::base::ParamSet &params);
+        /** \brief Called after every successful set of a field parameter. */
+        virtual void fieldChanged() = 0;
+
+        /** \brief The gains and ranges. */
+        PotentialFieldParameters field_;
+        /** \brief The repulsion asked for. */
+        RepulsionMode repulsion_{RepulsionMode::Sum};
+    };
 
     /** \brief The APF cost of ALGORITHMS.md 6.3 at a position P of a 2D RealVectorStateSpace problem:
 

@@ -31,7 +31,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -592,4 +594,86 @@ TEST_F(BfoApf, GlobalModeIntermediateSolutionsAndForeignChecker)
     EXPECT_NEAR(costs.back(), std::stod(statusOf(p, "best cost REAL")), 1e-9);
     EXPECT_TRUE(ss->getSolutionPath().check());
     EXPECT_EQ(statusOf(p, "iterations INTEGER"), "30");
+}
+
+namespace
+{
+    /** A bare owner of the shared field settings: counts fieldChanged() calls. */
+    class FieldOwner : public PotentialFieldSettings
+    {
+      public:
+        FieldOwner() { declareFieldParams(params); }
+        ob::ParamSet params;
+        int changes{0};
+
+      private:
+        void fieldChanged() override { ++changes; }
+    };
+} // namespace
+
+TEST(BfoApfFieldSettings, DeclaresValidatesAndNotifies)
+{
+    FieldOwner owner;
+    // The five parameters, their range suggestions and the [BFO] section 6 defaults.
+    const std::vector<std::array<std::string, 3>> expected{
+        {"attraction_gain", "0.:0.01:1000000.", "0.1"},
+        {"repulsion_gain", "0.:0.01:1000000.", "0.06"},
+        {"influence_distance", "0.000001:0.1:1000000.", "1.5"},
+        {"sensing_range", "0.000001:0.1:1000000.", "1.2"},
+        {"repulsion", "sum,nearest", "sum"}};
+    EXPECT_EQ(owner.params.size(), expected.size());
+    for (const auto &e : expected)
+    {
+        ASSERT_TRUE(owner.params.hasParam(e[0])) << e[0];
+        EXPECT_EQ(owner.params[e[0]].getRangeSuggestion(), e[1]) << e[0];
+        EXPECT_EQ(owner.params[e[0]].getValue().substr(0, e[2].size()), e[2]) << e[0];
+    }
+    EXPECT_DOUBLE_EQ(owner.getAttractionGain(), 0.1);
+    EXPECT_DOUBLE_EQ(owner.getRepulsionGain(), 0.06);
+    EXPECT_DOUBLE_EQ(owner.getInfluenceDistance(), 1.5);
+    EXPECT_DOUBLE_EQ(owner.getSensingRange(), 1.2);
+    EXPECT_EQ(owner.getRepulsion(), "sum");
+    EXPECT_EQ(owner.changes, 0);
+
+    // Through the ParamSet: each successful set reaches the field and notifies once.
+    EXPECT_TRUE(owner.params.setParam("attraction_gain", "0.5"));
+    EXPECT_TRUE(owner.params.setParam("repulsion_gain", "2"));
+    EXPECT_TRUE(owner.params.setParam("influence_distance", "3"));
+    EXPECT_TRUE(owner.params.setParam("sensing_range", "4"));
+    EXPECT_TRUE(owner.params.setParam("repulsion", "nearest"));
+    EXPECT_DOUBLE_EQ(owner.getAttractionGain(), 0.5);
+    EXPECT_DOUBLE_EQ(owner.getRepulsionGain(), 2.0);
+    EXPECT_DOUBLE_EQ(owner.getInfluenceDistance(), 3.0);
+    EXPECT_DOUBLE_EQ(owner.getSensingRange(), 4.0);
+    EXPECT_EQ(owner.params["repulsion"].getValue(), "nearest");
+    EXPECT_EQ(owner.changes, 5);
+
+    // A value out of range throws, naming the parameter and range, and changes nothing.
+    const auto message = [](const std::function<void()> &f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const std::invalid_argument &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    std::string m = message([&] { owner.setInfluenceDistance(0.0); });
+    EXPECT_NE(m.find("'influence_distance'"), std::string::npos) << m;
+    EXPECT_NE(m.find("1e-06"), std::string::npos) << m;
+    m = message([&] { owner.setAttractionGain(-1.0); });
+    EXPECT_NE(m.find("'attraction_gain'"), std::string::npos) << m;
+    m = message([&] { owner.setRepulsionGain(2e6); });
+    EXPECT_NE(m.find("'repulsion_gain'"), std::string::npos) << m;
+    m = message([&] { owner.setSensingRange(-0.5); });
+    EXPECT_NE(m.find("'sensing_range'"), std::string::npos) << m;
+    m = message([&] { owner.setRepulsion("all"); });
+    EXPECT_NE(m.find("'repulsion'"), std::string::npos) << m;
+    EXPECT_DOUBLE_EQ(owner.getInfluenceDistance(), 3.0);
+    EXPECT_DOUBLE_EQ(owner.getAttractionGain(), 0.5);
+    EXPECT_EQ(owner.getRepulsion(), "nearest");
+    EXPECT_EQ(owner.changes, 5);
 }

@@ -35,15 +35,7 @@ namespace mhplan
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
 
         using A = ArtificialPotentialField;
-        declareParam<double>("attraction_gain", this, &A::setAttractionGain, &A::getAttractionGain,
-                             "0.:0.01:1000000.");
-        declareParam<double>("repulsion_gain", this, &A::setRepulsionGain, &A::getRepulsionGain,
-                             "0.:0.01:1000000.");
-        declareParam<double>("influence_distance", this, &A::setInfluenceDistance, &A::getInfluenceDistance,
-                             "0.000001:0.1:1000000.");
-        declareParam<double>("sensing_range", this, &A::setSensingRange, &A::getSensingRange,
-                             "0.000001:0.1:1000000.");
-        declareParam<std::string>("repulsion", this, &A::setRepulsion, &A::getRepulsion, "sum,nearest");
+        declareFieldParams(params_);
         declareParam<double>("step_size", this, &A::setStepSize, &A::getStepSize, "0.000001:0.01:1000000.");
         declareParam<std::string>("descent", this, &A::setDescent, &A::getDescent, "directions,gradient");
         declareParam<unsigned int>("directions", this, &A::setDirections, &A::getDirections, "3:1:3600");
@@ -78,42 +70,8 @@ namespace mhplan
             si_->freeState(stateB_);
     }
 
-    // The field's parameters define the descent: a change restarts it.
-    void ArtificialPotentialField::setAttractionGain(double v)
+    void ArtificialPotentialField::fieldChanged()
     {
-        checkParameterRange("attraction_gain", v, 0.0, 1e6);
-        field_.attractionGain = v;
-        if (ready_)
-            clear();
-    }
-
-    void ArtificialPotentialField::setRepulsionGain(double v)
-    {
-        checkParameterRange("repulsion_gain", v, 0.0, 1e6);
-        field_.repulsionGain = v;
-        if (ready_)
-            clear();
-    }
-
-    void ArtificialPotentialField::setInfluenceDistance(double v)
-    {
-        checkParameterRange("influence_distance", v, 1e-6, 1e6);
-        field_.influenceDistance = v;
-        if (ready_)
-            clear();
-    }
-
-    void ArtificialPotentialField::setSensingRange(double v)
-    {
-        checkParameterRange("sensing_range", v, 1e-6, 1e6);
-        field_.sensingRange = v;
-        if (ready_)
-            clear();
-    }
-
-    void ArtificialPotentialField::setRepulsion(const std::string &mode)
-    {
-        repulsion_ = parseRepulsionMode(mode);
         if (ready_)
             clear();
     }

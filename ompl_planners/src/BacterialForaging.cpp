@@ -87,15 +87,7 @@ namespace mhplan
         declareParam<double>("repel_height", this, &BF::setRepelHeight, &BF::getRepelHeight,
                              "0.:0.01:1000000.");
         declareParam<double>("repel_width", this, &BF::setRepelWidth, &BF::getRepelWidth, "0.:0.01:1000000.");
-        declareParam<double>("attraction_gain", this, &BF::setAttractionGain, &BF::getAttractionGain,
-                             "0.:0.01:1000000.");
-        declareParam<double>("repulsion_gain", this, &BF::setRepulsionGain, &BF::getRepulsionGain,
-                             "0.:0.01:1000000.");
-        declareParam<double>("influence_distance", this, &BF::setInfluenceDistance, &BF::getInfluenceDistance,
-                             "0.000001:0.1:1000000.");
-        declareParam<double>("sensing_range", this, &BF::setSensingRange, &BF::getSensingRange,
-                             "0.000001:0.1:1000000.");
-        declareParam<std::string>("repulsion", this, &BF::setRepulsion, &BF::getRepulsion, "sum,nearest");
+        declareFieldParams(params_);
         declareParam<double>("robot_step", this, &BF::setRobotStep, &BF::getRobotStep,
                              "0.000001:0.01:1000000.");
         declareParam<double>("goal_tolerance", this, &BF::setGoalTolerance, &BF::getGoalTolerance,
@@ -196,42 +188,8 @@ namespace mhplan
         repelWidth_ = v;
     }
 
-    // The field's parameters define the online cost: a change restarts the walk.
-    void BacterialForaging::setAttractionGain(double v)
+    void BacterialForaging::fieldChanged()
     {
-        checkParameterRange("attraction_gain", v, 0.0, 1e6);
-        field_.attractionGain = v;
-        if (onlineReady_)
-            clear();
-    }
-
-    void BacterialForaging::setRepulsionGain(double v)
-    {
-        checkParameterRange("repulsion_gain", v, 0.0, 1e6);
-        field_.repulsionGain = v;
-        if (onlineReady_)
-            clear();
-    }
-
-    void BacterialForaging::setInfluenceDistance(double v)
-    {
-        checkParameterRange("influence_distance", v, 1e-6, 1e6);
-        field_.influenceDistance = v;
-        if (onlineReady_)
-            clear();
-    }
-
-    void BacterialForaging::setSensingRange(double v)
-    {
-        checkParameterRange("sensing_range", v, 1e-6, 1e6);
-        field_.sensingRange = v;
-        if (onlineReady_)
-            clear();
-    }
-
-    void BacterialForaging::setRepulsion(const std::string &mode)
-    {
-        repulsion_ = parseRepulsionMode(mode);
         if (onlineReady_)
             clear();
     }

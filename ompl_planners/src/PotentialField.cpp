@@ -1,5 +1,6 @@
 #include "PotentialField.h"
 
+#include "PopulationPlanner.h" // checkParameterRange
 #include "Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace ob = ompl::base;
 
@@ -27,6 +29,65 @@ namespace mhplan
     std::string toString(RepulsionMode mode)
     {
         return mode == RepulsionMode::Sum ? "sum" : "nearest";
+    }
+
+    void PotentialFieldSettings::setAttractionGain(double v)
+    {
+        checkParameterRange("attraction_gain", v, 0.0, 1e6);
+        field_.attractionGain = v;
+        fieldChanged();
+    }
+
+    void PotentialFieldSettings::setRepulsionGain(double v)
+    {
+        checkParameterRange("repulsion_gain", v, 0.0, 1e6);
+        field_.repulsionGain = v;
+        fieldChanged();
+    }
+
+    void PotentialFieldSettings::setInfluenceDistance(double v)
+    {
+        checkParameterRange("influence_distance", v, 1e-6, 1e6);
+        field_.influenceDistance = v;
+        fieldChanged();
+    }
+
+    void PotentialFieldSettings::setSensingRange(double v)
+    {
+        checkParameterRange("sensing_range", v, 1e-6, 1e6);
+        field_.sensingRange = v;
+        fieldChanged();
+    }
+
+    void PotentialFieldSettings::setRepulsion(const std::string &mode)
+    {
+        repulsion_ = parseRepulsionMode(mode);
+        fieldChanged();
+    }
+
+    void PotentialFieldSettings::declareFieldParams(ob::ParamSet &params)
+    {
+        const auto declare = [&params](const std::string &name, auto setter, auto getter, const char *range)
+        {
+            using T = std::decay_t<decltype(getter())>;
+            params.declareParam<T>(name, setter, getter);
+            params[name].setRangeSuggestion(range);
+        };
+        declare(
+            "attraction_gain", [this](double v) { setAttractionGain(v); },
+            [this] { return getAttractionGain(); }, "0.:0.01:1000000.");
+        declare(
+            "repulsion_gain", [this](double v) { setRepulsionGain(v); },
+            [this] { return getRepulsionGain(); }, "0.:0.01:1000000.");
+        declare(
+            "influence_distance", [this](double v) { setInfluenceDistance(v); },
+            [this] { return getInfluenceDistance(); }, "0.000001:0.1:1000000.");
+        declare(
+            "sensing_range", [this](double v) { setSensingRange(v); }, [this] { return getSensingRange(); },
+            "0.000001:0.1:1000000.");
+        declare(
+            "repulsion", [this](const std::string &m) { setRepulsion(m); }, [this] { return getRepulsion(); },
+            "sum,nearest");
     }
 
     PotentialField::PotentialField(ob::SpaceInformationPtr si) : si_(std::move(si)) {}
