@@ -154,6 +154,9 @@ def box_plots(database, exp, outdir):
         ax.set_title(label, fontsize=10)
         if key == "time":
             ax.set_yscale("log")
+        elif key == "smoothness":
+            # Heavy-tailed (one sharp turn dominates): a symmetric log scale keeps the boxes readable.
+            ax.set_yscale("symlog", linthresh=1.0)
         if key == "length" and _optimum(exp):
             ax.axhline(_optimum(exp), color="#1f77b4", linestyle="--", linewidth=1, label="exact optimum")
             ax.legend(fontsize=7, loc="upper right")
@@ -161,7 +164,7 @@ def box_plots(database, exp, outdir):
     fig.suptitle(exp.name, fontsize=11)
     fig.tight_layout()
     path = os.path.join(outdir, "box_%s.png" % _slug(exp.name))
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path), missing
 
@@ -192,7 +195,7 @@ def success_bars(database, outdir):
     fig.legend(handles, labels, loc="upper center", ncol=4, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (1.9 * len(exps) + 1.2)))
     path = os.path.join(outdir, "success.png")
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path)
 
@@ -240,7 +243,7 @@ def convergence_plot(database, exp, outdir, colors):
     ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
     path = os.path.join(outdir, "convergence_%s.png" % _slug(exp.name))
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path)
 
@@ -277,7 +280,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
     path = os.path.join(outdir, "paths_%s.png" % _slug(exp.name))
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path), None if drawn else "no saved exact paths"
 
