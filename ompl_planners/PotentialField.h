@@ -6,8 +6,11 @@
 #include "Collision.h"
 
 #include <ompl/base/GenericParam.h>
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/SpaceInformation.h>
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -173,6 +176,35 @@ namespace mhplan
         CollisionModelPtr model_;
         mutable unsigned long evaluations_{0};
     };
+
+    /** \name The robot walk of the planners that descend on the field (APF, the BFO online mode)
+        A walk is the list of robot positions, start first; its last entry is the robot. */
+    /** @{ */
+
+    /** \brief The start (first start state) and the goal (one goal sample) of \e pis as positions; false,
+        with OMPL_ERROR naming \e who, when there is no valid start or no goal sample. */
+    bool walkEndpoints(ompl::base::PlannerInputStates &pis, const std::string &who, Vec2 &start, Vec2 &goal);
+
+    /** \brief When the robot (walk.back()) is within \e tolerance of \e goal and the segment to the exact
+       goal passes si.checkMotion (checked with the scratch states \e a and \e b), append the goal (unless the
+        robot is on it already) and return true; otherwise change nothing and return false. */
+    bool walkReachGoal(const ompl::base::SpaceInformation &si, ompl::base::State *a, ompl::base::State *b,
+                       std::vector<Vec2> &walk, const Vec2 &goal, double tolerance);
+
+    /** \brief Add the walk to \e pdef as a solution named \e who: exact (with the objective's cost, also
+        stored in \e bestCost) when \e reachedGoal and every segment passes checkMotion, else approximate
+        (difference = distance from walk.back() to \e goal). TIMEOUT, adding nothing, when the walk has no
+        step yet and is not \e finished. */
+    ompl::base::PlannerStatus reportWalk(const ompl::base::SpaceInformationPtr &si,
+                                         const ompl::base::ProblemDefinitionPtr &pdef, const std::string &who,
+                                         const std::vector<Vec2> &walk, bool finished, bool reachedGoal,
+                                         const Vec2 &goal, std::atomic<double> &bestCost);
+
+    /** \brief Add the walk's vertices (the first a start vertex, the last a goal vertex when \e reachedGoal)
+        and the edges between consecutive ones to \e data. */
+    void walkPlannerData(const ompl::base::SpaceInformationPtr &si, const std::vector<Vec2> &walk,
+                         bool reachedGoal, ompl::base::PlannerData &data);
+    /** @} */
 } // namespace mhplan
 
 #endif

@@ -3,9 +3,7 @@
 #include "PopulationPlanner.h"
 #include "Validity.h"
 
-#include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
-#include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +13,6 @@
 #include <stdexcept>
 
 namespace ob = ompl::base;
-namespace og = ompl::geometric;
 
 namespace mhplan
 {
@@ -151,20 +148,8 @@ namespace mhplan
 
     bool ArtificialPotentialField::prepare()
     {
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        if (!walkEndpoints(pis_, getName(), robot_, goal_))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
-        robot_ = statePosition(start);
-        goal_ = statePosition(goal);
         if (!potential_)
             potential_ = std::make_unique<PotentialField>(si_);
         potential_->configure(field_, repulsion_, getName());
@@ -190,17 +175,9 @@ namespace mhplan
     void ArtificialPotentialField::finishIfAtGoal()
     {
         const double tolerance = goalTolerance_ > 0.0 ? goalTolerance_ : stepSize_;
-        if (distance(robot_, goal_) > tolerance)
+        if (!walkReachGoal(*si_, stateA_, stateB_, walk_, goal_, tolerance))
             return;
-        if (robot_ != goal_)
-        {
-            setStatePosition(stateA_, robot_);
-            setStatePosition(stateB_, goal_);
-            if (!si_->checkMotion(stateA_, stateB_))
-                return;
-            robot_ = goal_;
-            walk_.push_back(goal_);
-        }
+        robot_ = walk_.back();
         state_ = State::ReachedGoal;
     }
 
@@ -325,51 +302,13 @@ namespace mhplan
 
     ob::PlannerStatus ArtificialPotentialField::report()
     {
-        const bool finished = state_ != State::Descending;
-        if (walk_.size() < 2 && !finished)
-            return ob::PlannerStatus::TIMEOUT;
-        auto path = std::make_shared<og::PathGeometric>(si_);
-        for (const Vec2 &p : walk_)
-        {
-            setStatePosition(stateA_, p);
-            path->append(stateA_);
-        }
-        bool exact = state_ == State::ReachedGoal;
-        for (std::size_t i = 1; exact && i < path->getStateCount(); ++i)
-            exact = si_->checkMotion(path->getState(i - 1), path->getState(i));
-        ob::PlannerSolution solution(path);
-        solution.setPlannerName(getName());
-        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
-        if (exact)
-        {
-            const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
-            bestCostValue_ = cost.value();
-            if (opt)
-                solution.setOptimized(opt, cost, opt->isSatisfied(cost));
-        }
-        else
-            solution.setApproximate(std::max(distance(robot_, goal_), 1e-12));
-        pdef_->addSolutionPath(solution);
-        return exact ? ob::PlannerStatus::EXACT_SOLUTION : ob::PlannerStatus::APPROXIMATE_SOLUTION;
+        return reportWalk(si_, pdef_, getName(), walk_, state_ != State::Descending,
+                          state_ == State::ReachedGoal, goal_, bestCostValue_);
     }
 
     void ArtificialPotentialField::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        ob::State *s = si_->allocState();
-        for (std::size_t i = 0; i < walk_.size(); ++i)
-        {
-            setStatePosition(s, walk_[i]);
-            const ob::PlannerDataVertex v(s);
-            if (i == 0)
-                data.addStartVertex(v);
-            else if (i + 1 == walk_.size() && state_ == State::ReachedGoal)
-                data.addGoalVertex(v);
-            else
-                data.addVertex(v);
-        }
-        for (std::size_t i = 1; i < walk_.size(); ++i)
-            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-        si_->freeState(s);
+        walkPlannerData(si_, walk_, state_ == State::ReachedGoal, data);
     }
 } // namespace mhplan

@@ -2,10 +2,8 @@
 
 #include "Validity.h"
 
-#include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/String.h>
 
 #include <algorithm>
@@ -17,7 +15,6 @@
 #include <stdexcept>
 
 namespace ob = ompl::base;
-namespace og = ompl::geometric;
 
 namespace mhplan
 {
@@ -256,21 +253,7 @@ namespace mhplan
             return;
         }
         ob::Planner::getPlannerData(data);
-        ob::State *s = si_->allocState();
-        for (std::size_t i = 0; i < walk_.size(); ++i)
-        {
-            setStatePosition(s, walk_[i]);
-            const ob::PlannerDataVertex v(s);
-            if (i == 0)
-                data.addStartVertex(v);
-            else if (i + 1 == walk_.size() && walkState_ == WalkState::ReachedGoal)
-                data.addGoalVertex(v);
-            else
-                data.addVertex(v);
-        }
-        for (std::size_t i = 1; i < walk_.size(); ++i)
-            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-        si_->freeState(s);
+        walkPlannerData(si_, walk_, walkState_ == WalkState::ReachedGoal, data);
     }
 
     bool BacterialForaging::halt() const
@@ -541,20 +524,8 @@ namespace mhplan
 
     bool BacterialForaging::prepareOnline()
     {
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        if (!walkEndpoints(pis_, getName(), robot_, goal_))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
-        robot_ = statePosition(start);
-        goal_ = statePosition(goal);
         seedUsed_ = getSeed();
         if (seedUsed_ != 0)
             rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seedUsed_));
@@ -586,17 +557,9 @@ namespace mhplan
     void BacterialForaging::finishWalkIfAtGoal()
     {
         const double tolerance = goalTolerance_ > 0.0 ? goalTolerance_ : robotStep_;
-        if (distance(robot_, goal_) > tolerance)
-            return;
-        if (robot_ != goal_)
-        {
-            setStatePosition(stateA_, robot_);
-            setStatePosition(stateB_, goal_);
-            if (!si_->checkMotion(stateA_, stateB_))
-                return; // keep walking
-            robot_ = goal_;
-            walk_.push_back(goal_);
-        }
+        if (!walkReachGoal(*si_, stateA_, stateB_, walk_, goal_, tolerance))
+            return; // keep walking
+        robot_ = walk_.back();
         walkState_ = WalkState::ReachedGoal;
     }
 
@@ -671,38 +634,16 @@ namespace mhplan
 
     ob::PlannerStatus BacterialForaging::reportOnline()
     {
-        const bool finished = walkState_ != WalkState::Walking;
-        if (walk_.size() < 2 && !finished)
-            return ob::PlannerStatus::TIMEOUT;
-
-        auto path = std::make_shared<og::PathGeometric>(si_);
-        for (const Vec2 &p : walk_)
-        {
-            setStatePosition(stateA_, p);
-            path->append(stateA_);
-        }
-        bool exact = walkState_ == WalkState::ReachedGoal;
-        // Every step passed checkMotion when it was taken; check again so that the report cannot lie.
-        for (std::size_t i = 1; exact && i < path->getStateCount(); ++i)
-            exact = si_->checkMotion(path->getState(i - 1), path->getState(i));
-
-        ob::PlannerSolution solution(path);
-        solution.setPlannerName(getName());
-        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
-        if (exact)
-        {
-            const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
-            onlineBestCost_ = cost.value();
-            if (opt)
-                solution.setOptimized(opt, cost, opt->isSatisfied(cost));
-        }
-        else
-            solution.setApproximate(std::max(distance(robot_, goal_), 1e-12));
-        pdef_->addSolutionPath(solution);
+        const ob::PlannerStatus status =
+            reportWalk(si_, pdef_, getName(), walk_, walkState_ != WalkState::Walking,
+                       walkState_ == WalkState::ReachedGoal, goal_, onlineBestCost_);
+        if (status == ob::PlannerStatus::TIMEOUT)
+            return status;
+        const bool exact = status == ob::PlannerStatus::EXACT_SOLUTION;
         OMPL_INFORM("%s: %zu robot positions, %lu J evaluations, %s", getName().c_str(), walk_.size(),
                     onlineEvaluations_.load(),
                     exact ? "goal reached"
                           : (walkState_ == WalkState::Walking ? "walking" : "walk ended before the goal"));
-        return exact ? ob::PlannerStatus::EXACT_SOLUTION : ob::PlannerStatus::APPROXIMATE_SOLUTION;
+        return status;
     }
 } // namespace mhplan

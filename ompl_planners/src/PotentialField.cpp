@@ -3,7 +3,9 @@
 #include "PopulationPlanner.h" // checkParameterRange
 #include "Validity.h"
 
+#include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
 #include <algorithm>
@@ -221,5 +223,95 @@ namespace mhplan
             repulsion += repulsionTerm(d);
         }
         return attraction(p) + repulsion;
+    }
+
+    bool walkEndpoints(ob::PlannerInputStates &pis, const std::string &who, Vec2 &start, Vec2 &goal)
+    {
+        const ob::State *s = pis.nextStart();
+        if (s == nullptr)
+        {
+            OMPL_ERROR("%s: no valid start state", who.c_str());
+            return false;
+        }
+        const ob::State *g = pis.nextGoal();
+        if (g == nullptr)
+        {
+            OMPL_ERROR("%s: no goal state could be sampled", who.c_str());
+            return false;
+        }
+        start = statePosition(s);
+        goal = statePosition(g);
+        return true;
+    }
+
+    bool walkReachGoal(const ob::SpaceInformation &si, ob::State *a, ob::State *b, std::vector<Vec2> &walk,
+                       const Vec2 &goal, double tolerance)
+    {
+        const Vec2 robot = walk.back();
+        if (distance(robot, goal) > tolerance)
+            return false;
+        if (robot != goal)
+        {
+            setStatePosition(a, robot);
+            setStatePosition(b, goal);
+            if (!si.checkMotion(a, b))
+                return false;
+            walk.push_back(goal);
+        }
+        return true;
+    }
+
+    ob::PlannerStatus reportWalk(const ob::SpaceInformationPtr &si, const ob::ProblemDefinitionPtr &pdef,
+                                 const std::string &who, const std::vector<Vec2> &walk, bool finished,
+                                 bool reachedGoal, const Vec2 &goal, std::atomic<double> &bestCost)
+    {
+        if (walk.size() < 2 && !finished)
+            return ob::PlannerStatus::TIMEOUT;
+        auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
+        ob::State *s = si->allocState();
+        for (const Vec2 &p : walk)
+        {
+            setStatePosition(s, p);
+            path->append(s);
+        }
+        si->freeState(s);
+        bool exact = reachedGoal;
+        // Every step passed checkMotion when it was taken; check again so that the report cannot lie.
+        for (std::size_t i = 1; exact && i < path->getStateCount(); ++i)
+            exact = si->checkMotion(path->getState(i - 1), path->getState(i));
+        ob::PlannerSolution solution(path);
+        solution.setPlannerName(who);
+        const ob::OptimizationObjectivePtr &opt = pdef->getOptimizationObjective();
+        if (exact)
+        {
+            const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
+            bestCost = cost.value();
+            if (opt)
+                solution.setOptimized(opt, cost, opt->isSatisfied(cost));
+        }
+        else
+            solution.setApproximate(std::max(distance(walk.back(), goal), 1e-12));
+        pdef->addSolutionPath(solution);
+        return exact ? ob::PlannerStatus::EXACT_SOLUTION : ob::PlannerStatus::APPROXIMATE_SOLUTION;
+    }
+
+    void walkPlannerData(const ob::SpaceInformationPtr &si, const std::vector<Vec2> &walk, bool reachedGoal,
+                         ob::PlannerData &data)
+    {
+        ob::State *s = si->allocState();
+        for (std::size_t i = 0; i < walk.size(); ++i)
+        {
+            setStatePosition(s, walk[i]);
+            const ob::PlannerDataVertex v(s);
+            if (i == 0)
+                data.addStartVertex(v);
+            else if (i + 1 == walk.size() && reachedGoal)
+                data.addGoalVertex(v);
+            else
+                data.addVertex(v);
+        }
+        for (std::size_t i = 1; i < walk.size(); ++i)
+            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
+        si->freeState(s);
     }
 } // namespace mhplan
