@@ -35,6 +35,8 @@ namespace mhplan
     {
       public:
         explicit LRSMA(const ompl::base::SpaceInformationPtr &si);
+        /** \brief The same algorithm under another name (e.g. "LRSMA-GMS"). */
+        LRSMA(const ompl::base::SpaceInformationPtr &si, const std::string &name);
 
         /** \brief Levy exponent beta (0.1..1.99). */
         void setLevyBeta(double beta);

@@ -27,13 +27,21 @@ namespace mhplan
     {
       public:
         explicit MountainGazelle(const ompl::base::SpaceInformationPtr &si);
+        /** \brief The same algorithm under another name (e.g. "MGO-GMS"). */
+        MountainGazelle(const ompl::base::SpaceInformationPtr &si, const std::string &name);
 
       protected:
         bool initialisePopulation() override;
         bool iterate(unsigned int t) override;
         void clearPopulation() override;
+        bool populationView(double *&x, double *&fitness) override;
+        bool supportsGmsOperators() const override { return true; }
+        /** \brief Sorts the population again and takes male_gazelle from it. */
+        void populationChanged() override;
 
       private:
+        /** \brief Stable sort of the N population rows by fitness; male_gazelle = the first. */
+        void sortPopulation();
         double *row(std::vector<double> &pop, unsigned int i)
         {
             return pop.data() + std::size_t(i) * dimension();

@@ -11,11 +11,14 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace mhplan
 {
+    class PathOperators;
+
     /** \brief Throws std::invalid_argument "parameter 'name' must be in [lo, hi]; got value" unless
         lo <= value <= hi (shared by every planner's setters). */
     void checkParameterRange(const char *param, double value, double lo, double hi);
@@ -65,7 +68,32 @@ namespace mhplan
         and \c fitness \c evaluations are atomics, safe to read from the benchmark's sampling thread.
 
         Randomness comes only from the member ompl::RNG (seeded from OMPL's global seed at construction, or
-        from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation. */
+        from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation.
+
+        Switchable [GMS] operators (ALGORITHMS.md 1.5; all off by default, and then no operator code runs and
+        no random number is drawn, so the faithful algorithms are bit-identical to their papers' versions):
+        \c gms_repair (0/1: node repair + line-segment repair), \c gms_revise (0/1), \c gms_simplify (0/1),
+        \c gms_improve (0/1: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
+        ([0, 1], 0 = off). They act on the fixed-length waypoint encoding as follows, after every completed
+        iteration of the algorithm:
+        - for the iteration's best individual (scope "best") or for every individual (scope "all"): decode
+          it (the polyline start, waypoints, goal; with the spline decoding, the polyline through the spline
+          samples), apply the switched-on operators in the GA's order (repair, revision, simplification,
+          node improvement) to that list of points, re-encode it into m waypoints and evaluate it with the
+          normal fitness (one counted evaluation). Re-encoding: when the operated polyline has c <= m interior
+          points they are kept and m - c points are added by halving the longest segment repeatedly (with
+          the polyline decoding this is the same geometric path); when c > m, m points at equal arc length
+          along it. The result replaces the individual only when its fitness is strictly better (greedy),
+          so the algorithm's own dynamics are untouched apart from better individuals;
+        - replacement: the ceil(fraction N) worst individuals (never the best one) are redrawn uniformly in
+          the bounds (node-repaired first when \c gms_repair is on) and evaluated.
+        The algorithm is then told (populationChanged()) so that it refreshes its elite / ranking. The
+        termination condition is tested before every evaluation of this step; when it fires the step stops
+        there (what was already accepted stays; the iteration counts as completed). Only algorithms that
+        expose their population (populationView(): SMA, LRSMA, MGO) support the switches, and only in the
+        plane (the operators are planar, see PathOperators): setup() refuses the switches otherwise, naming
+        the parameter. Buffers: the operated point list, the re-encoded candidate and the ranking are members
+        reserved once; the operators' inserts into the point list may grow it the first time only. */
     class PopulationPlanner : public ompl::base::Planner
     {
       public:
@@ -129,6 +157,31 @@ namespace mhplan
         void setSeed(unsigned long seed);
         unsigned long getSeed() const { return seed_; }
 
+        /** \brief [GMS] node repair + line-segment repair on the operated individuals (0 = off, 1 = on). */
+        void setGmsRepair(unsigned int on);
+        unsigned int getGmsRepair() const { return gmsRepair_ ? 1u : 0u; }
+        /** \brief [GMS] revision (removal of repeated nodes and loops) (0 = off, 1 = on). */
+        void setGmsRevise(unsigned int on);
+        unsigned int getGmsRevise() const { return gmsRevise_ ? 1u : 0u; }
+        /** \brief [GMS] simplification (0 = off, 1 = on). */
+        void setGmsSimplify(unsigned int on);
+        unsigned int getGmsSimplify() const { return gmsSimplify_ ? 1u : 0u; }
+        /** \brief [GMS] node improvement (0 = off, 1 = on). */
+        void setGmsImprove(unsigned int on);
+        unsigned int getGmsImprove() const { return gmsImprove_ ? 1u : 0u; }
+        /** \brief Which individuals the path operators act on: "best" (the iteration's best) or "all". */
+        void setGmsScope(const std::string &scope);
+        std::string getGmsScope() const { return gmsScopeAll_ ? "all" : "best"; }
+        /** \brief [GMS] replacement: fraction of the population (the worst) redrawn each iteration (0..1,
+            0 = off). */
+        void setGmsReplaceFraction(double f);
+        double getGmsReplaceFraction() const { return gmsReplaceFraction_; }
+        /** \brief True when any [GMS] operator switch is on. */
+        bool gmsOperatorsEnabled() const
+        {
+            return gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ || gmsReplaceFraction_ > 0.0;
+        }
+
         /** \brief Objective cost of the best feasible path (infinity before one exists). */
         double bestCost() const { return bestCostValue_.load(); }
         /** \brief Completed iterations since the last clear(). */
@@ -152,6 +205,20 @@ namespace mhplan
         virtual bool iterate(unsigned int t) = 0;
         /** \brief Forget the algorithm's state (called by clear()). */
         virtual void clearPopulation() = 0;
+
+        /** \brief The population for the [GMS] operators: \e x = N rows of dimension() values, \e fitness =
+            their N fitness values, both writable; false (the default) when the algorithm does not expose
+            one, and then setup() refuses the gms_* switches. Called only after initialisePopulation(). */
+        virtual bool populationView(double *&x, double *&fitness)
+        {
+            x = fitness = nullptr;
+            return false;
+        }
+        /** \brief True when the algorithm implements populationView() (checked by setup()). */
+        virtual bool supportsGmsOperators() const { return false; }
+        /** \brief Called after the [GMS] operators changed individuals of populationView() (refresh the
+           elite, the ranking). */
+        virtual void populationChanged() {}
 
         /** \brief True when the current solve() must stop (tests the termination condition). */
         bool stopRequested() const { return ptc_ == nullptr || (*ptc_)(); }
@@ -207,6 +274,14 @@ namespace mhplan
         void reportSolution(bool &exact, bool &approximate);
         void fireIntermediate();
         void freePlannerDataStates();
+        /** \brief The [GMS] operator step after an iteration (see the class doc); false when interrupted. */
+        bool applyGmsOperators();
+        /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */
+        bool operateOn(double *x, double &fx);
+        /** \brief Re-encode gmsPath_ into m waypoints in gmsCandidate_. */
+        void encodePath();
+        /** \brief setup()'s check of the gms_* switches (refuseSetup() naming the parameter). */
+        void checkGmsSwitches();
 
         unsigned int populationSize_;
         unsigned int iterations_;
@@ -245,6 +320,14 @@ namespace mhplan
         /** \brief States handed to PlannerData by getPlannerData(), freed by clear(). */
         mutable std::vector<ompl::base::State *> plannerDataStates_;
         bool improved_{false};
+
+        bool gmsRepair_{false}, gmsRevise_{false}, gmsSimplify_{false}, gmsImprove_{false};
+        bool gmsScopeAll_{false};
+        double gmsReplaceFraction_{0.0};
+        std::unique_ptr<PathOperators> gmsOps_;
+        std::vector<Vec2> gmsPath_;
+        std::vector<double> gmsCandidate_;
+        std::vector<unsigned int> gmsOrder_;
 
         std::atomic<double> bestCostValue_;
         std::atomic<unsigned long> iterationCount_{0};

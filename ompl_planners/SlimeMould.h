@@ -30,6 +30,9 @@ namespace mhplan
     {
       public:
         explicit SlimeMould(const ompl::base::SpaceInformationPtr &si);
+        /** \brief The same algorithm under another name (e.g. "SMA-GMS", so benchmark logs tell variants
+            apart). */
+        SlimeMould(const ompl::base::SpaceInformationPtr &si, const std::string &name);
 
         /** \brief Probability z of a random restart of one slime mould (0..1). */
         void setZ(double z);
@@ -42,6 +45,10 @@ namespace mhplan
         bool initialisePopulation() override;
         bool iterate(unsigned int t) override;
         void clearPopulation() override;
+        bool populationView(double *&x, double *&fitness) override;
+        bool supportsGmsOperators() const override { return true; }
+        /** \brief Takes an improved individual into DF / X_best. */
+        void populationChanged() override;
 
         /** \brief One SMA update and its evaluation round (commits only when not interrupted). */
         bool slimeMouldStep(unsigned int t);

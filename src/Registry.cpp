@@ -48,6 +48,22 @@ namespace mhplan
             { return std::make_shared<P>(si); };
         }
 
+        /** \brief A population planner named \e name with the [GMS] repair, simplification and node
+            improvement on every individual after each iteration, and \e waypoints waypoints. */
+        template <typename P> PlannerAllocator gmsVariant(const std::string &name, unsigned int waypoints)
+        {
+            return [name, waypoints](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+            {
+                auto p = std::make_shared<P>(si, name);
+                p->setGmsRepair(1);
+                p->setGmsSimplify(1);
+                p->setGmsImprove(1);
+                p->setGmsScope("all");
+                p->setWaypoints(waypoints);
+                return p;
+            };
+        }
+
         bool parseDouble(const std::string &s, double &out)
         {
             if (s.empty())
@@ -121,6 +137,16 @@ namespace mhplan
                omplAllocator<LRSMA>()});
         r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
                omplAllocator<MountainGazelle>()});
+        r.add({"SMA-GMS", "mhplan",
+               "SMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
+               gmsVariant<SlimeMould>("SMA-GMS", 3)});
+        r.add({"LRSMA-GMS", "mhplan",
+               "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
+               "5 waypoints",
+               gmsVariant<LRSMA>("LRSMA-GMS", 5)});
+        r.add({"MGO-GMS", "mhplan",
+               "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
+               gmsVariant<MountainGazelle>("MGO-GMS", 3)});
         r.add(
             {"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", omplAllocator<Genetic>()});
     }

@@ -13,8 +13,10 @@ namespace ob = ompl::base;
 namespace mhplan
 {
 
-    LRSMA::LRSMA(const ob::SpaceInformationPtr &si)
-        : SlimeMould(si, "LRSMA", PopulationDefaults{30, 30, 3, PathDecoding::Spline})
+    LRSMA::LRSMA(const ob::SpaceInformationPtr &si) : LRSMA(si, "LRSMA") {}
+
+    LRSMA::LRSMA(const ob::SpaceInformationPtr &si, const std::string &name)
+        : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Spline})
     {
         declareParam<double>("levy_beta", this, &LRSMA::setLevyBeta, &LRSMA::getLevyBeta, "0.1:0.01:1.99");
         declareParam<double>("levy_step", this, &LRSMA::setLevyStep, &LRSMA::getLevyStep, "0.:0.001:1.");

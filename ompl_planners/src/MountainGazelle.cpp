@@ -8,8 +8,10 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
-    MountainGazelle::MountainGazelle(const ob::SpaceInformationPtr &si)
-        : PopulationPlanner(si, "MGO", PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
+    MountainGazelle::MountainGazelle(const ob::SpaceInformationPtr &si) : MountainGazelle(si, "MGO") {}
+
+    MountainGazelle::MountainGazelle(const ob::SpaceInformationPtr &si, const std::string &name)
+        : PopulationPlanner(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
     {
     }
 
@@ -41,6 +43,13 @@ namespace mhplan
             poolFit_[i] = evaluate(row(pool_, i));
         }
         // Sort the population and take the male gazelle.
+        sortPopulation();
+        return true;
+    }
+
+    void MountainGazelle::sortPopulation()
+    {
+        const unsigned int n = getPopulationSize(), d = dimension();
         std::iota(order_.begin(), order_.begin() + n, 0u);
         std::stable_sort(order_.begin(), order_.begin() + n,
                          [&](unsigned int a, unsigned int b) { return poolFit_[a] < poolFit_[b]; });
@@ -52,7 +61,18 @@ namespace mhplan
         std::copy(sorted_.begin(), sorted_.end(), pool_.begin());
         std::copy(sortedFit_.begin(), sortedFit_.end(), poolFit_.begin());
         std::copy_n(pool_.begin(), d, male_.begin());
-        return true;
+    }
+
+    bool MountainGazelle::populationView(double *&x, double *&fitness)
+    {
+        x = pool_.data();
+        fitness = poolFit_.data();
+        return !pool_.empty();
+    }
+
+    void MountainGazelle::populationChanged()
+    {
+        sortPopulation();
     }
 
     const double *MountainGazelle::cofR()

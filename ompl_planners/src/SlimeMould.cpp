@@ -15,6 +15,11 @@ namespace mhplan
     {
     }
 
+    SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si, const std::string &name)
+        : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
+    {
+    }
+
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si, const std::string &name,
                            const PopulationDefaults &defaults)
         : PopulationPlanner(si, name, defaults)
@@ -65,6 +70,18 @@ namespace mhplan
         }
         updateBest();
         return true;
+    }
+
+    bool SlimeMould::populationView(double *&x, double *&fitness)
+    {
+        x = x_.data();
+        fitness = fit_.data();
+        return !x_.empty();
+    }
+
+    void SlimeMould::populationChanged()
+    {
+        updateBest();
     }
 
     void SlimeMould::updateBest()
