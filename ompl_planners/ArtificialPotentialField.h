@@ -121,6 +121,9 @@ namespace mhplan
         std::vector<std::pair<double, unsigned int>> candidates_;
         ompl::base::State *stateA_{nullptr};
         ompl::base::State *stateB_{nullptr};
+        /** \brief The states handed to PlannerData by getPlannerData() (it keeps pointers), freed by clear().
+         */
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
 
         std::atomic<double> bestCostValue_;
         std::atomic<unsigned long> steps_{0};

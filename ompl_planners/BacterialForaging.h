@@ -244,6 +244,9 @@ namespace mhplan
         Vec2 runBest_;
         ompl::base::State *stateA_{nullptr};
         ompl::base::State *stateB_{nullptr};
+        /** \brief The states handed to PlannerData by getPlannerData() (it keeps pointers), freed by clear().
+         */
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
 
         std::atomic<double> onlineBestCost_;
         std::atomic<unsigned long> onlineSteps_{0};

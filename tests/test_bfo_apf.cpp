@@ -677,3 +677,68 @@ TEST(BfoApfFieldSettings, DeclaresValidatesAndNotifies)
     EXPECT_EQ(owner.getRepulsion(), "nearest");
     EXPECT_EQ(owner.changes, 5);
 }
+
+TEST(BfoApfWalkHelpers, ReachGoalReportAndPlannerData)
+{
+    // [0,10]^2 with a lambda checker: a disc of radius 2 at (5, 5).
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 10.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ob::State *s)
+                                { return distance(statePosition(s), Vec2(5.0, 5.0)) >= 2.0; });
+    si->setStateValidityCheckingResolution(0.001);
+    si->setup();
+    ob::State *a = si->allocState();
+    ob::State *b = si->allocState();
+
+    // Goal closing: within tolerance and a free segment appends the goal; otherwise nothing changes.
+    std::vector<Vec2> walk{{1.0, 1.0}};
+    EXPECT_FALSE(walkReachGoal(*si, a, b, walk, {3.0, 1.0}, 1.0));
+    EXPECT_EQ(walk.size(), 1u);
+    EXPECT_TRUE(walkReachGoal(*si, a, b, walk, {1.5, 1.0}, 1.0));
+    ASSERT_EQ(walk.size(), 2u);
+    EXPECT_EQ(walk.back(), Vec2(1.5, 1.0));
+    EXPECT_TRUE(walkReachGoal(*si, a, b, walk, {1.5, 1.0}, 1.0)); // on the goal already: no new entry
+    EXPECT_EQ(walk.size(), 2u);
+    std::vector<Vec2> blocked{{2.5, 5.0}};
+    EXPECT_FALSE(walkReachGoal(*si, a, b, blocked, {7.5, 5.0}, 10.0)); // the segment crosses the disc
+    EXPECT_EQ(blocked.size(), 1u);
+    si->freeState(a);
+    si->freeState(b);
+
+    // Reporting: TIMEOUT before the first step, exact with the path length, approximate with the distance.
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    std::atomic<double> best{std::numeric_limits<double>::infinity()};
+    const std::vector<Vec2> one{{1.0, 1.0}};
+    EXPECT_EQ(reportWalk(si, pdef, "W", one, false, false, {1.5, 1.0}, best), ob::PlannerStatus::TIMEOUT);
+    EXPECT_FALSE(pdef->hasSolution());
+    EXPECT_EQ(reportWalk(si, pdef, "W", walk, true, false, {4.5, 1.0}, best),
+              ob::PlannerStatus::APPROXIMATE_SOLUTION);
+    EXPECT_NEAR(pdef->getSolutionDifference(), 3.0, 1e-12);
+    EXPECT_TRUE(std::isinf(best.load()));
+    EXPECT_EQ(reportWalk(si, pdef, "W", walk, true, true, {1.5, 1.0}, best),
+              ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_DOUBLE_EQ(best.load(), 0.5);
+    EXPECT_TRUE(pdef->hasExactSolution());
+    const std::vector<Vec2> through{{2.5, 5.0}, {7.5, 5.0}}; // reached, but a segment is invalid: approximate
+    auto pdef2 = std::make_shared<ob::ProblemDefinition>(si);
+    EXPECT_EQ(reportWalk(si, pdef2, "W", through, true, true, {7.5, 5.0}, best),
+              ob::PlannerStatus::APPROXIMATE_SOLUTION);
+
+    // Planner data: start vertex, goal vertex only when the goal was reached, one edge per step.
+    const std::vector<Vec2> three{{1.0, 1.0}, {1.5, 1.0}, {2.0, 1.0}};
+    for (const bool reached : {true, false})
+    {
+        ob::PlannerData data(si);
+        std::vector<ob::State *> owned;
+        walkPlannerData(si, three, reached, data, owned);
+        EXPECT_EQ(data.numVertices(), 3u);
+        EXPECT_EQ(data.numEdges(), 2u);
+        EXPECT_EQ(data.numStartVertices(), 1u);
+        EXPECT_EQ(data.numGoalVertices(), reached ? 1u : 0u);
+        ASSERT_EQ(owned.size(), 3u);
+        EXPECT_EQ(statePosition(data.getVertex(2).getState()), Vec2(2.0, 1.0));
+        freeStates(*si, owned);
+        EXPECT_TRUE(owned.empty());
+    }
+}

@@ -65,6 +65,7 @@ namespace mhplan
             si_->freeState(stateA_);
         if (stateB_ != nullptr)
             si_->freeState(stateB_);
+        freeStates(*si_, plannerDataStates_);
     }
 
     void ArtificialPotentialField::fieldChanged()
@@ -138,6 +139,7 @@ namespace mhplan
     void ArtificialPotentialField::clear()
     {
         ob::Planner::clear();
+        freeStates(*si_, plannerDataStates_);
         ready_ = false;
         state_ = State::Descending;
         walk_.clear();
@@ -309,6 +311,6 @@ namespace mhplan
     void ArtificialPotentialField::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        walkPlannerData(si_, walk_, state_ == State::ReachedGoal, data);
+        walkPlannerData(si_, walk_, state_ == State::ReachedGoal, data, plannerDataStates_);
     }
 } // namespace mhplan

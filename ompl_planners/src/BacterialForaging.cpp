@@ -57,6 +57,7 @@ namespace mhplan
             si_->freeState(stateA_);
         if (stateB_ != nullptr)
             si_->freeState(stateB_);
+        freeStates(*si_, plannerDataStates_);
     }
 
     void BacterialForaging::declareBfoParams()
@@ -228,6 +229,7 @@ namespace mhplan
     void BacterialForaging::clear()
     {
         PopulationPlanner::clear(); // calls clearPopulation()
+        freeStates(*si_, plannerDataStates_);
         onlineReady_ = false;
         runActive_ = false;
         walk_.clear();
@@ -253,7 +255,7 @@ namespace mhplan
             return;
         }
         ob::Planner::getPlannerData(data);
-        walkPlannerData(si_, walk_, walkState_ == WalkState::ReachedGoal, data);
+        walkPlannerData(si_, walk_, walkState_ == WalkState::ReachedGoal, data, plannerDataStates_);
     }
 
     bool BacterialForaging::halt() const

@@ -296,11 +296,12 @@ namespace mhplan
     }
 
     void walkPlannerData(const ob::SpaceInformationPtr &si, const std::vector<Vec2> &walk, bool reachedGoal,
-                         ob::PlannerData &data)
+                         ob::PlannerData &data, std::vector<ob::State *> &owned)
     {
-        ob::State *s = si->allocState();
         for (std::size_t i = 0; i < walk.size(); ++i)
         {
+            ob::State *s = si->allocState();
+            owned.push_back(s);
             setStatePosition(s, walk[i]);
             const ob::PlannerDataVertex v(s);
             if (i == 0)
@@ -312,6 +313,12 @@ namespace mhplan
         }
         for (std::size_t i = 1; i < walk.size(); ++i)
             data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-        si->freeState(s);
+    }
+
+    void freeStates(const ob::SpaceInformation &si, std::vector<ob::State *> &owned)
+    {
+        for (ob::State *s : owned)
+            si.freeState(s);
+        owned.clear();
     }
 } // namespace mhplan
