@@ -661,8 +661,10 @@ namespace mhplan
                     best = i;
             for (unsigned int i = 0; i < n; ++i)
                 gmsOrder_[i] = i;
-            std::stable_sort(gmsOrder_.begin(), gmsOrder_.end(),
-                             [f](unsigned int a, unsigned int b) { return f[a] > f[b]; });
+            // std::sort with an index tie-break: deterministic, and unlike std::stable_sort it allocates no
+            // temporary buffer.
+            std::sort(gmsOrder_.begin(), gmsOrder_.end(),
+                      [f](unsigned int a, unsigned int b) { return f[a] > f[b] || (f[a] == f[b] && a < b); });
             const auto count = std::min<unsigned int>(
                 n - 1, static_cast<unsigned int>(std::ceil(gmsReplaceFraction_ * n - 1e-9)));
             for (unsigned int k = 0, done = 0; k < n && done < count; ++k)
