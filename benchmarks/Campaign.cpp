@@ -130,12 +130,22 @@ namespace mhplan::bench
                     p.planner = r.text(n[i], field);
                 else
                 {
-                    r.allowKeys(n[i], field, {"planner", "name", "params"});
+                    r.allowKeys(n[i], field, {"planner", "name", "params", "progress"});
                     if (!n[i]["planner"].IsDefined())
                         r.fail(n[i], field + ".planner", "missing");
                     p.planner = r.text(n[i]["planner"], field + ".planner");
                     if (n[i]["name"].IsDefined())
                         p.displayName = r.text(n[i]["name"], field + ".name");
+                    const YAML::Node progress = n[i]["progress"];
+                    if (progress.IsDefined() && !progress.IsNull())
+                    {
+                        if (!progress.IsSequence() || progress.size() == 0)
+                            r.fail(progress, field + ".progress",
+                                   "expected a non-empty list of progress property names");
+                        for (std::size_t k = 0; k < progress.size(); ++k)
+                            p.progress.push_back(
+                                r.text(progress[k], field + ".progress[" + std::to_string(k) + "]"));
+                    }
                     const YAML::Node params = n[i]["params"];
                     if (params.IsDefined() && !params.IsNull())
                     {
@@ -324,6 +334,8 @@ namespace mhplan::bench
             common << "planner " << p.displayName << " " << p.planner;
             for (const auto &kv : p.params)
                 common << " " << kv.first << "=" << kv.second;
+            for (const auto &name : p.progress)
+                common << " progress:" << name;
             common << "\n";
         }
 

@@ -22,6 +22,10 @@ namespace mhplan::bench
         std::string planner;
         /** \brief Parameter overrides, validated by the registry. */
         std::map<std::string, std::string> params;
+        /** \brief Progress properties to sample, by name without the type ("best cost"); empty: all the
+            planner declares. OMPL 1.5.2's BIT* crashes now and then when some of its progress properties are
+            read while it plans. */
+        std::vector<std::string> progress;
     };
 
     /** \brief A world of a campaign and the queries to run on it. */

@@ -239,20 +239,27 @@ namespace mhplan::bench
             std::streambuf *old_;
         };
 
-        /** Runs another planner unchanged (same name, parameters, specs and progress properties) but hands
-            OMPL's benchmark its planner data only when asked: exporting the roadmap of a PRM* run costs about
-            as much time as the run itself. */
+        /** Runs another planner unchanged (same name, parameters, specs) but hands OMPL's benchmark its
+           planner data only when asked (exporting the roadmap of a PRM* run costs about as much time as the
+           run itself) and only the progress properties the campaign selects. */
         class PlannerDataSwitch : public ob::Planner
         {
           public:
-            PlannerDataSwitch(ob::PlannerPtr inner, bool plannerData)
+            PlannerDataSwitch(ob::PlannerPtr inner, bool plannerData,
+                              const std::vector<std::string> &progress)
                 : ob::Planner(inner->getSpaceInformation(), inner->getName()), inner_(std::move(inner)),
                   plannerData_(plannerData)
             {
                 specs_ = inner_->getSpecs();
                 params_ = inner_->params();
                 for (const auto &kv : inner_->getPlannerProgressProperties())
-                    addPlannerProgressProperty(kv.first, kv.second);
+                {
+                    // "best cost REAL" is selected by "best cost".
+                    const std::string name = kv.first.substr(0, kv.first.find_last_of(' '));
+                    if (progress.empty() ||
+                        std::find(progress.begin(), progress.end(), name) != progress.end())
+                        addPlannerProgressProperty(kv.first, kv.second);
+                }
             }
             void setProblemDefinition(const ob::ProblemDefinitionPtr &pdef) override
             {
@@ -308,7 +315,7 @@ namespace mhplan::bench
                 const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
                 ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
                 inner->setName(spec.displayName);
-                auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData);
+                auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
                 ss->setPlanner(planner);
 
                 ot::Benchmark benchmark(*ss, xs.experiment->name);
@@ -1254,7 +1261,7 @@ namespace mhplan::bench
                 const std::string log = logFile(campaign, e);
                 if (!logIsComplete(log, e.configHash))
                     continue;
-                const std::string key = fs::path(log).filename().string();
+                const std::string key = fs::absolute(log).lexically_normal().string();
                 const std::string content = fingerprint(readAll(log));
                 const auto it = merged.find(key);
                 if (it != merged.end() && it->second.first == content)
@@ -1317,7 +1324,7 @@ namespace mhplan::bench
         for (std::size_t i = 0; i < pending.size(); ++i)
         {
             const Experiment &e = *pending[i].experiment;
-            record.bind(1, fs::path(pending[i].log).filename().string());
+            record.bind(1, fs::absolute(pending[i].log).lexically_normal().string());
             record.bind(2, e.name);
             record.bind(3, ids[i]);
             record.bind(4, pending[i].content);

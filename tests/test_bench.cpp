@@ -85,8 +85,8 @@ namespace
         fs::create_directories(dir);
         c.database = (dir / "tiny.db").string();
         c.logDir = (dir / "logs").string();
-        c.planners.push_back({"CrashAbort", "CrashTest", {{"mode", "abort"}}});
-        c.planners.push_back({"CrashThrow", "CrashTest", {{"mode", "throw"}}});
+        c.planners.push_back({"CrashAbort", "CrashTest", {{"mode", "abort"}}, {}});
+        c.planners.push_back({"CrashThrow", "CrashTest", {{"mode", "throw"}}, {}});
         return c;
     }
 
@@ -197,6 +197,12 @@ TEST(Campaign, ParsesAndRefusesBadInput)
     EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\ntime_limit: x\n").find("field 'time_limit'"),
               std::string::npos);
     EXPECT_NE(error("planners: [RRT]\n").find("field 'worlds': missing"), std::string::npos);
+    EXPECT_NE(
+        error("worlds: [a]\nplanners:\n  - {planner: RRT, progress: best}\n").find("planners[0].progress"),
+        std::string::npos);
+    const Campaign p =
+        parseCampaign("worlds: [a]\nplanners:\n  - {planner: BITstar, progress: [best cost]}\n", "p.yaml");
+    EXPECT_EQ(p.planners[0].progress, std::vector<std::string>{"best cost"});
     EXPECT_NE(error("worlds: [a]\nplanners:\n  - {planner: RRT, name: 'a b'}\n").find("blanks"),
               std::string::npos);
 }
@@ -227,9 +233,9 @@ TEST(Campaign, SeedsAndShardsAreDeterministic)
 TEST(Campaign, RefusesUnknownPlannersAndParametersBeforeRunning)
 {
     Campaign c = tinyCampaign("refuse");
-    c.planners.push_back({"X", "NoSuchPlanner", {}});
+    c.planners.push_back({"X", "NoSuchPlanner", {}, {}});
     EXPECT_THROW(runCampaign(c, options()), InputError);
-    c.planners.back() = {"X", "GA", {{"no_such_parameter", "1"}}};
+    c.planners.back() = {"X", "GA", {{"no_such_parameter", "1"}}, {}};
     try
     {
         runCampaign(c, options());
