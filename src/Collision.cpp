@@ -61,7 +61,10 @@ namespace mhplan
     {
         if (!segmentInBounds(a, b))
             return false;
-        const Box sb = boundingBox({a, b}).inflated(radius_);
+        // Built by hand: boundingBox() takes a vector, and this is the hot path (no heap allocation).
+        const Box sb =
+            Box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)}.inflated(
+                radius_);
         for (const auto &c : circles_)
         {
             if (pointSegmentDistance(c.center, a, b) < c.radius + radius_)

@@ -228,9 +228,13 @@ namespace mhplan
     namespace
     {
         /** Parameters t in [0, 1] where [a, b] meets the polygon's boundary (overlap ends included). */
-        std::vector<double> boundaryCrossings(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly)
+        /** Fills \e ts (cleared first; callers pass thread-local buffers so hot paths do not allocate). */
+        void boundaryCrossings(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly,
+                               std::vector<double> &ts)
         {
-            std::vector<double> ts{0.0, 1.0};
+            ts.clear();
+            ts.push_back(0.0);
+            ts.push_back(1.0);
             const Vec2 d = b - a;
             const double len2 = squaredNorm(d);
             const std::size_t n = poly.size();
@@ -259,13 +263,13 @@ namespace mhplan
                 }
             }
             std::sort(ts.begin(), ts.end());
-            return ts;
         }
     } // namespace
 
     bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly)
     {
-        const std::vector<double> ts = boundaryCrossings(a, b, poly);
+        thread_local std::vector<double> ts;
+        boundaryCrossings(a, b, poly, ts);
         const Vec2 d = b - a;
         auto strictlyInside = [&](const Vec2 &p)
         { return pointInPolygon(p, poly) && pointPolygonBoundaryDistance(p, poly) > 0.0; };
@@ -288,7 +292,8 @@ namespace mhplan
             return outside;
         const Vec2 d = b - a;
         auto f = [&](double t) { return pointPolygonSignedDistance(a + d * t, poly); };
-        std::vector<double> candidates = boundaryCrossings(a, b, poly);
+        thread_local std::vector<double> candidates;
+        boundaryCrossings(a, b, poly, candidates);
         double best = std::numeric_limits<double>::infinity();
         if (polygonIsConvex(poly))
         {
@@ -297,7 +302,9 @@ namespace mhplan
             // part is at a boundary crossing or where two s_i are equal.
             const std::size_t n = poly.size();
             const double orient = signedArea2(poly) >= 0.0 ? 1.0 : -1.0;
-            std::vector<double> s0(n), s1(n);
+            thread_local std::vector<double> s0, s1;
+            s0.resize(n);
+            s1.resize(n);
             for (std::size_t i = 0; i < n; ++i)
             {
                 const Vec2 &c = poly[i];

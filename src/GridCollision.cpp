@@ -596,7 +596,8 @@ namespace mhplan
         {
             double cx, ex, cy, ey; // dx(t) = cx + ex t, dy(t) = cy + ey t
         };
-        std::vector<Quad> cand;
+        thread_local std::vector<Quad> cand; // reused: no heap allocation per query once warm
+        cand.clear();
         auto addCell = [&](int k, int l)
         {
             Quad q{0.0, 0.0, 0.0, 0.0};
@@ -693,7 +694,8 @@ namespace mhplan
         const Vec2 d = b - a;
         // Breakpoints where the segment crosses a grid line (lines outside the grid need no breaks: there
         // every free cell lies on one side).
-        std::vector<double> ts{0.0, 1.0};
+        thread_local std::vector<double> ts; // reused: no heap allocation per query once warm
+        ts.assign({0.0, 1.0});
         if (d.x != 0.0)
         {
             const int k0 = std::max(0, locateX(std::min(a.x, b.x)));
