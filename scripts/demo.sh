@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# Install what is missing, build, and run the main job: every shipped seed world planned with a set of
-# planners, printed as one comparison table (later: the full benchmark campaign and its report).
+# Install what is missing, build, and run the main job: the default benchmark campaign (every shipped seed
+# world x the five metaheuristics in their papers' settings x RRT*, Informed RRT*, PRM*, BIT* and A*) into
+# results/seeds.db (OMPL logs + SQLite, Planner Arena compatible), then the HTML report results/report/.
+# A re-run resumes: finished experiments are skipped. Extra arguments go to 'mhplan bench'.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${MHPLAN_BUILD_DIR:-build}"
 scripts/setup.sh "$BUILD_DIR"
-"$BUILD_DIR/mhplan" compare --time "${MHPLAN_DEMO_TIME:-1.0}" --seed "${MHPLAN_DEMO_SEED:-1}" "$@"
+JOBS=$(nproc 2>/dev/null || echo 2)
+"$BUILD_DIR/mhplan" bench benchmarks/seeds.yaml --jobs "$JOBS" "$@"
+"$BUILD_DIR/mhplan" report results/seeds.db -o results/report >/dev/null
+echo "report: $(pwd)/results/report/index.html"
