@@ -290,6 +290,9 @@ namespace mhplan
     ob::PlannerStatus ArtificialPotentialField::solve(const ob::PlannerTerminationCondition &ptc)
     {
         checkValidity();
+        // The condition is tested before every evaluation of J, the first one (in prepare()) included.
+        if (!ready_ && ptc())
+            return ob::PlannerStatus::TIMEOUT;
         if (!ready_ && !prepare())
             return ob::PlannerStatus::INVALID_START;
         unsigned int done = 0;
