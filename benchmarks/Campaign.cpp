@@ -4,6 +4,7 @@
 #include "Problem.h"
 #include "World.h"
 #include "WorldIO.h"
+#include "YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -19,82 +20,6 @@ namespace mhplan::bench
 {
     namespace
     {
-        /** Errors of the form "file:line: field 'a.b': problem". */
-        class Reader
-        {
-          public:
-            explicit Reader(std::string file) : file_(std::move(file)) {}
-
-            [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
-                                   const std::string &what) const
-            {
-                std::ostringstream msg;
-                msg << file_;
-                if (node.IsDefined() && node.Mark().line >= 0)
-                    msg << ":" << node.Mark().line + 1;
-                msg << ": field '" << field << "': " << what;
-                throw InputError(msg.str());
-            }
-
-            void allowKeys(const YAML::Node &map, const std::string &field,
-                           const std::set<std::string> &keys) const
-            {
-                if (!map.IsMap())
-                    fail(map, field, "expected a mapping");
-                for (const auto &kv : map)
-                {
-                    const std::string key = kv.first.as<std::string>();
-                    if (keys.count(key) != 0)
-                        continue;
-                    std::string accepted;
-                    for (const auto &k : keys)
-                        accepted += (accepted.empty() ? "" : ", ") + k;
-                    fail(kv.first, field.empty() ? key : field + "." + key,
-                         "unknown key '" + key + "'; accepted: " + accepted);
-                }
-            }
-
-            double number(const YAML::Node &n, const std::string &field, double lo, double hi) const
-            {
-                if (!n.IsScalar())
-                    fail(n, field, "expected a number");
-                double v = 0.0;
-                try
-                {
-                    v = n.as<double>();
-                }
-                catch (const YAML::Exception &)
-                {
-                    fail(n, field, "expected a number, got '" + n.Scalar() + "'");
-                }
-                if (!std::isfinite(v) || v < lo || v > hi)
-                {
-                    std::ostringstream range;
-                    range << "must be in [" << lo << ", " << hi << "] (got " << n.Scalar() << ")";
-                    fail(n, field, range.str());
-                }
-                return v;
-            }
-
-            long long integer(const YAML::Node &n, const std::string &field, long long lo, long long hi) const
-            {
-                const double v = number(n, field, static_cast<double>(lo), static_cast<double>(hi));
-                if (v != std::floor(v))
-                    fail(n, field, "expected an integer (got " + n.Scalar() + ")");
-                return static_cast<long long>(v);
-            }
-
-            std::string text(const YAML::Node &n, const std::string &field) const
-            {
-                if (!n.IsScalar() || n.Scalar().empty())
-                    fail(n, field, "expected a non-empty string");
-                return n.Scalar();
-            }
-
-          private:
-            std::string file_;
-        };
-
         std::string readFile(const std::string &path)
         {
             std::ifstream in(path, std::ios::binary);
@@ -117,7 +42,7 @@ namespace mhplan::bench
             return true;
         }
 
-        void readPlanners(const Reader &r, const YAML::Node &n, Campaign &c)
+        void readPlanners(const YamlReader &r, const YAML::Node &n, Campaign &c)
         {
             if (!n.IsSequence() || n.size() == 0)
                 r.fail(n, "planners", "expected a non-empty list of {planner, name, params}");
@@ -127,15 +52,15 @@ namespace mhplan::bench
                 const std::string field = "planners[" + std::to_string(i) + "]";
                 PlannerSpec p;
                 if (n[i].IsScalar())
-                    p.planner = r.text(n[i], field);
+                    p.planner = r.nonEmptyText(n[i], field);
                 else
                 {
                     r.allowKeys(n[i], field, {"planner", "name", "params", "progress"});
                     if (!n[i]["planner"].IsDefined())
                         r.fail(n[i], field + ".planner", "missing");
-                    p.planner = r.text(n[i]["planner"], field + ".planner");
+                    p.planner = r.nonEmptyText(n[i]["planner"], field + ".planner");
                     if (n[i]["name"].IsDefined())
-                        p.displayName = r.text(n[i]["name"], field + ".name");
+                        p.displayName = r.nonEmptyText(n[i]["name"], field + ".name");
                     const YAML::Node progress = n[i]["progress"];
                     if (progress.IsDefined() && !progress.IsNull())
                     {
@@ -144,7 +69,7 @@ namespace mhplan::bench
                                    "expected a non-empty list of progress property names");
                         for (std::size_t k = 0; k < progress.size(); ++k)
                             p.progress.push_back(
-                                r.text(progress[k], field + ".progress[" + std::to_string(k) + "]"));
+                                r.nonEmptyText(progress[k], field + ".progress[" + std::to_string(k) + "]"));
                     }
                     const YAML::Node params = n[i]["params"];
                     if (params.IsDefined() && !params.IsNull())
@@ -154,7 +79,7 @@ namespace mhplan::bench
                         for (const auto &kv : params)
                         {
                             const std::string key = kv.first.as<std::string>();
-                            p.params[key] = r.text(kv.second, field + ".params." + key);
+                            p.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
                         }
                     }
                 }
@@ -171,7 +96,7 @@ namespace mhplan::bench
             }
         }
 
-        void readWorlds(const Reader &r, const YAML::Node &n, Campaign &c)
+        void readWorlds(const YamlReader &r, const YAML::Node &n, Campaign &c)
         {
             if (!n.IsSequence() || n.size() == 0)
                 r.fail(n, "worlds", "expected a non-empty list of worlds");
@@ -180,22 +105,22 @@ namespace mhplan::bench
                 const std::string field = "worlds[" + std::to_string(i) + "]";
                 WorldSpec w;
                 if (n[i].IsScalar())
-                    w.world = r.text(n[i], field);
+                    w.world = r.nonEmptyText(n[i], field);
                 else
                 {
                     r.allowKeys(n[i], field, {"world", "queries"});
                     if (!n[i]["world"].IsDefined())
                         r.fail(n[i], field + ".world", "missing");
-                    w.world = r.text(n[i]["world"], field + ".world");
+                    w.world = r.nonEmptyText(n[i]["world"], field + ".world");
                     const YAML::Node q = n[i]["queries"];
                     if (q.IsDefined() && !q.IsNull())
                     {
                         if (q.IsScalar())
-                            w.queries.push_back(r.text(q, field + ".queries"));
+                            w.queries.push_back(r.nonEmptyText(q, field + ".queries"));
                         else if (q.IsSequence())
                             for (std::size_t k = 0; k < q.size(); ++k)
                                 w.queries.push_back(
-                                    r.text(q[k], field + ".queries[" + std::to_string(k) + "]"));
+                                    r.nonEmptyText(q[k], field + ".queries[" + std::to_string(k) + "]"));
                         else
                             r.fail(q, field + ".queries", "expected a query name or a list of names");
                     }
@@ -219,7 +144,7 @@ namespace mhplan::bench
                 << ": malformed YAML: " << e.msg;
             throw InputError(msg.str());
         }
-        const Reader r(fileName);
+        const YamlReader r(fileName);
         if (!root.IsMap())
             throw InputError(fileName +
                              ":1: a campaign file must be a YAML mapping (see benchmarks/README.md)");
@@ -228,7 +153,7 @@ namespace mhplan::bench
                      "progress_interval", "planner_data", "collision", "worlds", "planners"});
         Campaign c;
         c.file = fileName;
-        c.name = root["campaign"].IsDefined() ? r.text(root["campaign"], "campaign")
+        c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
                                               : fs::path(fileName).stem().string();
         if (root["time_limit"].IsDefined())
             c.timeLimit = r.number(root["time_limit"], "time_limit", 1e-3, 1e6);
@@ -253,7 +178,7 @@ namespace mhplan::bench
         }
         if (root["collision"].IsDefined())
         {
-            c.collision = r.text(root["collision"], "collision");
+            c.collision = r.nonEmptyText(root["collision"], "collision");
             try
             {
                 parseCollisionBackend(c.collision);
@@ -263,8 +188,9 @@ namespace mhplan::bench
                 r.fail(root["collision"], "collision", e.what());
             }
         }
-        c.database = root["database"].IsDefined() ? r.text(root["database"], "database") : c.name + ".db";
-        c.logDir = root["logs"].IsDefined() ? r.text(root["logs"], "logs") : c.database + ".logs";
+        c.database =
+            root["database"].IsDefined() ? r.nonEmptyText(root["database"], "database") : c.name + ".db";
+        c.logDir = root["logs"].IsDefined() ? r.nonEmptyText(root["logs"], "logs") : c.database + ".logs";
         if (!root["worlds"].IsDefined())
             r.fail(root, "worlds", "missing");
         readWorlds(r, root["worlds"], c);

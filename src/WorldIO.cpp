@@ -3,6 +3,7 @@
 #include "Collision.h"
 #include "GridIO.h"
 #include "Problem.h"
+#include "YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -36,101 +37,7 @@ namespace mhplan
             return ext;
         }
 
-        /** Reads one YAML document, producing errors of the form "file:line: field 'a.b': problem". */
-        class Reader
-        {
-          public:
-            explicit Reader(std::string file) : file_(std::move(file)) {}
-
-            [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
-                                   const std::string &what) const
-            {
-                std::ostringstream msg;
-                msg << file_;
-                if (node.IsDefined() && node.Mark().line >= 0)
-                    msg << ":" << node.Mark().line + 1;
-                msg << ": field '" << field << "': " << what;
-                throw InputError(msg.str());
-            }
-
-            void allowKeys(const YAML::Node &map, const std::string &field,
-                           const std::set<std::string> &keys) const
-            {
-                if (!map.IsMap())
-                    fail(map, field, "expected a mapping");
-                for (const auto &kv : map)
-                {
-                    const std::string key = kv.first.as<std::string>();
-                    if (keys.count(key) == 0)
-                    {
-                        std::string accepted;
-                        for (const auto &k : keys)
-                            accepted += (accepted.empty() ? "" : ", ") + k;
-                        fail(kv.first, field.empty() ? key : field + "." + key,
-                             "unknown key '" + key + "'; accepted: " + accepted);
-                    }
-                }
-            }
-
-            YAML::Node require(const YAML::Node &map, const std::string &key, const std::string &field) const
-            {
-                const YAML::Node n = map[key];
-                if (!n.IsDefined() || n.IsNull())
-                    fail(map, field.empty() ? key : field + "." + key, "missing");
-                return n;
-            }
-
-            double number(const YAML::Node &n, const std::string &field) const
-            {
-                if (!n.IsScalar())
-                    fail(n, field, "expected a number");
-                double v = 0.0;
-                try
-                {
-                    v = n.as<double>();
-                }
-                catch (const YAML::Exception &)
-                {
-                    fail(n, field, "expected a number, got '" + n.Scalar() + "'");
-                }
-                if (!std::isfinite(v))
-                    fail(n, field, "must be finite");
-                return v;
-            }
-
-            std::string text(const YAML::Node &n, const std::string &field) const
-            {
-                if (!n.IsScalar())
-                    fail(n, field, "expected a string");
-                return n.as<std::string>();
-            }
-
-            bool boolean(const YAML::Node &n, const std::string &field) const
-            {
-                try
-                {
-                    return n.as<bool>();
-                }
-                catch (const YAML::Exception &)
-                {
-                    fail(n, field, "expected true or false");
-                }
-            }
-
-            Vec2 point(const YAML::Node &n, const std::string &field) const
-            {
-                if (!n.IsSequence() || n.size() != 2)
-                    fail(n, field, "expected a point [x, y]");
-                return {number(n[0], field + "[0]"), number(n[1], field + "[1]")};
-            }
-
-            const std::string &file() const { return file_; }
-
-          private:
-            std::string file_;
-        };
-
-        Box readBounds(const Reader &r, const YAML::Node &n)
+        Box readBounds(const YamlReader &r, const YAML::Node &n)
         {
             Box b;
             if (n.IsSequence())
@@ -153,7 +60,7 @@ namespace mhplan
             return b;
         }
 
-        void readObstacle(const Reader &r, const YAML::Node &item, std::size_t index, World &world)
+        void readObstacle(const YamlReader &r, const YAML::Node &item, std::size_t index, World &world)
         {
             const std::string base = "obstacles[" + std::to_string(index) + "]";
             if (!item.IsMap() || item.size() != 1)
@@ -216,7 +123,7 @@ namespace mhplan
                        "unknown obstacle type '" + kind + "'; accepted: circle, rectangle, polygon");
         }
 
-        std::shared_ptr<const OccupancyGrid> readGrid(const Reader &r, const YAML::Node &n)
+        std::shared_ptr<const OccupancyGrid> readGrid(const YamlReader &r, const YAML::Node &n)
         {
             r.allowKeys(n, "grid", {"file", "rows", "cell_size", "origin", "threshold", "negate"});
             const double cell = n["cell_size"].IsDefined() ? r.number(n["cell_size"], "grid.cell_size") : 1.0;
@@ -288,7 +195,8 @@ namespace mhplan
             return std::make_shared<const OccupancyGrid>(std::move(grid));
         }
 
-        void readQueries(const Reader &r, const YAML::Node &n, World &world, std::vector<YAML::Node> &nodes)
+        void readQueries(const YamlReader &r, const YAML::Node &n, World &world,
+                         std::vector<YAML::Node> &nodes)
         {
             if (!n.IsSequence())
                 r.fail(n, "queries", "expected a list of {name, start, goal}");
@@ -325,7 +233,7 @@ namespace mhplan
                 << ": malformed YAML: " << e.msg;
             throw InputError(msg.str());
         }
-        const Reader r(fileName);
+        const YamlReader r(fileName);
         if (!root.IsMap())
             throw InputError(fileName +
                              ":1: a world file must be a YAML mapping (see environments/README.md)");
