@@ -233,13 +233,19 @@ namespace mhplan
                 << ": malformed YAML: " << e.msg;
             throw InputError(msg.str());
         }
-        const YamlReader r(fileName);
         if (!root.IsMap())
             throw InputError(fileName +
                              ":1: a world file must be a YAML mapping (see environments/README.md)");
-        r.allowKeys(root, "",
-                    {"name", "description", "source", "assumptions", "bounds", "robot", "obstacles", "grid",
-                     "queries"});
+        return readWorldNode(YamlReader(fileName), root);
+    }
+
+    World readWorldNode(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys)
+    {
+        const std::string &fileName = r.file();
+        std::set<std::string> keys{"name",  "description", "source", "assumptions", "bounds",
+                                   "robot", "obstacles",   "grid",   "queries"};
+        keys.insert(extraKeys.begin(), extraKeys.end());
+        r.allowKeys(root, "", keys);
 
         World world;
         world.file = fileName;

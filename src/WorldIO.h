@@ -3,6 +3,9 @@
 #define MHPLAN_WORLD_IO_H
 
 #include "World.h"
+#include "YamlReader.h"
+
+#include <set>
 
 #include <string>
 
@@ -17,6 +20,12 @@ namespace mhplan
     /** \brief Parse a YAML world from text; \e fileName is used in error messages and to resolve relative
         grid file paths (relative to its directory). */
     World parseWorldYaml(const std::string &text, const std::string &fileName);
+
+    /** \brief Read the world keys of a YAML mapping (the world file format); \e extraKeys are further
+        top-level keys the caller reads itself (a scenario file extends the world format this way). Errors
+        as parseWorldYaml, with \e r's file name. */
+    World readWorldNode(const YamlReader &r, const YAML::Node &root,
+                        const std::set<std::string> &extraKeys = {});
 
     /** \brief Write a geometric or grid world as YAML (grids inline as rows of '.' and '@'). */
     std::string worldToYaml(const World &world);
