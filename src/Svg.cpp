@@ -55,6 +55,44 @@ namespace mhplan
           << "\" viewBox=\"0 0 " << w << " " << h << "\">\n";
         s << "<title>" << escape(world.name) << "</title>\n";
         s << "<rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\" fill=\"white\"/>\n";
+        s << worldSvgShapes(world, pixelsPerMetre, margin);
+        for (std::size_t i = 0; i < paths.size(); ++i)
+        {
+            const SvgPath &p = paths[i];
+            s << "<polyline fill=\"none\" stroke=\"" << escape(p.color)
+              << "\" stroke-width=\"2\" stroke-linejoin=\"round\" points=\"";
+            for (const auto &v : p.points)
+                s << X(v.x) << "," << Y(v.y) << " ";
+            s << "\"/>\n";
+            if (world.robotRadius > 0.0)
+                for (const auto &v : p.points)
+                    s << "<circle cx=\"" << X(v.x) << "\" cy=\"" << Y(v.y) << "\" r=\""
+                      << world.robotRadius * pixelsPerMetre << "\" fill=\"none\" stroke=\"" << escape(p.color)
+                      << "\" stroke-opacity=\"0.3\"/>\n";
+            const double ly = b.height() * pixelsPerMetre + 2 * margin + 14.0 + 18.0 * static_cast<double>(i);
+            s << "<line x1=\"" << margin << "\" y1=\"" << ly - 4 << "\" x2=\"" << margin + 24 << "\" y2=\""
+              << ly - 4 << "\" stroke=\"" << escape(p.color) << "\" stroke-width=\"3\"/>\n";
+            s << "<text x=\"" << margin + 30 << "\" y=\"" << ly
+              << "\" font-family=\"sans-serif\" font-size=\"13\">" << escape(p.label) << "</text>\n";
+        }
+        if (query != nullptr)
+        {
+            s << "<circle cx=\"" << X(query->start.x) << "\" cy=\"" << Y(query->start.y)
+              << "\" r=\"6\" fill=\"#2ca02c\"><title>start</title></circle>\n";
+            s << "<circle cx=\"" << X(query->goal.x) << "\" cy=\"" << Y(query->goal.y)
+              << "\" r=\"6\" fill=\"#1f77b4\"><title>goal</title></circle>\n";
+        }
+        s << "</svg>\n";
+        return s.str();
+    }
+
+    std::string worldSvgShapes(const World &world, double pixelsPerMetre, double margin)
+    {
+        const Box &b = world.bounds;
+        auto X = [&](double x) { return margin + (x - b.xmin) * pixelsPerMetre; };
+        auto Y = [&](double y) { return margin + (b.ymax - y) * pixelsPerMetre; };
+        std::ostringstream s;
+        s << std::fixed << std::setprecision(2);
         s << "<rect x=\"" << X(b.xmin) << "\" y=\"" << Y(b.ymax) << "\" width=\""
           << b.width() * pixelsPerMetre << "\" height=\"" << b.height() * pixelsPerMetre
           << "\" fill=\"#fafafa\" stroke=\"black\"/>\n";
@@ -97,34 +135,12 @@ namespace mhplan
             s << "\"/>\n";
         }
         s << "</g>\n";
-        for (std::size_t i = 0; i < paths.size(); ++i)
-        {
-            const SvgPath &p = paths[i];
-            s << "<polyline fill=\"none\" stroke=\"" << escape(p.color)
-              << "\" stroke-width=\"2\" stroke-linejoin=\"round\" points=\"";
-            for (const auto &v : p.points)
-                s << X(v.x) << "," << Y(v.y) << " ";
-            s << "\"/>\n";
-            if (world.robotRadius > 0.0)
-                for (const auto &v : p.points)
-                    s << "<circle cx=\"" << X(v.x) << "\" cy=\"" << Y(v.y) << "\" r=\""
-                      << world.robotRadius * pixelsPerMetre << "\" fill=\"none\" stroke=\"" << escape(p.color)
-                      << "\" stroke-opacity=\"0.3\"/>\n";
-            const double ly = b.height() * pixelsPerMetre + 2 * margin + 14.0 + 18.0 * static_cast<double>(i);
-            s << "<line x1=\"" << margin << "\" y1=\"" << ly - 4 << "\" x2=\"" << margin + 24 << "\" y2=\""
-              << ly - 4 << "\" stroke=\"" << escape(p.color) << "\" stroke-width=\"3\"/>\n";
-            s << "<text x=\"" << margin + 30 << "\" y=\"" << ly
-              << "\" font-family=\"sans-serif\" font-size=\"13\">" << escape(p.label) << "</text>\n";
-        }
-        if (query != nullptr)
-        {
-            s << "<circle cx=\"" << X(query->start.x) << "\" cy=\"" << Y(query->start.y)
-              << "\" r=\"6\" fill=\"#2ca02c\"><title>start</title></circle>\n";
-            s << "<circle cx=\"" << X(query->goal.x) << "\" cy=\"" << Y(query->goal.y)
-              << "\" r=\"6\" fill=\"#1f77b4\"><title>goal</title></circle>\n";
-        }
-        s << "</svg>\n";
         return s.str();
+    }
+
+    std::string svgEscape(const std::string &text)
+    {
+        return escape(text);
     }
 
     void writeTextFile(const std::string &path, const std::string &text)

@@ -22,6 +22,14 @@ namespace mhplan
     std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
                          double pixelsPerMetre = 0.0);
 
+    /** \brief The world's SVG elements (bounds, grid cells, obstacles) without a document around them, in
+        worldSvg's coordinates: x' = margin + (x - xmin) * pixelsPerMetre, y' = margin + (ymax - y) *
+        pixelsPerMetre. For drawings that add their own content (SimRender.h). */
+    std::string worldSvgShapes(const World &world, double pixelsPerMetre, double margin);
+
+    /** \brief Text escaped for SVG/XML content and attribute values. */
+    std::string svgEscape(const std::string &text);
+
     /** \brief Write text to a file; throws InputError naming the file on failure. */
     void writeTextFile(const std::string &path, const std::string &text);
 } // namespace mhplan
