@@ -912,7 +912,7 @@ namespace mhplan
                     ys.push_back(v.y(p.y));
                 }
                 s << "<circle r=\"" << r << "\" cx=\"" << xs[0] << "\" cy=\"" << ys[0]
-                  << "\" fill=\"#e6550d\" stroke=\"#a63603\">";
+                  << "\" fill=\"#e6550d\" fill-opacity=\"0.7\" stroke=\"#a63603\" stroke-dasharray=\"2 2\">";
                 animateAttr("cx", xs);
                 animateAttr("cy", ys);
                 s << "</circle>\n";
@@ -937,7 +937,7 @@ namespace mhplan
                     hides = hides || k < 0;
                 }
                 s << "<circle r=\"" << radius << "\" cx=\"" << xs[0] << "\" cy=\"" << ys[0] << "\" fill=\""
-                  << robotColor(i) << "\" stroke=\"black\">";
+                  << robotColor(i) << "\" fill-opacity=\"0.7\" stroke=\"black\" stroke-dasharray=\"2 2\">";
                 animateAttr("cx", xs);
                 animateAttr("cy", ys);
                 if (hides)

@@ -15,9 +15,9 @@ namespace mhplan
     /** \brief An SVG document of a run: the static world, every robot's trajectory in its own colour (one
         \c path element per robot, class "trajectory") with start and goal markers and its final disc and
         heading, the moving obstacles' traces (thin, light) and final positions, moving goals' traces, and a
-        legend (controller, seed, makespan, flowtime, collisions, robot colours). With \e animate, SMIL
-        animations replay the run in a browser (at most \e maxFrames key frames at \e fps frames per
-        second). */
+        legend (controller, seed, makespan, flowtime, collisions, robot colours). With \e animate, dashed
+        discs replay the run in a browser (SMIL; at most \e maxFrames key frames at \e fps frames per
+        second; a viewer without SMIL shows them at the start). */
     std::string simulationSvg(const Scenario &scenario, const SimulationResult &result, bool animate = true,
                               int maxFrames = 300, double fps = 10.0);
 
