@@ -2,7 +2,9 @@
 """The report from a small database: every figure is a valid image, every table number equals the SQL
 aggregate computed here independently, and a database with a crashed planner or without progress data
 still gives a report that says what is missing. The database is built the way mhplan bench builds one:
-OMPL-format logs turned into SQLite by /usr/bin/ompl_benchmark_statistics."""
+OMPL-format logs turned into SQLite by /usr/bin/ompl_benchmark_statistics. Simulation experiments ("Moving
+worlds"): the controller tables and the aapf-vs-dapf reduction equal independent SQL aggregates, and the
+report says plainly when we measure less than the paper or an increase."""
 
 import math
 import os
@@ -194,6 +196,227 @@ class ReportTest(unittest.TestCase):
                                   capture_output=True, text=True)
             self.assertEqual(proc.returncode, 1)
             self.assertIn("no such database", proc.stderr)
+
+
+# --- simulation experiments ("Moving worlds") -------------------------------------------------------------
+
+SIM_PROPS = ["time REAL", "status ENUM", "solved BOOLEAN", "makespan REAL", "flowtime REAL",
+             "mean traversal time REAL", "collisions INTEGER", "static collisions INTEGER",
+             "moving collisions INTEGER", "robot collisions INTEGER", "robots done INTEGER",
+             "robots stuck INTEGER", "robots unfinished INTEGER", "min robot distance REAL",
+             "min obstacle clearance REAL", "total path length REAL", "robot steps INTEGER",
+             "robot steps per second REAL", "run index INTEGER", "run seed INTEGER", "start seed INTEGER"]
+
+
+def write_sim_log(path, scenario, robots, reference, controllers, seed=1):
+    """A simulation experiment's log as mhplan bench writes it. controllers: name -> list of run dicts
+    (keys: the property names without type; missing keys are left empty, as OMPL's writer does)."""
+    params = {"campaign TEXT": "test", "kind TEXT": "simulation", "scenario TEXT": scenario,
+              "scenario_file TEXT": "/nonexistent/%s.yaml" % scenario, "robot_count INTEGER": robots,
+              "moving_obstacle_count INTEGER": 0, "obstacle_count INTEGER": 9, "start_jitter REAL": 0.05,
+              "heading_jitter REAL": 0.1}
+    for k, v in reference.items():
+        params["reference_%s REAL" % k] = v
+    lines = ["OMPL version 1.5.2", "Experiment %s-sim" % scenario, "%d experiment properties" % len(params)]
+    lines += ["%s = %s" % (k, v) for k, v in sorted(params.items())]
+    lines += ["Running on testhost", "Starting at 2026-11-23 12:00:00", "<<<|", "simulation", "|>>>", "<<<|", "cpu",
+              "|>>>", "%d is the random seed" % seed, "200 seconds per run", "4096 MB per run", "7 runs per planner",
+              "3.5 seconds spent to collect the data", "1 enum type", "status|" + "|".join(STATUS),
+              "%d planners" % len(controllers)]
+    lines[lines.index("7 runs per planner")] = "%d runs per planner" % max(len(r) for r in controllers.values())
+    for name, runs in controllers.items():
+        lines += ["sim:%s" % name, "1 common properties", "controller = %s" % name, "%d properties for each run" % len(SIM_PROPS)]
+        lines += SIM_PROPS
+        lines.append("%d runs" % len(runs))
+        for run in runs:
+            cells = []
+            for prop in SIM_PROPS:
+                v = run.get(prop.rsplit(" ", 1)[0])
+                cells.append("" if v is None else repr(v) if isinstance(v, float) else str(v))
+            lines.append("; ".join(cells) + "; ")
+        lines.append(".")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def sim_runs(rng, n, traversal, spread, robots, unfinished=(), crashed=()):
+    runs = []
+    for k in range(n):
+        if k in crashed:
+            runs.append({"time": 0.5, "status": 7, "solved": 0, "run index": k, "run seed": 100 + k, "start seed": 7 + k})
+            continue
+        t = traversal * (1.0 + rng.uniform(-spread, spread))
+        done = robots - (1 if k in unfinished else 0)
+        makespan = t * (1.0 + rng.uniform(0.05, 0.3))
+        stuck = robots - done
+        coll = rng.choice([0, 0, 1, 2])
+        runs.append({"time": rng.uniform(0.01, 0.2), "status": 6 if done == robots else 5, "solved": 1 if done == robots else 0,
+                     "makespan": makespan, "flowtime": t * robots, "mean traversal time": t,
+                     "collisions": coll, "static collisions": 0, "moving collisions": 0, "robot collisions": coll,
+                     "robots done": done, "robots stuck": stuck, "robots unfinished": 0,
+                     "min robot distance": rng.uniform(-0.01, 0.3), "min obstacle clearance": rng.uniform(0.0, 0.2),
+                     "total path length": 6.0 * robots, "robot steps": 1000 * robots,
+                     "robot steps per second": rng.uniform(1e5, 1e6), "run index": k, "run seed": 100 + k,
+                     "start seed": 7 + k})
+    return runs
+
+
+def build_sim_database(tmp):
+    """One planning experiment and three simulation experiments: 2 robots (aapf about 17 % faster than dapf,
+    one unfinished dapf run and one crashed aapf run), 15 robots (aapf slower: an increase), and a BFO case 3
+    scenario with other controllers (no reduction row)."""
+    rng = random.Random(11)
+    logs = []
+    log = os.path.join(tmp, "plan.log")
+    write_log(log, "bfo_case1/default", "bfo_case1", os.path.join(ROOT, "environments", "bfo_case1.yaml"), 14.2734,
+              {"SMA": make_runs(rng, 14.2734, 5)})
+    logs.append(log)
+    log = os.path.join(tmp, "s2.log")
+    write_sim_log(log, "mapf_2robots", 2, {"traversal_time_reduction_percent": 35},
+                  {"dapf": sim_runs(rng, 15, 30.0, 0.1, 2, unfinished=(3,)),
+                   "aapf": sim_runs(rng, 15, 25.0, 0.08, 2, crashed=(5,))})
+    logs.append(log)
+    log = os.path.join(tmp, "s15.log")
+    write_sim_log(log, "mapf_15robots", 15, {"traversal_time_reduction_percent": 50},
+                  {"dapf": sim_runs(rng, 15, 40.0, 0.05, 15), "aapf": sim_runs(rng, 15, 46.0, 0.05, 15)})
+    logs.append(log)
+    log = os.path.join(tmp, "s3.log")
+    write_sim_log(log, "bfo_case3_lines", 1, {"paper_time_s": 10.52},
+                  {"bfo": sim_runs(rng, 5, 15.0, 0.1, 1, unfinished=(0, 1, 2)), "atbfo": sim_runs(rng, 5, 14.0, 0.1, 1)})
+    logs.append(log)
+    dbpath = os.path.join(tmp, "sim.db")
+    subprocess.run(["/usr/bin/ompl_benchmark_statistics", "-d", dbpath] + logs, check=True, stdout=subprocess.DEVNULL)
+    return dbpath
+
+
+def sql_median_censored(conn, exp, planner, column):
+    """Median with unfinished (status != 6) runs as +inf, from SQL rows."""
+    vals = [math.inf if v is None else v for (v,) in conn.execute(
+        """SELECT CASE WHEN r.status = 6 THEN r.%s END FROM runs r JOIN experiments e ON r.experimentid = e.id
+           JOIN plannerConfigs p ON r.plannerid = p.id WHERE e.name = ? AND p.name = ?""" % column, (exp, planner))]
+    vals.sort()
+    n = len(vals)
+    return vals[n // 2] if n % 2 else 0.5 * (vals[n // 2 - 1] + vals[n // 2])
+
+
+class MovingWorldsTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.dbpath = build_sim_database(cls.tmp.name)
+        cls.out = os.path.join(cls.tmp.name, "report")
+        with open(report.write_report(cls.dbpath, cls.out)) as f:
+            cls.text = f.read()
+        cls.database = report.dbmod.load(cls.dbpath)
+        cls.conn = sqlite3.connect(cls.dbpath)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.conn.close()
+        cls.tmp.cleanup()
+
+    def exp(self, name):
+        return next(e for e in self.database.experiments if e.name == name)
+
+    def test_sections_and_figures(self):
+        self.assertIn("Moving worlds", self.text)
+        images = re.findall(r"src='([^']+)'", self.text)
+        sim_images = [i for i in images if i.startswith("sim_box_")]
+        self.assertEqual(len(sim_images), 3)
+        for img in images:
+            self.assertTrue(png_ok(os.path.join(self.out, img)), img)
+        # The planning sections leave the simulation experiments out (no planning box plots for them).
+        self.assertFalse(any(i.startswith("box_mapf") for i in images))
+        self.assertTrue(any(i.startswith("box_bfo_case1") for i in images))
+        # The paper's figures stand beside ours.
+        self.assertIn("paper_time_s = 10.52", self.text)
+
+    def test_controller_table_equals_sql_aggregates(self):
+        q = """SELECT e.name, p.name, COUNT(*), SUM(r.status = 6), SUM(r.status = 7),
+                      SUM(CASE WHEN r.status != 7 THEN coalesce(r.collisions, 0) ELSE 0 END),
+                      SUM(CASE WHEN r.status != 7 THEN coalesce(r.robots_stuck, 0) ELSE 0 END),
+                      SUM(r.status != 7 AND r.robots_stuck > 0), MIN(r.min_robot_distance)
+               FROM runs r JOIN experiments e ON r.experimentid = e.id JOIN plannerConfigs p ON r.plannerid = p.id
+               WHERE e.kind = 'simulation' GROUP BY e.id, p.id"""
+        checked = 0
+        for exp, planner, n, done, crashed, coll, stuck, runs_stuck, min_dist in self.conn.execute(q):
+            rows = {r["planner"]: r for r in report.simulations.controller_rows(self.database, self.exp(exp))}
+            r = rows[planner]
+            self.assertEqual(r["runs"], n)
+            self.assertEqual(r["done"], done)
+            self.assertEqual(r["crashed"], crashed)
+            self.assertEqual(r["collisions"], coll)
+            self.assertEqual(r["stuck"], stuck)
+            self.assertEqual(r["runs_with_stuck"], runs_stuck)
+            self.assertAlmostEqual(r["min_robot_distance"], min_dist, places=12)
+            for key, column in (("median_makespan", "makespan"), ("median_flowtime", "flowtime"),
+                                ("median_traversal", "mean_traversal_time")):
+                expected = sql_median_censored(self.conn, exp, planner, column)
+                if math.isinf(expected):
+                    self.assertTrue(math.isinf(r[key]))
+                else:
+                    self.assertAlmostEqual(r[key], expected, places=9)
+                    self.assertIn("%.2f" % expected, self.text)
+            self.assertIn("%d (%.0f%%)" % (done, 100.0 * done / n), self.text)
+            checked += 1
+        self.assertEqual(checked, 6)
+        # bfo: 3 of 5 runs unfinished, so its median is not finite.
+        rows = {r["controller"]: r for r in report.simulations.controller_rows(self.database, self.exp("bfo_case3_lines-sim"))}
+        self.assertTrue(math.isinf(rows["bfo"]["median_makespan"]))
+        self.assertIn("unfinished", self.text)
+
+    def test_reduction_equals_paired_sql_and_says_less_or_increase(self):
+        for exp, paper in (("mapf_2robots-sim", 35.0), ("mapf_15robots-sim", 50.0)):
+            rows = {r["column"]: r for r in report.simulations.reduction_rows(self.database, self.exp(exp))}
+            self.assertEqual(set(rows), {"mean_traversal_time", "makespan"})
+            for column in ("mean_traversal_time", "makespan"):
+                r = rows[column]
+                md = sql_median_censored(self.conn, exp, "sim:dapf", column)
+                ma = sql_median_censored(self.conn, exp, "sim:aapf", column)
+                self.assertAlmostEqual(r["median_dapf"], md, places=9)
+                self.assertAlmostEqual(r["median_aapf"], ma, places=9)
+                self.assertAlmostEqual(r["reduction_of_medians"], 100.0 * (1.0 - ma / md), places=9)
+                # Paired by run index, independently in SQL (finished runs only; censoring by hand).
+                pairs = self.conn.execute(
+                    """SELECT CASE WHEN d.status = 6 THEN d.%s END, CASE WHEN a.status = 6 THEN a.%s END
+                       FROM runs d JOIN runs a ON d.experimentid = a.experimentid AND d.run_index = a.run_index
+                       JOIN plannerConfigs pd ON d.plannerid = pd.id JOIN plannerConfigs pa ON a.plannerid = pa.id
+                       JOIN experiments e ON d.experimentid = e.id
+                       WHERE e.name = ? AND pd.name = 'sim:dapf' AND pa.name = 'sim:aapf'""" % (column, column), (exp,)).fetchall()
+                red = []
+                for d, a in pairs:
+                    if d is None and a is None:
+                        continue
+                    red.append(100.0 if d is None else -math.inf if a is None else 100.0 * (1.0 - a / d))
+                red.sort()
+                n = len(red)
+                med = red[n // 2] if n % 2 else 0.5 * (red[n // 2 - 1] + red[n // 2])
+                self.assertEqual(r["paired"]["n"], n)
+                self.assertAlmostEqual(r["paired"]["median"], med, places=9)
+                lo, hi = report.stats.median_ci_indices(n)
+                self.assertEqual(r["paired"]["lo"], red[lo])
+                self.assertEqual(r["paired"]["hi"], red[hi])
+                self.assertIn("%.1f %%" % med, self.text)
+            self.assertEqual(rows["mean_traversal_time"]["paper"], paper)
+        two = {r["column"]: r for r in report.simulations.reduction_rows(self.database, self.exp("mapf_2robots-sim"))}
+        self.assertGreater(two["mean_traversal_time"]["paired"]["median"], 0.0)
+        self.assertIn("less than the paper's 35 %", two["mean_traversal_time"]["verdict"])
+        fifteen = {r["column"]: r for r in report.simulations.reduction_rows(self.database, self.exp("mapf_15robots-sim"))}
+        self.assertLess(fifteen["mean_traversal_time"]["paired"]["median"], 0.0)
+        self.assertIn("increase", fifteen["mean_traversal_time"]["verdict"])
+        self.assertIn("less than the paper&#x27;s 35 %", self.text)
+        self.assertIn("increase", self.text)
+        # No reduction row for a scenario without the dapf/aapf pair.
+        self.assertEqual(report.simulations.reduction_rows(self.database, self.exp("bfo_case3_lines-sim")), [])
+
+    def test_verdict_and_coverage(self):
+        sims = report.simulations
+        self.assertIn("lies in our interval", sims.verdict({"median": 30.0, "lo": 20.0, "hi": 40.0}, 35.0))
+        self.assertIn("more than the paper's 35", sims.verdict({"median": 60.0, "lo": 50.0, "hi": 70.0}, 35.0))
+        self.assertIn("increase of 5.0 %", sims.verdict({"median": -5.0, "lo": -8.0, "hi": -1.0}, 35.0))
+        # Exact coverage of [x_(lo), x_(hi)]: P(lo < K <= hi), K ~ Bin(n, 1/2).
+        self.assertAlmostEqual(sims.binomial_coverage(5, 0, 4), 1.0 - 2.0 / 32.0)
+        self.assertAlmostEqual(sims.binomial_coverage(1, 0, 0), 0.0)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import papers, stats, worlds  # noqa: E402
+from . import papers, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -169,9 +169,9 @@ def box_plots(database, exp, outdir):
     return os.path.basename(path), missing
 
 
-def success_bars(database, outdir):
+def success_bars(database, outdir, exps=None):
     """Stacked bars per experiment and planner: exact, approximate, failed, crashed (share of runs)."""
-    exps = database.experiments
+    exps = database.experiments if exps is None else exps
     if not exps:
         return None
     fig, axes = plt.subplots(len(exps), 1, figsize=(10, 1.9 * len(exps) + 1.2), squeeze=False)
@@ -322,6 +322,131 @@ th{background:#f0f0f0}td:first-child,th:first-child{text-align:left}img{max-widt
 .note{background:#fff8e0;border-left:4px solid #e0b000;padding:0.4em 0.8em}h2{border-bottom:1px solid #ddd}"""
 
 
+def _fmt_ci(measured, digits=1):
+    if measured is None:
+        return "&ndash;"
+
+    def f(v):
+        if math.isinf(v):
+            return "+&infin;" if v > 0 else "&minus;&infin;"
+        return ("%." + str(digits) + "f") % v
+
+    return "%s %% [%s, %s] (n = %d, coverage %.0f %%)" % (f(measured["median"]), f(measured["lo"]), f(measured["hi"]), measured["n"], 100.0 * measured["coverage"])
+
+
+def _fmt_median(v, digits=2):
+    """A censored median: 'unfinished' when more than half of the runs did not finish."""
+    if v is None:
+        return "&ndash;"
+    if math.isinf(v):
+        return "unfinished"
+    return ("%." + str(digits) + "f") % v
+
+
+def moving_worlds_section(database, exps, outdir, notes):
+    """HTML of the simulation experiments: the [MAPF] traversal-time reduction beside the paper's figures,
+    then per scenario box plots of makespan and flowtime and a table of outcomes per controller."""
+    out = ["<h2>Moving worlds (simulations)</h2>"]
+    out.append(
+        "<p>One experiment per scenario, one row per controller and run (<code>mhplan bench</code> simulation "
+        "entries). A run is <i>finished</i> when every robot reached its goals; the medians below count an "
+        "unfinished or crashed run as +&infin; (its times are only lower bounds), so a median shows "
+        "'unfinished' when more than half of the runs did not finish. Intervals are distribution-free 95 % "
+        "confidence intervals of the median (order statistics; their exact coverage is given, lower for few "
+        "runs).</p>"
+    )
+    reductions = [(e, simulations.reduction_rows(database, e)) for e in exps]
+    reductions = [(e, rows) for e, rows in reductions if rows]
+    if reductions:
+        out.append("<h3>[MAPF] traversal-time reduction: adaptive APF (aapf) against the classic distributed APF (dapf)</h3>")
+        out.append(
+            "<p>Reduction = 100 (1 &minus; aapf / dapf). <i>Paired</i>: run k of both controllers starts from the "
+            "same perturbed configuration (same <code>start_seed</code>); the per-pair reductions' median and "
+            "interval. A pair where only dapf did not finish counts +100 %, only aapf &minus;&infin;; pairs where "
+            "neither finished are left out. The paper (seed 002) reports 35 % (2 robots) and 50 % (15 robots) "
+            "less traversal time; its map and tasks are not recoverable, ours are documented in the scenario "
+            "files.</p>"
+        )
+        rows = []
+        for exp, rr in reductions:
+            robots = exp.params.get("robot_count")
+            for r in rr:
+                extra = " (%d pairs: neither finished)" % r["pairs_both_unfinished"] if r["pairs_both_unfinished"] else ""
+                rows.append(
+                    (
+                        html.escape(str(exp.params.get("scenario") or exp.name)),
+                        robots if robots is not None else "&ndash;",
+                        r["metric"],
+                        _fmt_median(r["median_dapf"]),
+                        _fmt_median(r["median_aapf"]),
+                        _fmt(r["reduction_of_medians"], 1, " %"),
+                        _fmt_ci(r["paired"]) + extra,
+                        "%g %%" % r["paper"] if r["paper"] is not None else "&ndash;",
+                        html.escape(r["verdict"]),
+                    )
+                )
+            starts = simulations.distinct_starts(database, exp)
+            if starts == 1:
+                notes.append(
+                    "%s: every run starts from the same configuration (no start_jitter): deterministic controllers "
+                    "repeat one run, so the interval says nothing about variability." % exp.name
+                )
+        out.append(_table(["scenario", "robots", "metric", "median dapf [s]", "median aapf [s]", "reduction of medians", "paired reduction: median [95% CI]", "paper", "in plain words"], rows))
+
+    for exp in exps:
+        slug = _slug(exp.name)
+        out.append("<h3>%s</h3>" % html.escape(exp.name))
+        desc = []
+        for key in ("robot_count", "moving_obstacle_count", "obstacle_count"):
+            if exp.params.get(key) is not None:
+                desc.append("%s %s" % (key.replace("_", " "), exp.params.get(key)))
+        jitter = dbmod.to_float(exp.params.get("start_jitter"))
+        if jitter:
+            desc.append("starts perturbed by up to %g m" % jitter)
+        refs = simulations.references(exp)
+        if refs:
+            desc.append("paper's figures: " + ", ".join("%s = %g" % (k, v) for k, v in sorted(refs.items())))
+        if desc:
+            out.append("<p>%s</p>" % html.escape("; ".join(desc)))
+        if "paper_time_s" in refs:
+            out.append(
+                "<p class='note'>The paper's time (%g s) may be a computing time rather than the robot's travel time; "
+                "compare with the median traversal time column with that in mind.</p>" % refs["paper_time_s"]
+            )
+        box = simulations.box_plots(database, exp, outdir, slug)
+        if box:
+            out.append("<img src='%s' alt='makespan and flowtime'>" % box)
+        rows = simulations.controller_rows(database, exp)
+        if not rows:
+            notes.append("%s: no runs." % exp.name)
+            continue
+        out.append(
+            _table(
+                ["controller", "runs", "all robots done", "crashed", "collisions (runs with)", "static / moving / robot", "robots stuck (runs with)", "median makespan [s]", "median flowtime [s]", "median traversal [s]", "min robot distance [m]", "min obstacle clearance [m]", "median wall time [s]", "robot-steps/s (median)"],
+                [
+                    (
+                        html.escape(r["controller"]),
+                        r["runs"],
+                        "%d (%.0f%%)" % (r["done"], r["success"] if r["success"] is not None else 0.0),
+                        r["crashed"],
+                        "%d (%d)" % (r["collisions"], r["runs_with_collisions"]),
+                        "%d / %d / %d" % (r["static_collisions"], r["moving_collisions"], r["robot_collisions"]),
+                        "%d (%d)" % (r["stuck"], r["runs_with_stuck"]),
+                        _fmt_median(r["median_makespan"]),
+                        _fmt_median(r["median_flowtime"]),
+                        _fmt_median(r["median_traversal"]),
+                        _fmt(r["min_robot_distance"], 3),
+                        _fmt(r["min_obstacle_clearance"], 3),
+                        _fmt(r["median_time"], 4),
+                        _fmt(r["median_steps_per_second"], 0),
+                    )
+                    for r in rows
+                ],
+            )
+        )
+    return out
+
+
 def write_report(database_path, outdir, world_dir=None):
     """Write index.html and its figures into outdir; returns the index path."""
     os.makedirs(outdir, exist_ok=True)
@@ -332,21 +457,26 @@ def write_report(database_path, outdir, world_dir=None):
     parts = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>mhplan report</title><style>%s</style></head><body>" % CSS]
     parts.append("<h1>mhplan benchmark report</h1>")
     parts.append("<p>Database <code>%s</code>: %d experiments, %d planners, %d runs.</p>" % (html.escape(database_path), len(database.experiments), len(database.planners), len(database.runs)))
-    if not paths:
+    # Planning experiments (worlds x queries) and simulation experiments (scenarios x controllers).
+    planning = [e for e in database.experiments if not simulations.is_simulation(e)]
+    moving = [e for e in database.experiments if simulations.is_simulation(e)]
+    if not paths and planning:
         notes.append("The database has no saved paths: no path figures.")
 
     # Ranking and success first: what a reader wants.
-    parts.append("<h2>Success</h2>")
-    sb = success_bars(database, outdir)
-    if sb:
-        parts.append("<img src='%s' alt='success rates'>" % sb)
+    if planning:
+        parts.append("<h2>Success</h2>")
+        sb = success_bars(database, outdir, planning)
+        if sb:
+            parts.append("<img src='%s' alt='success rates'>" % sb)
 
     per_exp_tables = {}
-    for exp in database.experiments:
+    for exp in planning:
         per_exp_tables[exp.id] = table_rows(database, exp)
 
-    parts.append("<h2>Ranking per problem</h2>")
-    for exp in database.experiments:
+    if planning:
+        parts.append("<h2>Ranking per problem</h2>")
+    for exp in planning:
         rows = sorted(per_exp_tables[exp.id], key=lambda r: (-r["counts"]["exact"] / max(r["runs"], 1), r["median_gap"] if r["median_gap"] is not None else math.inf))
         opt = _optimum(exp)
         parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), _fmt(opt, 4) if opt else "not recorded (no gaps)"))
@@ -367,7 +497,7 @@ def write_report(database_path, outdir, world_dir=None):
         )
 
     # The papers' tables.
-    lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in database.experiments if _world_name(e) in papers.LRSMA_WORLDS]
+    lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in planning if _world_name(e) in papers.LRSMA_WORLDS]
     if lrsma_exps:
         parts.append("<h2>[LRSMA] Table 3 layout (our runs; the paper's numbers beside)</h2>")
         parts.append("<p class='note'>Our scenarios are reconstructions (the paper publishes no coordinates): the paper's numbers are context, not a like-for-like comparison.</p>")
@@ -379,7 +509,7 @@ def write_report(database_path, outdir, world_dir=None):
                 rows.append(("%s (paper)" % alg, "%.2f" % mn, "%.2f" % me, "%.2f" % sd, "%.2f" % bt, "%.2f" % mt))
             parts.append("<h3>Scenario %d: %s</h3>" % (scenario, html.escape(exp.name)))
             parts.append(_table(["algorithm", "length min", "length mean", "length std", "time of best run [s]", "mean time [s]"], rows))
-    bfo_exps = [e for e in database.experiments if _world_name(e) in papers.BFO_REPORTED]
+    bfo_exps = [e for e in planning if _world_name(e) in papers.BFO_REPORTED]
     if bfo_exps:
         parts.append("<h2>[BFO] best path lengths (our runs; the paper's numbers beside)</h2>")
         parts.append("<p class='note'>%s</p>" % html.escape(papers.BFO_NOTE))
@@ -389,8 +519,11 @@ def write_report(database_path, outdir, world_dir=None):
             parts.append("<h3>%s</h3>" % html.escape(exp.name))
             parts.append(_table(["algorithm", "best length", "time of best run [s]"], rows))
 
+    if moving:
+        parts.extend(moving_worlds_section(database, moving, outdir, notes))
+
     # Per problem: figures and the full table.
-    for exp in database.experiments:
+    for exp in planning:
         parts.append("<h2>%s</h2>" % html.escape(exp.name))
         box, missing = box_plots(database, exp, outdir)
         if box:
