@@ -1,13 +1,16 @@
 #include "Campaign.h"
 
 #include "Collision.h"
+#include "Controllers.h"
 #include "Problem.h"
+#include "ScenarioIO.h"
 #include "World.h"
 #include "WorldIO.h"
 #include "YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -96,6 +99,99 @@ namespace mhplan::bench
             }
         }
 
+        std::string joinNames(const std::vector<std::string> &names)
+        {
+            std::string out;
+            for (const auto &n : names)
+                out += (out.empty() ? "" : ", ") + n;
+            return out;
+        }
+
+        void readControllers(const YamlReader &r, const YAML::Node &n, const std::string &base,
+                             SimulationSpec &sim)
+        {
+            if (!n.IsSequence() || n.size() == 0)
+                r.fail(n, base,
+                       "expected a non-empty list of controllers (names or {controller, name, params})");
+            const std::vector<std::string> known = controllerNames();
+            std::set<std::string> names;
+            for (std::size_t i = 0; i < n.size(); ++i)
+            {
+                const std::string field = base + "[" + std::to_string(i) + "]";
+                ControllerSpec spec;
+                spec.line = n[i].Mark().line + 1;
+                if (n[i].IsScalar())
+                    spec.controller = r.nonEmptyText(n[i], field);
+                else
+                {
+                    r.allowKeys(n[i], field, {"controller", "name", "params"});
+                    if (!n[i]["controller"].IsDefined())
+                        r.fail(n[i], field + ".controller", "missing");
+                    spec.controller = r.nonEmptyText(n[i]["controller"], field + ".controller");
+                    if (n[i]["name"].IsDefined())
+                        spec.displayName = r.nonEmptyText(n[i]["name"], field + ".name");
+                    const YAML::Node params = n[i]["params"];
+                    if (params.IsDefined() && !params.IsNull())
+                    {
+                        if (!params.IsMap())
+                            r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        for (const auto &kv : params)
+                        {
+                            const std::string key = kv.first.as<std::string>();
+                            spec.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
+                        }
+                    }
+                }
+                if (std::find(known.begin(), known.end(), spec.controller) == known.end())
+                    r.fail(n[i], field,
+                           "unknown controller '" + spec.controller + "'; known: " + joinNames(known));
+                if (spec.displayName.empty())
+                    spec.displayName = spec.controller;
+                if (!plainName(spec.displayName))
+                    r.fail(n[i], field + ".name",
+                           "'" + spec.displayName + "' must not contain blanks, quotes, ';' or ','");
+                if (!names.insert(spec.displayName).second)
+                    r.fail(n[i], field + ".name",
+                           "duplicate controller name '" + spec.displayName +
+                               "'; give each configuration of a controller its own 'name'");
+                sim.controllers.push_back(std::move(spec));
+            }
+        }
+
+        void readSimulations(const YamlReader &r, const YAML::Node &n, Campaign &c)
+        {
+            if (!n.IsSequence() || n.size() == 0)
+                r.fail(n, "simulations", "expected a non-empty list of {scenario, controllers, ...}");
+            for (std::size_t i = 0; i < n.size(); ++i)
+            {
+                const std::string field = "simulations[" + std::to_string(i) + "]";
+                const YAML::Node s = n[i];
+                if (!s.IsMap())
+                    r.fail(s, field, "expected a mapping {scenario, controllers, runs, seed, ...}");
+                r.allowKeys(s, field,
+                            {"scenario", "controllers", "runs", "seed", "start_jitter", "heading_jitter",
+                             "wall_limit"});
+                SimulationSpec sim;
+                sim.line = s.Mark().line + 1;
+                sim.scenario =
+                    r.nonEmptyText(r.require(s, "scenario", field + ".scenario"), field + ".scenario");
+                if (s["runs"].IsDefined())
+                    sim.runs = static_cast<unsigned int>(r.integer(s["runs"], field + ".runs", 1, 1000000));
+                if (s["seed"].IsDefined())
+                    sim.seed =
+                        static_cast<std::uint32_t>(r.integer(s["seed"], field + ".seed", 1, 4294967295LL));
+                if (s["start_jitter"].IsDefined())
+                    sim.startJitter = r.number(s["start_jitter"], field + ".start_jitter", 0.0, 1e6);
+                if (s["heading_jitter"].IsDefined())
+                    sim.headingJitter = r.number(s["heading_jitter"], field + ".heading_jitter", 0.0, 3.15);
+                if (s["wall_limit"].IsDefined())
+                    sim.wallLimit = r.number(s["wall_limit"], field + ".wall_limit", 1e-3, 1e7);
+                readControllers(r, r.require(s, "controllers", field + ".controllers"),
+                                field + ".controllers", sim);
+                c.simulations.push_back(std::move(sim));
+            }
+        }
+
         void readWorlds(const YamlReader &r, const YAML::Node &n, Campaign &c)
         {
             if (!n.IsSequence() || n.size() == 0)
@@ -150,7 +246,7 @@ namespace mhplan::bench
                              ":1: a campaign file must be a YAML mapping (see benchmarks/README.md)");
         r.allowKeys(root, "",
                     {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
-                     "progress_interval", "planner_data", "collision", "worlds", "planners"});
+                     "progress_interval", "planner_data", "collision", "worlds", "planners", "simulations"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
@@ -191,12 +287,20 @@ namespace mhplan::bench
         c.database =
             root["database"].IsDefined() ? r.nonEmptyText(root["database"], "database") : c.name + ".db";
         c.logDir = root["logs"].IsDefined() ? r.nonEmptyText(root["logs"], "logs") : c.database + ".logs";
-        if (!root["worlds"].IsDefined())
-            r.fail(root, "worlds", "missing");
-        readWorlds(r, root["worlds"], c);
-        if (!root["planners"].IsDefined())
-            r.fail(root, "planners", "missing");
-        readPlanners(r, root["planners"], c);
+        // A campaign may consist of simulations only; planning experiments need both worlds and planners.
+        const bool simulations = root["simulations"].IsDefined() && !root["simulations"].IsNull();
+        const bool planning = root["worlds"].IsDefined() || root["planners"].IsDefined() || !simulations;
+        if (planning)
+        {
+            if (!root["worlds"].IsDefined())
+                r.fail(root, "worlds", "missing");
+            readWorlds(r, root["worlds"], c);
+            if (!root["planners"].IsDefined())
+                r.fail(root, "planners", "missing");
+            readPlanners(r, root["planners"], c);
+        }
+        if (simulations)
+            readSimulations(r, root["simulations"], c);
         return c;
     }
 
@@ -268,15 +372,25 @@ namespace mhplan::bench
         std::vector<Experiment> out;
         std::set<std::string> names;
         const fs::path base = fs::path(campaign.file).parent_path();
+        const auto locate = [&](const std::string &arg)
+        {
+            const fs::path relative = base / arg;
+            if (!fs::path(arg).is_absolute() && fs::is_regular_file(relative))
+                return relative.string();
+            return resolve(arg);
+        };
         for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
         {
             const WorldSpec &spec = campaign.worlds[wi];
             std::string file;
-            const fs::path relative = base / spec.world;
-            if (!fs::path(spec.world).is_absolute() && fs::is_regular_file(relative))
-                file = relative.string();
-            else
-                file = resolve(spec.world);
+            try
+            {
+                file = locate(spec.world);
+            }
+            catch (const InputError &e)
+            {
+                throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: " + e.what());
+            }
             World world;
             try
             {
@@ -306,6 +420,7 @@ namespace mhplan::bench
                 e.worldFile = file;
                 e.worldName = world.name;
                 e.query = q.name;
+                e.runs = campaign.runs;
                 if (!names.insert(e.name).second)
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");
@@ -318,7 +433,82 @@ namespace mhplan::bench
                 out.push_back(std::move(e));
             }
         }
+
+        for (std::size_t si = 0; si < campaign.simulations.size(); ++si)
+        {
+            const SimulationSpec &spec = campaign.simulations[si];
+            const std::string where = campaign.file + ":" + std::to_string(spec.line) + ": simulations[" +
+                                      std::to_string(si) + "]: ";
+            std::string file;
+            Scenario scenario;
+            try
+            {
+                try
+                {
+                    file = locate(spec.scenario);
+                    if (!fs::is_regular_file(file))
+                        throw InputError("no such file");
+                }
+                catch (const InputError &)
+                {
+                    // Shipped scenarios live in environments/scenarios/: "mapf_2robots" names one.
+                    try
+                    {
+                        file = resolve("scenarios/" + spec.scenario);
+                    }
+                    catch (const InputError &)
+                    {
+                        throw InputError("scenario '" + spec.scenario +
+                                         "': no such file, and no shipped scenario of that name "
+                                         "(environments/scenarios/)");
+                    }
+                }
+                scenario = loadScenario(file);
+            }
+            catch (const InputError &e)
+            {
+                throw InputError(where + e.what());
+            }
+            Experiment e;
+            e.index = out.size();
+            e.simulation = si;
+            e.scenarioFile = file;
+            e.scenarioName = scenario.name;
+            e.name =
+                safeFileStem(scenario.name.empty() ? fs::path(file).stem().string() : scenario.name) + "-sim";
+            e.runs = spec.runs > 0 ? spec.runs : campaign.runs;
+            if (!names.insert(e.name).second)
+                throw InputError(where + "experiment '" + e.name +
+                                 "' appears twice (list every controller of a scenario in one entry)");
+            e.seed = deriveSeed(spec.seed > 0 ? spec.seed : campaign.seed, e.name, 0);
+            std::ostringstream all;
+            all.precision(17);
+            all << "simulation v1\nruns " << e.runs << "\nseed " << e.seed << "\nstart jitter "
+                << spec.startJitter << "\nheading jitter " << spec.headingJitter << "\nwall limit "
+                << spec.wallLimit << "\n";
+            for (const auto &ctl : spec.controllers)
+            {
+                all << "controller " << ctl.displayName << " " << ctl.controller;
+                for (const auto &kv : ctl.params)
+                    all << " " << kv.first << "=" << kv.second;
+                all << "\n";
+            }
+            all << "scenario " << readFile(file) << "\n";
+            e.configHash = fingerprint(all.str());
+            out.push_back(std::move(e));
+        }
         return out;
+    }
+
+    std::uint32_t simulationRunSeed(const Experiment &experiment, const std::string &displayName,
+                                    std::size_t run)
+    {
+        return deriveSeed(experiment.seed, "controller " + displayName, run);
+    }
+
+    std::uint32_t simulationStartSeed(const Experiment &experiment, std::size_t run)
+    {
+        return deriveSeed(experiment.seed, "start", run);
     }
 
     std::vector<Experiment> shardExperiments(const std::vector<Experiment> &all, unsigned int part,

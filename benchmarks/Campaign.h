@@ -38,6 +38,41 @@ namespace mhplan::bench
         std::vector<std::string> queries;
     };
 
+    /** \brief One controller configuration of a simulation experiment (Controllers.h). */
+    struct ControllerSpec
+    {
+        /** \brief Name in the logs and the database after "sim:" (default: the controller's name). */
+        std::string displayName;
+        /** \brief Controller name as makeController accepts it ("dapf", "aapf", "plan:ThetaStar", ...). */
+        std::string controller;
+        /** \brief Parameter overrides (Controller::setParameter), checked before anything runs. */
+        std::map<std::string, std::string> params;
+        /** \brief Line of the entry in the campaign file (1-based; 0 when built in code), for messages. */
+        int line{0};
+    };
+
+    /** \brief A simulation experiment of a campaign: one scenario (ScenarioIO.h), its controllers, runs. */
+    struct SimulationSpec
+    {
+        /** \brief As written: a scenario file path (relative to the campaign file first) or a shipped name.
+         */
+        std::string scenario;
+        std::vector<ControllerSpec> controllers;
+        /** \brief Runs per controller; 0: the campaign's \c runs. */
+        unsigned int runs{0};
+        /** \brief Base seed of this experiment; 0: the campaign's \c seed. */
+        std::uint32_t seed{0};
+        /** \brief Each run k starts every robot at a point drawn uniformly from the disc of this radius (m)
+            about its scenario start (redrawn while invalid); the same draw for every controller at run k. */
+        double startJitter{0.0};
+        /** \brief Each run k turns every robot's initial heading by a uniform angle in [-h, h] (rad). */
+        double headingJitter{0.0};
+        /** \brief A run that gives no result within this many wall-clock seconds is killed (Crash). */
+        double wallLimit{600.0};
+        /** \brief Line of the entry in the campaign file (1-based; 0 when built in code), for messages. */
+        int line{0};
+    };
+
     /** \brief A parsed campaign file. */
     struct Campaign
     {
@@ -46,6 +81,9 @@ namespace mhplan::bench
         std::string file;
         std::vector<WorldSpec> worlds;
         std::vector<PlannerSpec> planners;
+        /** \brief Simulation experiments (may be the only experiments: then worlds and planners may be
+            absent). */
+        std::vector<SimulationSpec> simulations;
         /** \brief Seconds per run. */
         double timeLimit{1.0};
         /** \brief MB per run (OMPL's termination condition checks the process's memory). */
@@ -73,9 +111,11 @@ namespace mhplan::bench
     /** \brief Parse campaign YAML; \e fileName is used in messages and to resolve relative world paths. */
     Campaign parseCampaign(const std::string &text, const std::string &fileName);
 
-    /** \brief One (world, query) experiment of a campaign. */
+    /** \brief One (world, query) planning experiment or one scenario's simulation experiment. */
     struct Experiment
     {
+        /** \brief Marks a planning experiment in \c simulation. */
+        static constexpr std::size_t kNoSimulation = static_cast<std::size_t>(-1);
         /** \brief Position in the campaign's enumeration (worlds in order, then their queries). */
         std::size_t index{0};
         /** \brief "WORLD-QUERY" (also the log file's stem). */
@@ -83,7 +123,14 @@ namespace mhplan::bench
         std::string worldFile;
         std::string worldName;
         std::string query;
-        /** \brief deriveSeed(campaign seed, name, 0). */
+        /** \brief For a simulation experiment: its index in Campaign::simulations (else kNoSimulation). */
+        std::size_t simulation{kNoSimulation};
+        /** \brief For a simulation experiment: the scenario file and the scenario's name. */
+        std::string scenarioFile;
+        std::string scenarioName;
+        /** \brief Runs per planner or controller. */
+        unsigned int runs{0};
+        /** \brief deriveSeed(campaign seed, name, 0) (simulations: their own seed when given). */
         std::uint32_t seed{1};
         /** \brief Fingerprint of everything that determines the experiment's results (world file contents,
             query, planners, limits, runs, seeds); a log with another fingerprint is re-run. */
@@ -94,9 +141,19 @@ namespace mhplan::bench
     using WorldResolver = std::function<std::string(const std::string &)>;
 
     /** \brief Load every world of the campaign, check its queries and list the experiments in campaign
-        order. Relative world paths are tried relative to the campaign file first, then given to
-        \e resolve. Throws InputError for a missing world or query or a duplicate experiment. */
+        order: the planning experiments (worlds in order, then their queries), then one experiment per
+        simulation entry ("SCENARIO-sim"). Relative world and scenario paths are tried relative to the
+        campaign file first, then given to \e resolve. Throws InputError for a missing world, query or
+        scenario, a bad scenario file, or a duplicate experiment. */
     std::vector<Experiment> enumerateExperiments(const Campaign &campaign, const WorldResolver &resolve);
+
+    /** \brief The seed of run \e run of controller \e displayName in a simulation experiment (also the
+        seed of that run's process and of its Simulation). */
+    std::uint32_t simulationRunSeed(const Experiment &experiment, const std::string &displayName,
+                                    std::size_t run);
+    /** \brief The seed of the start perturbation of run \e run of a simulation experiment (shared by all
+        its controllers, so that their runs are paired). */
+    std::uint32_t simulationStartSeed(const Experiment &experiment, std::size_t run);
 
     /** \brief The seed of a sub-task: a 64-bit mix (splitmix64 over FNV-1a) of \e base, \e label and
         \e index, mapped to [1, 2^32 - 1] (OMPL refuses 0). */

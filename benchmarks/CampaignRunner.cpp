@@ -1,16 +1,22 @@
 #include "CampaignRunner.h"
 
 #include "Collision.h"
+#include "Controllers.h"
 #include "Metrics.h"
 #include "Problem.h"
 #include "Registry.h"
+#include "ScenarioIO.h"
+#include "Simulation.h"
 #include "Version.h"
 #include "World.h"
 #include "WorldIO.h"
 
 #include "Optimum.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/tools/benchmark/MachineSpecs.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -34,6 +40,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -452,6 +459,148 @@ namespace mhplan::bench
             std::string cpuInfo;
         };
 
+        /** How a run process ended. */
+        struct ChildOutcome
+        {
+            /** Killed by the watchdog (no message for \c watchdog seconds). */
+            bool killed{false};
+            /** waitpid status. */
+            int status{0};
+            /** Text of an 'X' message (an exception in the run process). */
+            std::string error;
+            /** Seconds from the last message (or the start) to the end, capped at the watchdog when killed:
+                the time recorded for a crashed run. */
+            double elapsed{0.0};
+            /** Seconds from the fork to the end. */
+            double runSeconds{0.0};
+        };
+
+        /** Fork a run process that executes \e body(fd) (which must end the process with _exit), hand each
+            message it sends to \e onMessage (with the seconds since the fork), and kill it when it sends
+            nothing for \e watchdog seconds. */
+        ChildOutcome runChildProcess(int progressFd, double watchdog, const std::function<void(int)> &body,
+                                     const std::function<void(const Message &, double)> &onMessage)
+        {
+            int fds[2];
+            if (::pipe(fds) != 0)
+                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            if (pid == 0)
+            {
+                ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+                const rlimit noCore{0, 0}; // a crashing run leaves no core file behind
+                ::setrlimit(RLIMIT_CORE, &noCore);
+                ::close(fds[0]);
+                ::close(progressFd);
+                body(fds[1]);
+                ::_exit(5); // body must not return
+            }
+            ::close(fds[1]);
+            ChildOutcome out;
+            MessageReader reader;
+            const Clock::time_point runStart = Clock::now();
+            Clock::time_point last = runStart;
+            char buf[65536];
+            while (true)
+            {
+                pollfd pfd{fds[0], POLLIN, 0};
+                const int r = ::poll(&pfd, 1, 200);
+                if (r < 0 && errno == EINTR)
+                    continue;
+                if (r == 0)
+                {
+                    if (secondsSince(last) > watchdog)
+                    {
+                        ::kill(pid, SIGKILL);
+                        out.killed = true;
+                        break;
+                    }
+                    continue;
+                }
+                const ssize_t n = ::read(fds[0], buf, sizeof(buf));
+                if (n < 0 && errno == EINTR)
+                    continue;
+                if (n <= 0)
+                    break;
+                reader.feed(buf, static_cast<std::size_t>(n));
+                Message m;
+                while (reader.next(m))
+                {
+                    last = Clock::now();
+                    if (m.type == 'X')
+                        out.error = m.payload;
+                    else
+                        onMessage(m, secondsSince(runStart));
+                }
+            }
+            ::close(fds[0]);
+            while (::waitpid(pid, &out.status, 0) < 0 && errno == EINTR)
+            {
+            }
+            out.elapsed = std::min(secondsSince(last), out.killed ? watchdog : 1e9);
+            out.runSeconds = secondsSince(runStart);
+            return out;
+        }
+
+        /** Tell the campaign process that a run ended: "r EXPERIMENT CRASHED SLOT SECONDS". */
+        void reportRun(int progressFd, std::size_t experiment, bool crashed, std::size_t slot, double seconds)
+        {
+            std::ostringstream msg;
+            msg << "r " << experiment << " " << (crashed ? 1 : 0) << " " << slot << " " << seconds << "\n";
+            writeAll(progressFd, msg.str());
+        }
+
+        void reportCrash(const std::string &experiment, const std::string &what, std::size_t run,
+                         const ChildOutcome &outcome, double watchdog)
+        {
+            std::ostringstream why;
+            if (outcome.killed)
+                why << "killed after " << watchdog << " s without progress";
+            else if (WIFSIGNALED(outcome.status))
+                why << "signal " << WTERMSIG(outcome.status) << " (" << strsignal(WTERMSIG(outcome.status))
+                    << ")";
+            else
+                why << "exit code " << WEXITSTATUS(outcome.status) << (outcome.error.empty() ? "" : ": ")
+                    << outcome.error;
+            std::cerr << (::isatty(2) ? "\n" : "") << "mhplan bench: " << experiment << ": " << what
+                      << " run " << run << " crashed (" << why.str() << "); recorded as Crash\n";
+        }
+
+        /** Write an experiment's path sidecar and then (atomically, last: a log on disk means a finished
+            experiment) its log with OMPL's writer and the real version line. */
+        void writeExperimentFiles(const Campaign &c, const Experiment &e, const AssembledBenchmark &bench,
+                                  const std::string &paths)
+        {
+            std::ostringstream log;
+            bench.saveResultsToStream(log);
+            std::string text = log.str();
+            // Debian's OMPL 1.5.2 writes an empty version ("OMPL version "); Planner Arena needs the real
+            // one.
+            const std::string versionLine = "OMPL version " + omplVersion();
+            if (text.rfind("OMPL version", 0) == 0)
+                text.replace(0, text.find('\n'), versionLine);
+            else
+                text = versionLine + "\n" + text;
+            fs::create_directories(c.logDir);
+            const auto atomicWrite = [](const std::string &file, const std::string &content)
+            {
+                const std::string tmp = file + ".tmp" + std::to_string(::getpid());
+                {
+                    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+                    out << content;
+                    if (!out)
+                        throw std::runtime_error("cannot write '" + tmp + "'");
+                }
+                fs::rename(tmp, file);
+            };
+            atomicWrite(pathsFile(c, e), paths);
+            atomicWrite(logFile(c, e), text);
+        }
+
         /** Experiment process: run every planner of the campaign on this experiment in child processes,
             then write the log and the path sidecar. Reports each run to \e progressFd. */
         int runExperimentProcess(ExperimentSetup &xs, int progressFd, double &solveSeconds)
@@ -477,56 +626,10 @@ namespace mhplan::bench
                 for (std::size_t next = 0; next < c.runs; ++next)
                 {
                     const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
-                    int fds[2];
-                    if (::pipe(fds) != 0)
-                        throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-                    std::cout.flush();
-                    std::cerr.flush();
-                    const pid_t pid = ::fork();
-                    if (pid < 0)
-                        throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-                    if (pid == 0)
-                    {
-                        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-                        const rlimit noCore{0, 0}; // a crashing planner leaves no core file behind
-                        ::setrlimit(RLIMIT_CORE, &noCore);
-                        ::close(fds[0]);
-                        ::close(progressFd);
-                        runPlannerChild(xs, spec, next, seed, fds[1]);
-                    }
-                    ::close(fds[1]);
-                    MessageReader reader;
-                    const Clock::time_point runStart = Clock::now();
-                    Clock::time_point last = runStart;
-                    bool killed = false;
-                    std::string childError;
-                    char buf[65536];
-                    while (true)
-                    {
-                        pollfd pfd{fds[0], POLLIN, 0};
-                        const int r = ::poll(&pfd, 1, 200);
-                        if (r < 0 && errno == EINTR)
-                            continue;
-                        if (r == 0)
+                    const ChildOutcome outcome = runChildProcess(
+                        progressFd, watchdog, [&](int fd) { runPlannerChild(xs, spec, next, seed, fd); },
+                        [&](const Message &m, double runSeconds)
                         {
-                            if (secondsSince(last) > watchdog)
-                            {
-                                ::kill(pid, SIGKILL);
-                                killed = true;
-                                break;
-                            }
-                            continue;
-                        }
-                        const ssize_t n = ::read(fds[0], buf, sizeof(buf));
-                        if (n < 0 && errno == EINTR)
-                            continue;
-                        if (n <= 0)
-                            break;
-                        reader.feed(buf, static_cast<std::size_t>(n));
-                        Message m;
-                        while (reader.next(m))
-                        {
-                            last = Clock::now();
                             if (m.type == 'C')
                                 rec.common = decodeMap(m.payload);
                             else if (m.type == 'S')
@@ -550,11 +653,8 @@ namespace mhplan::bench
                                 const auto t = props.find("time REAL");
                                 if (t != props.end())
                                     solveSeconds += std::atof(t->second.c_str());
-                                const bool crash = props["status ENUM"] == std::to_string(crashCode);
-                                std::ostringstream msg;
-                                msg << "r " << e.index << " " << (crash ? 1 : 0) << " " << pi << " "
-                                    << secondsSince(runStart) << "\n";
-                                writeAll(progressFd, msg.str());
+                                reportRun(progressFd, e.index,
+                                          props["status ENUM"] == std::to_string(crashCode), pi, runSeconds);
                             }
                             else if (m.type == 'G' && m.index < c.runs)
                             {
@@ -563,21 +663,12 @@ namespace mhplan::bench
                                     data.push_back(decodeMap(sample));
                                 rec.progress[m.index] = data;
                             }
-                            else if (m.type == 'X')
-                                childError = m.payload;
-                        }
-                    }
-                    ::close(fds[0]);
-                    int status = 0;
-                    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
-                    {
-                    }
+                        });
                     const std::size_t k = next;
                     if (rec.have[k])
                         continue;
                     ot::Benchmark::RunProperties crash;
-                    const double elapsed = std::min(secondsSince(last), killed ? watchdog : 1e9);
-                    crash["time REAL"] = num(elapsed);
+                    crash["time REAL"] = num(outcome.elapsed);
                     crash["status ENUM"] = std::to_string(crashCode);
                     crash["solved BOOLEAN"] = "0";
                     crash["run index INTEGER"] = std::to_string(k);
@@ -585,21 +676,9 @@ namespace mhplan::bench
                     crash["exact optimum length REAL"] = num(xs.optimum);
                     rec.runs[k] = crash;
                     rec.have[k] = true;
-                    solveSeconds += elapsed;
-                    std::ostringstream msg;
-                    msg << "r " << e.index << " 1 " << pi << " " << secondsSince(runStart) << "\n";
-                    writeAll(progressFd, msg.str());
-                    std::ostringstream why;
-                    if (killed)
-                        why << "killed after " << watchdog << " s without progress";
-                    else if (WIFSIGNALED(status))
-                        why << "signal " << WTERMSIG(status) << " (" << strsignal(WTERMSIG(status)) << ")";
-                    else
-                        why << "exit code " << WEXITSTATUS(status) << (childError.empty() ? "" : ": ")
-                            << childError;
-                    std::cerr << (::isatty(2) ? "\n" : "") << "mhplan bench: " << e.name << ": planner "
-                              << spec.displayName << " run " << k << " crashed (" << why.str()
-                              << "); recorded as Crash\n";
+                    solveSeconds += outcome.elapsed;
+                    reportRun(progressFd, e.index, true, pi, outcome.runSeconds);
+                    reportCrash(e.name, "planner " + spec.displayName, k, outcome, watchdog);
                 }
             }
 
@@ -622,6 +701,7 @@ namespace mhplan::bench
                 setupInfo << r.properties;
             x.setupInfo = setupInfo.str();
             x.parameters["campaign TEXT"] = c.name;
+            x.parameters["kind TEXT"] = "planning";
             x.parameters["world TEXT"] = xs.world.name;
             x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
             x.parameters["world_type TEXT"] = xs.world.type();
@@ -657,17 +737,6 @@ namespace mhplan::bench
             }
             x.totalDuration = secondsSince(t0);
 
-            std::ostringstream log;
-            bench.saveResultsToStream(log);
-            std::string text = log.str();
-            // Debian's OMPL 1.5.2 writes an empty version ("OMPL version "); Planner Arena needs the real
-            // one.
-            const std::string versionLine = "OMPL version " + omplVersion();
-            if (text.rfind("OMPL version", 0) == 0)
-                text.replace(0, text.find('\n'), versionLine);
-            else
-                text = versionLine + "\n" + text;
-
             std::ostringstream paths;
             paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n";
             for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
@@ -675,22 +744,282 @@ namespace mhplan::bench
                     if (!records[pi].paths[k].empty())
                         paths << "geometric_" << c.planners[pi].displayName << "\t" << k << "\t"
                               << records[pi].paths[k] << "\n";
+            writeExperimentFiles(c, e, bench, paths.str());
+            return 0;
+        }
 
-            // Paths first, the log last: a log on disk means a finished experiment.
-            fs::create_directories(c.logDir);
-            const auto atomicWrite = [](const std::string &file, const std::string &content)
+        // --- simulation experiments -----------------------------------------------------------------------
+
+        /** Everything the run processes of a simulation experiment share. */
+        struct SimulationSetup
+        {
+            const Campaign *campaign{nullptr};
+            const Experiment *experiment{nullptr};
+            const SimulationSpec *spec{nullptr};
+            Scenario scenario;
+            /** Progress slot of the first controller (see ProgressBar). */
+            std::size_t slotBase{0};
+        };
+
+        /** A run or log property name from a free-form label: lower case letters, digits and single blanks.
+         */
+        std::string propertyWords(const std::string &label)
+        {
+            std::string out;
+            bool blank = false;
+            for (char ch : label)
             {
-                const std::string tmp = file + ".tmp" + std::to_string(::getpid());
+                const auto u = static_cast<unsigned char>(ch);
+                if (std::isalnum(u))
                 {
-                    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-                    out << content;
-                    if (!out)
-                        throw std::runtime_error("cannot write '" + tmp + "'");
+                    if (blank && !out.empty())
+                        out += ' ';
+                    blank = false;
+                    out += static_cast<char>(std::tolower(u));
                 }
-                fs::rename(tmp, file);
-            };
-            atomicWrite(pathsFile(c, e), paths.str());
-            atomicWrite(logFile(c, e), text);
+                else
+                    blank = true;
+            }
+            return out.empty() ? "unnamed" : out;
+        }
+
+        /** One line of text (log values must not span lines). */
+        std::string oneLine(std::string s)
+        {
+            for (char &ch : s)
+                if (ch == '\n' || ch == '\r')
+                    ch = ' ';
+            return s;
+        }
+
+        /** The run properties of a simulation run (column names: the words joined by '_'). */
+        ot::Benchmark::RunProperties simulationProperties(const SimulationResult &r, double wallSeconds)
+        {
+            ot::Benchmark::RunProperties run;
+            const std::size_t robots = r.robots.size();
+            int status = static_cast<int>(ob::PlannerStatus::TIMEOUT);
+            if (r.allDone)
+                status = static_cast<int>(ob::PlannerStatus::EXACT_SOLUTION);
+            else if (r.done > 0)
+                status = static_cast<int>(ob::PlannerStatus::APPROXIMATE_SOLUTION);
+            double traversal = 0.0, length = 0.0;
+            for (const auto &rr : r.robots)
+            {
+                traversal += rr.traversalTime;
+                length += rr.pathLength;
+            }
+            run["time REAL"] = num(wallSeconds);
+            run["status ENUM"] = std::to_string(status);
+            run["solved BOOLEAN"] = r.allDone ? "1" : "0";
+            run["makespan REAL"] = num(r.makespan);
+            run["flowtime REAL"] = num(r.flowtime);
+            run["mean traversal time REAL"] = num(robots ? traversal / static_cast<double>(robots)
+                                                         : std::numeric_limits<double>::quiet_NaN());
+            run["collisions INTEGER"] = std::to_string(r.collisions());
+            run["static collisions INTEGER"] = std::to_string(r.staticCollisions);
+            run["moving collisions INTEGER"] = std::to_string(r.movingCollisions);
+            run["robot collisions INTEGER"] = std::to_string(r.robotCollisions);
+            run["robots done INTEGER"] = std::to_string(r.done);
+            run["robots stuck INTEGER"] = std::to_string(r.stuck);
+            run["robots unfinished INTEGER"] = std::to_string(r.unfinished);
+            run["min robot distance REAL"] = num(r.minRobotDistance);
+            run["min obstacle clearance REAL"] = num(r.minObstacleClearance);
+            run["total path length REAL"] = num(length);
+            run["steps INTEGER"] = std::to_string(r.steps);
+            run["simulated time REAL"] = num(r.simulatedTime);
+            run["robot steps INTEGER"] = std::to_string(r.robotSteps);
+            run["robot steps per second REAL"] =
+                num(wallSeconds > 0.0 ? static_cast<double>(r.robotSteps) / wallSeconds
+                                      : std::numeric_limits<double>::quiet_NaN());
+            for (const auto &kv : r.counters)
+                run["controller " + propertyWords(kv.first) + " REAL"] = num(kv.second);
+            return run;
+        }
+
+        /** Run process of a simulation: controller \e spec on the scenario (starts perturbed by
+            \e startSeed), seeded with \e seed, properties sent to \e fd. Never returns. */
+        [[noreturn]] void runSimulationChild(const SimulationSetup &xs, const ControllerSpec &spec,
+                                             std::size_t runIndex, std::uint32_t seed,
+                                             std::uint32_t startSeed, int fd)
+        {
+            int code = 0;
+            try
+            {
+                ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                // As for planners: the seed before any random number generator exists in this process
+                // (plan-then-follow controllers run OMPL planners).
+                ompl::RNG::setSeed(seed);
+                Scenario scenario = xs.scenario;
+                applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
+                const ControllerPtr controller = makeController(spec.controller);
+                for (const auto &kv : spec.params)
+                    controller->setParameter(kv.first, kv.second);
+                std::map<std::string, std::string> common;
+                for (const auto &kv : controller->parameters())
+                    common[oneLine(kv.first)] = oneLine(kv.second);
+                common["controller"] = spec.controller;
+                sendMessage(fd, 'C', 0, encodeMap(common));
+                Simulation sim(std::move(scenario), controller, seed);
+                const Clock::time_point t0 = Clock::now();
+                const SimulationResult result = sim.run();
+                const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
+                ot::Benchmark::RunProperties run = simulationProperties(result, wall);
+                run["run index INTEGER"] = std::to_string(runIndex);
+                run["run seed INTEGER"] = std::to_string(seed);
+                run["start seed INTEGER"] = std::to_string(startSeed);
+                sendMessage(fd, 'R', runIndex, encodeMap(run));
+                sendMessage(fd, 'E', runIndex, "");
+            }
+            catch (const std::exception &e)
+            {
+                sendMessage(fd, 'X', 0, e.what());
+                code = 3;
+            }
+            catch (...)
+            {
+                sendMessage(fd, 'X', 0, "unknown exception");
+                code = 3;
+            }
+            ::close(fd);
+            ::_exit(code);
+        }
+
+        /** Experiment process of a simulation experiment: every controller, every run, each in its own
+            process; then the log (OMPL's format and writer) and an empty path sidecar. */
+        int runSimulationProcess(SimulationSetup &xs, int progressFd, double &solveSeconds)
+        {
+            const Campaign &c = *xs.campaign;
+            const Experiment &e = *xs.experiment;
+            const SimulationSpec &spec = *xs.spec;
+            const Clock::time_point t0 = Clock::now();
+            const ompl::time::point start = ompl::time::now();
+            const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
+            const double watchdog = spec.wallLimit;
+            solveSeconds = 0.0;
+            std::vector<PlannerRecord> records(spec.controllers.size());
+            for (std::size_t ci = 0; ci < spec.controllers.size(); ++ci)
+            {
+                const ControllerSpec &ctl = spec.controllers[ci];
+                PlannerRecord &rec = records[ci];
+                rec.runs.resize(e.runs);
+                rec.have.assign(e.runs, false);
+                for (std::size_t k = 0; k < e.runs; ++k)
+                {
+                    const std::uint32_t seed = simulationRunSeed(e, ctl.displayName, k);
+                    const std::uint32_t startSeed = simulationStartSeed(e, k);
+                    const ChildOutcome outcome = runChildProcess(
+                        progressFd, watchdog,
+                        [&](int fd) { runSimulationChild(xs, ctl, k, seed, startSeed, fd); },
+                        [&](const Message &m, double runSeconds)
+                        {
+                            if (m.type == 'C')
+                                rec.common = decodeMap(m.payload);
+                            else if (m.type == 'R' && m.index < e.runs)
+                            {
+                                auto props = decodeMap(m.payload);
+                                rec.runs[m.index] = props;
+                                rec.have[m.index] = true;
+                                solveSeconds += std::atof(props["time REAL"].c_str());
+                                reportRun(progressFd, e.index, false, xs.slotBase + ci, runSeconds);
+                            }
+                        });
+                    if (rec.have[k])
+                        continue;
+                    ot::Benchmark::RunProperties crash;
+                    crash["time REAL"] = num(outcome.elapsed);
+                    crash["status ENUM"] = std::to_string(crashCode);
+                    crash["solved BOOLEAN"] = "0";
+                    crash["run index INTEGER"] = std::to_string(k);
+                    crash["run seed INTEGER"] = std::to_string(seed);
+                    crash["start seed INTEGER"] = std::to_string(startSeed);
+                    rec.runs[k] = crash;
+                    rec.have[k] = true;
+                    solveSeconds += outcome.elapsed;
+                    reportRun(progressFd, e.index, true, xs.slotBase + ci, outcome.runSeconds);
+                    reportCrash(e.name, "controller " + ctl.displayName, k, outcome, watchdog);
+                }
+            }
+
+            // OMPL's benchmark record needs a SimpleSetup: the plane of the scenario's bounds.
+            const Box &b = xs.scenario.world.bounds;
+            auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+            ob::RealVectorBounds bounds(2);
+            bounds.setLow(0, b.xmin);
+            bounds.setHigh(0, b.xmax);
+            bounds.setLow(1, b.ymin);
+            bounds.setHigh(1, b.ymax);
+            space->setBounds(bounds);
+            og::SimpleSetup ss(space);
+            AssembledBenchmark bench(ss, e.name);
+            auto &x = bench.experiment();
+            x.name = e.name;
+            x.maxTime = xs.scenario.settings.timeLimit; // simulated seconds
+            x.maxMem = c.memoryLimit;
+            x.runCount = e.runs;
+            x.startTime = start;
+            x.seed = e.seed;
+            x.host = ompl::machine::getHostname();
+            x.cpuInfo = ompl::machine::getCPUInfo();
+            std::ostringstream setup;
+            setup << "mhplan simulation experiment: scenario " << xs.scenario.name << " (" << e.scenarioFile
+                  << ")\n";
+            if (!xs.scenario.description.empty())
+                setup << "description: " << oneLine(xs.scenario.description) << "\n";
+            if (!xs.scenario.source.empty())
+                setup << "source: " << oneLine(xs.scenario.source) << "\n";
+            if (!xs.scenario.assumptions.empty())
+                setup << "assumptions: " << oneLine(xs.scenario.assumptions) << "\n";
+            setup << "robots: " << xs.scenario.robots.size()
+                  << ", moving obstacles: " << xs.scenario.movingObstacles.size()
+                  << ", static obstacles: " << xs.scenario.world.obstacleCount() << "\ndt "
+                  << xs.scenario.settings.dt << " s, time limit " << xs.scenario.settings.timeLimit
+                  << " s (simulated), stuck timeout " << xs.scenario.settings.stuckTimeout << " s\n"
+                  << "start jitter " << spec.startJitter << " m, heading jitter " << spec.headingJitter
+                  << " rad\n";
+            for (std::size_t ci = 0; ci < spec.controllers.size(); ++ci)
+            {
+                setup << "controller sim:" << spec.controllers[ci].displayName << " ("
+                      << spec.controllers[ci].controller << ")";
+                for (const auto &kv : records[ci].common)
+                    if (kv.first != "controller")
+                        setup << " " << kv.first << "=" << kv.second;
+                setup << "\n";
+            }
+            x.setupInfo = setup.str();
+            x.parameters["campaign TEXT"] = c.name;
+            x.parameters["kind TEXT"] = "simulation";
+            x.parameters["scenario TEXT"] = oneLine(xs.scenario.name);
+            x.parameters["scenario_file TEXT"] = fs::absolute(e.scenarioFile).lexically_normal().string();
+            x.parameters["obstacle_count INTEGER"] = std::to_string(xs.scenario.world.obstacleCount());
+            x.parameters["robot_count INTEGER"] = std::to_string(xs.scenario.robots.size());
+            x.parameters["moving_obstacle_count INTEGER"] =
+                std::to_string(xs.scenario.movingObstacles.size());
+            x.parameters["start_jitter REAL"] = num(spec.startJitter);
+            x.parameters["heading_jitter REAL"] = num(spec.headingJitter);
+            x.parameters["sim_dt REAL"] = num(xs.scenario.settings.dt);
+            x.parameters["sim_time_limit REAL"] = num(xs.scenario.settings.timeLimit);
+            for (const auto &kv : xs.scenario.reference)
+            {
+                // Experiment properties go to the database verbatim: only finite numbers.
+                std::string key = propertyWords(kv.first);
+                std::replace(key.begin(), key.end(), ' ', '_');
+                if (std::isfinite(kv.second))
+                    x.parameters["reference_" + key + " REAL"] = num(kv.second);
+            }
+            x.parameters["config_hash TEXT"] = e.configHash;
+            x.parameters["mhplan_version TEXT"] = version();
+            for (std::size_t ci = 0; ci < spec.controllers.size(); ++ci)
+            {
+                ot::Benchmark::PlannerExperiment pe;
+                pe.name = "sim:" + spec.controllers[ci].displayName;
+                pe.common = records[ci].common;
+                pe.runs = records[ci].runs;
+                x.planners.push_back(std::move(pe));
+            }
+            x.totalDuration = secondsSince(t0);
+            writeExperimentFiles(c, e, bench,
+                                 "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n"
+                                 "# (simulation experiment: no paths)\n");
             return 0;
         }
 
@@ -778,6 +1107,60 @@ namespace mhplan::bench
                 throw std::runtime_error("checking the campaign's planners crashed the checking process");
         }
 
+        /** Check every controller and parameter of the simulations in a throw-away process (controllers may
+            own planners and random number generators). Messages name the campaign file and line. */
+        void validateControllers(const Campaign &c)
+        {
+            int fds[2];
+            if (::pipe(fds) != 0)
+                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            if (pid == 0)
+            {
+                ::close(fds[0]);
+                std::string error;
+                ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+                for (std::size_t si = 0; si < c.simulations.size() && error.empty(); ++si)
+                    for (std::size_t ci = 0; ci < c.simulations[si].controllers.size() && error.empty(); ++ci)
+                    {
+                        const ControllerSpec &spec = c.simulations[si].controllers[ci];
+                        try
+                        {
+                            const ControllerPtr controller = makeController(spec.controller);
+                            for (const auto &kv : spec.params)
+                                controller->setParameter(kv.first, kv.second);
+                        }
+                        catch (const std::exception &ex)
+                        {
+                            error = c.file + ":" + std::to_string(spec.line) + ": simulations[" +
+                                    std::to_string(si) + "].controllers[" + std::to_string(ci) + "] (" +
+                                    spec.displayName + "): " + ex.what();
+                        }
+                    }
+                writeAll(fds[1], error);
+                ::close(fds[1]);
+                ::_exit(0);
+            }
+            ::close(fds[1]);
+            std::string error;
+            char buf[4096];
+            ssize_t n;
+            while ((n = ::read(fds[0], buf, sizeof(buf))) > 0 || (n < 0 && errno == EINTR))
+                if (n > 0)
+                    error.append(buf, static_cast<std::size_t>(n));
+            ::close(fds[0]);
+            int status = 0;
+            ::waitpid(pid, &status, 0);
+            if (!error.empty())
+                throw InputError(error);
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+                throw std::runtime_error("checking the campaign's controllers crashed the checking process");
+        }
+
         std::string formatDuration(double s)
         {
             if (!std::isfinite(s) || s < 0)
@@ -799,30 +1182,33 @@ namespace mhplan::bench
         class ProgressBar
         {
           public:
-            ProgressBar(bool enabled, std::size_t experiments, std::size_t runs, std::size_t planners,
-                        double timeLimit)
-                : enabled_(enabled), experiments_(experiments), runs_(runs), start_(Clock::now()),
-                  timeLimit_(timeLimit), sum_(planners, 0.0), count_(planners, 0)
+            /** \e slotRuns: runs to do per slot (a planner, or a controller of a simulation); \e guess: the
+                seconds assumed per run of a slot not seen yet. */
+            ProgressBar(bool enabled, std::size_t experiments, std::vector<std::size_t> slotRuns,
+                        double guess)
+                : enabled_(enabled), experiments_(experiments), start_(Clock::now()), guess_(guess),
+                  total_(std::move(slotRuns)), sum_(total_.size(), 0.0), count_(total_.size(), 0)
             {
+                for (std::size_t n : total_)
+                    runs_ += n;
             }
-            void recordRun(std::size_t planner, double seconds)
+            void recordRun(std::size_t slot, double seconds)
             {
-                if (planner < sum_.size())
+                if (slot < sum_.size())
                 {
-                    sum_[planner] += seconds;
-                    ++count_[planner];
+                    sum_[slot] += seconds;
+                    ++count_[slot];
                 }
             }
             /** Seconds still needed, or a negative number when unknown. */
             double eta() const
             {
-                const std::size_t perPlanner = sum_.empty() ? 0 : runs_ / sum_.size();
                 double done = 0.0, todo = 0.0;
                 for (std::size_t p = 0; p < sum_.size(); ++p)
                 {
                     done += sum_[p];
-                    const double mean = count_[p] ? sum_[p] / static_cast<double>(count_[p]) : timeLimit_;
-                    todo += mean * static_cast<double>(perPlanner > count_[p] ? perPlanner - count_[p] : 0);
+                    const double mean = count_[p] ? sum_[p] / static_cast<double>(count_[p]) : guess_;
+                    todo += mean * static_cast<double>(total_[p] > count_[p] ? total_[p] - count_[p] : 0);
                 }
                 if (!(done > 0.0))
                     return -1.0;
@@ -860,14 +1246,72 @@ namespace mhplan::bench
           private:
             bool enabled_;
             std::size_t experiments_;
-            std::size_t runs_;
+            std::size_t runs_{0};
             Clock::time_point start_;
             Clock::time_point lastDraw_{};
-            double timeLimit_;
+            double guess_;
+            std::vector<std::size_t> total_;
             std::vector<double> sum_;
             std::vector<std::size_t> count_;
         };
     } // namespace
+
+    void applyStartJitter(Scenario &scenario, double startJitter, double headingJitter, std::uint32_t seed)
+    {
+        if (!(startJitter > 0.0) && !(headingJitter > 0.0))
+            return;
+        std::uint64_t state = seed;
+        const auto uniform = [&state]
+        {
+            std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+            z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+            z ^= z >> 31;
+            return static_cast<double>(z >> 11) * 0x1.0p-53; // [0, 1)
+        };
+        World pointWorld = scenario.world;
+        pointWorld.robotRadius = 0.0;
+        pointWorld.queries.clear();
+        const CollisionModelPtr model = makeCollisionModel(pointWorld);
+        const Box &b = scenario.world.bounds;
+        constexpr double kTwoPi = 6.283185307179586;
+        auto &robots = scenario.robots;
+        for (std::size_t i = 0; i < robots.size(); ++i)
+        {
+            RobotSpec &r = robots[i];
+            if (startJitter > 0.0)
+            {
+                const auto valid = [&](const Vec2 &p)
+                {
+                    if (!(p.x >= b.xmin + r.radius && p.x <= b.xmax - r.radius && p.y >= b.ymin + r.radius &&
+                          p.y <= b.ymax - r.radius))
+                        return false;
+                    if (model->clearance(p) < r.radius)
+                        return false;
+                    for (std::size_t j = 0; j < robots.size(); ++j)
+                        if (j != i && distance(p, robots[j].start) < r.radius + robots[j].radius)
+                            return false;
+                    for (const auto &o : scenario.movingObstacles)
+                        if (distance(p, o.motion.positionAt(r.joinTime)) < r.radius + o.radius)
+                            return false;
+                    return true;
+                };
+                for (int attempt = 0; attempt < 1000; ++attempt)
+                {
+                    const double rho = startJitter * std::sqrt(uniform());
+                    const double phi = kTwoPi * uniform();
+                    const Vec2 p(r.start.x + rho * std::cos(phi), r.start.y + rho * std::sin(phi));
+                    if (valid(p))
+                    {
+                        r.start = p;
+                        break;
+                    }
+                }
+            }
+            if (headingJitter > 0.0)
+                r.heading += (2.0 * uniform() - 1.0) * headingJitter;
+        }
+    }
 
     bool logIsComplete(const std::string &log, const std::string &configHash)
     {
@@ -905,12 +1349,31 @@ namespace mhplan::bench
 
         const std::vector<Experiment> all = enumerateExperiments(campaign, options.resolveWorld);
         const std::vector<Experiment> mine = shardExperiments(all, options.shardIndex, options.shardCount);
+        if (all.empty())
+            throw InputError(campaign.file + ": the campaign has no experiments (no worlds, no simulations)");
         for (const auto &p : campaign.planners)
             registry.get(p.planner); // unknown names fail here with the list of registered planners
+        if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
         {
             const World world = loadWorld(all.front().worldFile);
             validatePlanners(campaign, registry, world, world.query(all.front().query));
         }
+        if (!campaign.simulations.empty())
+            validateControllers(campaign);
+        // Progress slots: the planners, then every controller of every simulation.
+        std::vector<std::size_t> slotBase(campaign.simulations.size(), 0);
+        std::size_t slots = campaign.planners.size();
+        for (std::size_t si = 0; si < campaign.simulations.size(); ++si)
+        {
+            slotBase[si] = slots;
+            slots += campaign.simulations[si].controllers.size();
+        }
+        const auto runsOf = [&](const Experiment &e)
+        {
+            return e.simulation == Experiment::kNoSimulation
+                       ? campaign.planners.size() * e.runs
+                       : campaign.simulations[e.simulation].controllers.size() * e.runs;
+        };
 
         CampaignSummary summary;
         summary.experiments = mine.size();
@@ -929,9 +1392,18 @@ namespace mhplan::bench
         if (options.run && !todo.empty())
         {
             fs::create_directories(campaign.logDir);
-            const std::size_t runsPerExperiment = campaign.planners.size() * campaign.runs;
-            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), todo.size() * runsPerExperiment,
-                            campaign.planners.size(), campaign.timeLimit);
+            std::vector<std::size_t> slotRuns(slots, 0);
+            for (const Experiment *e : todo)
+            {
+                if (e->simulation == Experiment::kNoSimulation)
+                    for (std::size_t p = 0; p < campaign.planners.size(); ++p)
+                        slotRuns[p] += e->runs;
+                else
+                    for (std::size_t ci = 0; ci < campaign.simulations[e->simulation].controllers.size();
+                         ++ci)
+                        slotRuns[slotBase[e->simulation] + ci] += e->runs;
+            }
+            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), slotRuns, campaign.timeLimit);
             struct Active
             {
                 const Experiment *experiment;
@@ -968,13 +1440,26 @@ namespace mhplan::bench
                         try
                         {
                             const Clock::time_point w0 = Clock::now();
-                            ExperimentSetup xs;
-                            xs.campaign = &campaign;
-                            xs.experiment = e;
-                            xs.registry = &registry;
-                            prepareExperiment(xs);
                             double solve = 0.0;
-                            code = runExperimentProcess(xs, fds[1], solve);
+                            if (e->simulation == Experiment::kNoSimulation)
+                            {
+                                ExperimentSetup xs;
+                                xs.campaign = &campaign;
+                                xs.experiment = e;
+                                xs.registry = &registry;
+                                prepareExperiment(xs);
+                                code = runExperimentProcess(xs, fds[1], solve);
+                            }
+                            else
+                            {
+                                SimulationSetup xs;
+                                xs.campaign = &campaign;
+                                xs.experiment = e;
+                                xs.spec = &campaign.simulations[e->simulation];
+                                xs.scenario = loadScenario(e->scenarioFile);
+                                xs.slotBase = slotBase[e->simulation];
+                                code = runSimulationProcess(xs, fds[1], solve);
+                            }
                             std::ostringstream done;
                             done.precision(17);
                             done << "e " << e->index << " " << secondsSince(w0) << " " << solve << "\n";
@@ -1059,7 +1544,8 @@ namespace mhplan::bench
                     const Active &a = it->second;
                     ++expDone;
                     // Runs a failed process never reported still count as done for the bar.
-                    runsDone += runsPerExperiment > a.runsSeen ? runsPerExperiment - a.runsSeen : 0;
+                    const std::size_t expected = runsOf(*a.experiment);
+                    runsDone += expected > a.runsSeen ? expected - a.runsSeen : 0;
                     const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
                                     logIsComplete(logFile(campaign, *a.experiment), a.experiment->configHash);
                     if (ok)

@@ -1,11 +1,13 @@
 /* mhplan: running a benchmark campaign. Every (world, query) experiment is one ompl::tools::Benchmark
-   experiment; its runs execute in child processes so that a planner that throws, aborts, crashes or hangs
+   experiment, every simulation entry one experiment whose "planners" are its controllers; runs execute in
+   child processes so that a planner that throws, aborts, crashes or hangs
    is recorded with status Crash while the campaign goes on. Logs are OMPL benchmark logs (one per
    experiment, with a real version line), merged into one SQLite database by ompl_benchmark_statistics. */
 #ifndef MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 #define MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 
 #include "Campaign.h"
+#include "Simulation.h"
 
 #include <iosfwd>
 #include <string>
@@ -64,6 +66,14 @@ namespace mhplan::bench
     /** \brief Run (the shard of) a campaign and merge its logs. Throws InputError for a bad campaign
         (unknown planner or parameter, missing world) before any work starts. */
     CampaignSummary runCampaign(const Campaign &campaign, const RunOptions &options);
+
+    /** \brief Perturb the robots' starts of \e scenario for one run of a simulation experiment: every robot's
+        start moves to a point drawn uniformly from the disc of radius \e startJitter about it, redrawn (up to
+        1000 times, else kept) until the robot is inside the bounds, off the static obstacles, off the moving
+        obstacles at its join time and off every other robot's start; its heading turns by a uniform angle in
+        [-headingJitter, headingJitter]. Portable (splitmix64), deterministic in \e seed; nothing changes when
+        both radii are 0. */
+    void applyStartJitter(Scenario &scenario, double startJitter, double headingJitter, std::uint32_t seed);
 
     /** \brief The log file of an experiment. */
     std::string logFile(const Campaign &campaign, const Experiment &experiment);

@@ -167,11 +167,17 @@ def verdict(measured, paper):
     return text + ", more than the paper's %g %%" % paper
 
 
+def is_mapf(exp):
+    """A [MAPF] scenario: it carries the paper's traversal-time figure, or its name says so."""
+    scenario = str(exp.params.get("scenario") or exp.name)
+    return "traversal_time_reduction_percent" in references(exp) or scenario.startswith("mapf")
+
+
 def reduction_rows(database, exp):
-    """For a scenario with both dapf and aapf: per metric, the medians, the reduction of the medians and
-    the paired per-run reduction (median, CI) beside the paper's traversal-time figure."""
+    """For a [MAPF] scenario with both dapf and aapf: per metric, the medians, the reduction of the medians
+    and the paired per-run reduction (median, CI) beside the paper's traversal-time figure."""
     planners = {controller_name(p): p for p in database.planners_of(exp.id)}
-    if BASELINE not in planners or ADAPTIVE not in planners:
+    if not is_mapf(exp) or BASELINE not in planners or ADAPTIVE not in planners:
         return []
     base_runs = database.runs_of(exp.id, planners[BASELINE])
     new_runs = database.runs_of(exp.id, planners[ADAPTIVE])
