@@ -493,8 +493,13 @@ namespace mhplan
                 throw std::invalid_argument("encodeGif: delays must be in [0, 65535] cs (got " +
                                             std::to_string(d) + ")");
 
+        // With fewer than 256 colours, one more index marks "unchanged" (transparent) pixels in the frames
+        // after the first: long runs of it compress far better than the unchanged pixels themselves.
+        const bool useTransparency = palette.size() < 256;
+        const std::size_t transparent = palette.size();
+        const std::size_t indexCount = palette.size() + (useTransparency ? 1 : 0);
         int tableBits = 1;
-        while ((1u << tableBits) < palette.size())
+        while ((1u << tableBits) < indexCount)
             ++tableBits;
         const int minCodeSize = std::max(2, tableBits);
 
@@ -556,19 +561,26 @@ namespace mhplan
             }
             const int rw = x1 - x0 + 1, rh = y1 - y0 + 1;
             sub.resize(static_cast<std::size_t>(rw) * static_cast<std::size_t>(rh));
+            const bool masked = k > 0 && useTransparency;
             for (int y = 0; y < rh; ++y)
-                std::memcpy(&sub[static_cast<std::size_t>(y) * static_cast<std::size_t>(rw)],
-                            &f[static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(w) +
-                               static_cast<std::size_t>(x0)],
-                            static_cast<std::size_t>(rw));
+            {
+                const std::size_t from = static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(w) +
+                                         static_cast<std::size_t>(x0);
+                std::uint8_t *row = &sub[static_cast<std::size_t>(y) * static_cast<std::size_t>(rw)];
+                std::memcpy(row, &f[from], static_cast<std::size_t>(rw));
+                if (masked)
+                    for (std::size_t x = 0; x < static_cast<std::size_t>(rw); ++x)
+                        if (row[x] == frames[k - 1][from + x])
+                            row[x] = static_cast<std::uint8_t>(transparent);
+            }
 
-            // Graphic control extension: disposal 1 (leave in place), the delay, no transparency.
+            // Graphic control extension: disposal 1 (leave in place), the delay, the transparent index.
             out.push_back(0x21);
             out.push_back(0xF9);
             out.push_back(4);
-            out.push_back(0x04);
+            out.push_back(static_cast<std::uint8_t>(0x04 | (masked ? 1 : 0)));
             putLe16(out, delaysCs.size() == 1 ? delaysCs[0] : delaysCs[k]);
-            out.push_back(0);
+            out.push_back(static_cast<std::uint8_t>(masked ? transparent : 0));
             out.push_back(0);
             // Image descriptor: no local colour table, not interlaced.
             out.push_back(0x2C);

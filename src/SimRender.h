@@ -58,8 +58,10 @@ namespace mhplan
         palette indices (row-major, top row first), each < palette.size(). \e delaysCs holds one delay per
         frame in hundredths of a second, or a single value for all. Frames after the first are stored as the
         smallest rectangle that differs from the previous frame (disposal "do not dispose"), so a decoder
-        composites them onto the previous canvas. LZW with variable code size (up to 12 bits) and a clear
-        code whenever the code table is full. Throws std::invalid_argument naming the parameter on misuse. */
+        composites them onto the previous canvas; with fewer than 256 colours the unchanged pixels in that
+        rectangle are written as a transparent index (palette.size()). LZW with variable code size (up to 12
+       bits) and a clear code whenever the code table is full. Throws std::invalid_argument naming the
+       parameter on misuse. */
     std::vector<std::uint8_t> encodeGif(int w, int h, const std::vector<std::array<std::uint8_t, 3>> &palette,
                                         const std::vector<std::vector<std::uint8_t>> &frames,
                                         const std::vector<int> &delaysCs);

@@ -105,7 +105,8 @@ namespace
         bool hasLoop{false};
         int loopCount{-1};
         std::vector<int> delays;
-        std::vector<Frame> frames; // composited canvases
+        std::vector<int> transparent; // per frame, -1 = none
+        std::vector<Frame> frames;    // composited canvases
         int clears{0};
     };
 
@@ -148,7 +149,7 @@ namespace
             d.palette.push_back(c);
         }
         Frame canvas(static_cast<std::size_t>(d.width) * static_cast<std::size_t>(d.height), 0);
-        int pendingDelay = 0;
+        int pendingDelay = 0, pendingTransparent = -1;
         auto subBlocks = [&]()
         {
             std::vector<std::uint8_t> data;
@@ -175,6 +176,9 @@ namespace
                     if (data.size() != 4)
                         throw std::runtime_error("decodeGif: bad graphic control extension");
                     pendingDelay = data[1] | (data[2] << 8);
+                    pendingTransparent = (data[0] & 1) ? data[3] : -1;
+                    if (((data[0] >> 2) & 7) > 1)
+                        throw std::runtime_error("decodeGif: unexpected disposal method");
                 }
                 else if (label == 0xFF && data.size() == 14 &&
                          std::string(data.begin(), data.begin() + 11) == "NETSCAPE2.0" && data[11] == 1)
@@ -203,12 +207,16 @@ namespace
                                          " pixels, expected " + std::to_string(w * h));
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x)
-                    canvas[static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(d.width) +
-                           static_cast<std::size_t>(x0 + x)] =
-                        idx[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                            static_cast<std::size_t>(x)];
+                    if (idx[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                            static_cast<std::size_t>(x)] != pendingTransparent)
+                        canvas[static_cast<std::size_t>(y0 + y) * static_cast<std::size_t>(d.width) +
+                               static_cast<std::size_t>(x0 + x)] =
+                            idx[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                                static_cast<std::size_t>(x)];
             d.frames.push_back(canvas);
             d.delays.push_back(pendingDelay);
+            d.transparent.push_back(pendingTransparent);
+            pendingTransparent = -1;
         }
         return d;
     }
@@ -432,7 +440,7 @@ TEST(GifEncoder, ContainerFieldsAndFramesRoundTrip)
         EXPECT_EQ(d.width, w);
         EXPECT_EQ(d.height, h);
         std::size_t table = 2;
-        while (table < colours)
+        while (table < colours + (colours < 256 ? 1 : 0)) // one more index: transparent
             table *= 2;
         ASSERT_EQ(d.palette.size(), table) << colours;
         for (std::size_t k = 0; k < colours; ++k)
@@ -443,6 +451,8 @@ TEST(GifEncoder, ContainerFieldsAndFramesRoundTrip)
         ASSERT_EQ(d.frames.size(), frames.size());
         for (std::size_t k = 0; k < frames.size(); ++k)
             EXPECT_EQ(d.frames[k], frames[k]) << colours << " colours, frame " << k;
+        EXPECT_EQ(d.transparent[0], -1);
+        EXPECT_EQ(d.transparent[1], colours < 256 ? static_cast<int>(colours) : -1);
     }
 }
 
