@@ -349,6 +349,17 @@ simulation: {dt: 0.05, time_limit: 30}
             ++n;
         return n;
     }
+
+    std::string readFile(const std::string &path)
+    {
+        std::ifstream in(path, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+
+    std::string tempPath(const std::string &name)
+    {
+        return testing::TempDir() + "/mhplan_simrender_" + name;
+    }
 } // namespace
 
 // ----------------------------------------------------------------------------------------------------------
@@ -608,4 +619,82 @@ TEST(SimRender, CsvHasOneRowPerSampleOrderedByTime)
     }
     EXPECT_EQ(rows, run.result.robots[0].times.size() + run.result.robots[1].times.size());
     EXPECT_TRUE(contains(csv, "\n0,a,0.5,2,0\n"));
+}
+
+// ----------------------------------------------------------------------------------------------------------
+// mhplan sim
+
+TEST(SimCli, WritesGifSvgAndCsv)
+{
+    const std::string gif = tempPath("run.gif"), svg = tempPath("run.svg"), csv = tempPath("run.csv");
+    std::remove(gif.c_str());
+    const auto r =
+        mhplan::test::runCli("sim mapf_2robots --controller dapf --seed 3 --gif " + gif + " --svg " + svg +
+                             " --csv " + csv + " --gif-width 200 --max-frames 60");
+    ASSERT_TRUE(r.code == 0 || r.code == 3) << r.out;
+    for (const char *field : {"robots:", "flowtime:", "makespan:", "collisions:", "robot-steps/s",
+                              "seed:       3", "min robot distance", "r1", "r2"})
+        EXPECT_TRUE(contains(r.out, field)) << field << "\n" << r.out;
+    EXPECT_EQ(r.code == 0, contains(r.out, "2 done")) << r.out;
+    const std::string bytes = readFile(gif);
+    ASSERT_GT(bytes.size(), 6u);
+    EXPECT_EQ(bytes.substr(0, 6), "GIF89a");
+    const DecodedGif d = decodeGif(std::vector<std::uint8_t>(bytes.begin(), bytes.end()));
+    EXPECT_EQ(d.width, 200);
+    EXPECT_EQ(d.frames.size(), 60u);
+    const std::string s = readFile(svg);
+    EXPECT_EQ(xmlBalance(s), "");
+    EXPECT_EQ(countOf(s, "<path "), 2u);
+    EXPECT_TRUE(contains(readFile(csv), "time,robot,x,y,heading\n0,r1,"));
+}
+
+TEST(SimCli, SameSeedSameTrajectories)
+{
+    const std::string a = tempPath("seed_a.csv"), b = tempPath("seed_b.csv");
+    const auto ra =
+        mhplan::test::runCli("sim bfo_case3_lines --controller bfo --seed 11 --time-limit 20 --csv " + a);
+    const auto rb =
+        mhplan::test::runCli("sim bfo_case3_lines --controller bfo --seed 11 --time-limit 20 --csv " + b);
+    ASSERT_TRUE(ra.code == 0 || ra.code == 3) << ra.out;
+    ASSERT_TRUE(rb.code == 0 || rb.code == 3) << rb.out;
+    const std::string ca = readFile(a);
+    EXPECT_GT(ca.size(), 100u);
+    EXPECT_EQ(ca, readFile(b));
+}
+
+TEST(SimCli, UnfinishedRunExitsWithThree)
+{
+    const auto r = mhplan::test::runCli("sim mapf_2robots --controller dapf --seed 1 --time-limit 1");
+    EXPECT_EQ(r.code, 3) << r.out;
+    EXPECT_TRUE(contains(r.out, "2 unfinished")) << r.out;
+    EXPECT_TRUE(contains(r.out, "(lower bound)")) << r.out;
+}
+
+TEST(SimCli, RefusesBadInputWithAClearMessage)
+{
+    struct Case
+    {
+        std::string args;
+        std::vector<std::string> expect;
+    };
+    const std::vector<Case> cases = {
+        {"sim mapf_2robots --controller nosuch", {"nosuch", "dapf", "aapf"}},
+        {"sim mapf_2robots", {"--controller NAME is required", "dapf"}},
+        {"sim no_such_scenario.yaml --controller dapf", {"no_such_scenario.yaml", "no such file"}},
+        {"sim --controller dapf", {"expected exactly one SCENARIO"}},
+        {"sim mapf_2robots --controller dapf --time-limit 0", {"--time-limit must be > 0"}},
+        {"sim mapf_2robots --controller dapf --fps 0", {"--fps must be in (0, 100]"}},
+        {"sim mapf_2robots --controller dapf --gif-width 3", {"--gif-width must be in [16, 4096]"}},
+        {"sim mapf_2robots --controller dapf --seed 0", {"--seed must be in"}},
+        {"sim mapf_2robots --controller dapf --set", {"needs a value"}},
+        {"sim mapf_2robots --controller dapf --set nonsense", {"key=value"}},
+        {"sim mapf_2robots --controller dapf --colour red", {"unknown option '--colour'", "--gif"}},
+    };
+    for (const auto &c : cases)
+    {
+        const auto r = mhplan::test::runCli(c.args);
+        EXPECT_EQ(r.code, 1) << c.args << "\n" << r.out;
+        for (const auto &e : c.expect)
+            EXPECT_TRUE(contains(r.out, e)) << c.args << ": output lacks '" << e << "':\n" << r.out;
+    }
 }

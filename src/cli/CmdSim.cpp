@@ -1,1 +1,188 @@
-/* placeholder until implemented */
+/* mhplan sim SCENARIO: run a moving-world scenario with a controller, print per-robot and run metrics, and
+   draw the run (SVG with a replay, animated GIF) or write its trajectories (CSV). */
+#include "Commands.h"
+
+#include "Args.h"
+#include "Controllers.h"
+#include "Registry.h"
+#include "ScenarioIO.h"
+#include "SimRender.h"
+#include "Simulation.h"
+#include "Svg.h"
+
+#include <ompl/util/Time.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace mhplan::cli
+{
+    namespace
+    {
+        /** A scenario argument: an existing file, or the name of a shipped scenario
+            (environments/scenarios/NAME.yaml). */
+        std::string resolveScenarioPath(const std::string &arg)
+        {
+            if (fs::exists(arg))
+                return arg;
+            for (const fs::path &dir :
+                 {fs::path(environmentsDir()) / "scenarios", fs::path(environmentsDir())})
+                for (const char *ext : {".yaml", ".yml"})
+                {
+                    const fs::path p = dir / (arg + ext);
+                    if (fs::exists(p))
+                        return p.string();
+                }
+            throw InputError("scenario '" + arg +
+                             "': no such file, and no shipped scenario of that name in " +
+                             (fs::path(environmentsDir()) / "scenarios").string());
+        }
+
+        std::string metres(double v, int precision = 3)
+        {
+            if (std::isinf(v))
+                return "-";
+            std::ostringstream s;
+            s << std::fixed << std::setprecision(precision) << v;
+            return s.str();
+        }
+
+        int positiveInt(const Args &args, const std::string &name, long long fallback, long long lo,
+                        long long hi)
+        {
+            const long long v = args.integer(name, fallback);
+            if (v < lo || v > hi)
+                throw InputError("mhplan sim: --" + name + " must be in [" + std::to_string(lo) + ", " +
+                                 std::to_string(hi) + "] (got " + args.get(name) + ")");
+            return static_cast<int>(v);
+        }
+    } // namespace
+
+    int cmdSim(const Argv &argv)
+    {
+        const Args args(
+            "sim", argv,
+            {{"controller", "seed", "svg", "gif", "csv", "time-limit", "gif-width", "fps", "max-frames"},
+             {"set"},
+             {"no-replay"}});
+        if (args.positional().size() != 1)
+            throw InputError(
+                "mhplan sim: expected exactly one SCENARIO (a scenario file or the name of a shipped "
+                "scenario, e.g. mapf_2robots)");
+        if (!args.has("controller"))
+        {
+            std::string names;
+            for (const auto &n : controllerNames())
+                names += (names.empty() ? "" : ", ") + n;
+            throw InputError("mhplan sim: --controller NAME is required; controllers: " + names);
+        }
+        // The seed must be fixed before any OMPL random number generator exists (plan:<planner> controllers).
+        const std::uint_fast32_t seed = seedFromArgs(args);
+        Scenario scenario = loadScenario(resolveScenarioPath(args.positional()[0]));
+        if (args.has("time-limit"))
+        {
+            const double limit = args.number("time-limit", 0.0);
+            if (!(limit > 0.0) || std::isinf(limit))
+                throw InputError("mhplan sim: --time-limit must be > 0 seconds (got " +
+                                 args.get("time-limit") + ")");
+            scenario.settings.timeLimit = limit;
+        }
+        GifOptions gif;
+        gif.width = positiveInt(args, "gif-width", gif.width, 16, 4096);
+        gif.maxFrames = positiveInt(args, "max-frames", gif.maxFrames, 2, 100000);
+        gif.fps = args.number("fps", gif.fps);
+        if (!(gif.fps > 0.0) || gif.fps > 100.0)
+            throw InputError("mhplan sim: --fps must be in (0, 100] (got " + args.get("fps") + ")");
+
+        const ControllerPtr controller = makeController(args.get("controller"));
+        std::map<std::string, std::string> params;
+        for (const auto &kv : args.all("set"))
+            parseKeyValue(kv, params);
+        for (const auto &kv : params)
+            controller->setParameter(kv.first, kv.second);
+
+        std::cout << "scenario:   " << scenario.name << " (" << scenario.file << ")\n";
+        std::cout << "world:      " << scenario.world.type() << ", " << scenario.world.obstacleCount()
+                  << " static obstacles, " << scenario.movingObstacles.size() << " moving obstacles, "
+                  << scenario.robots.size() << " robots\n";
+        std::cout << "controller: " << controller->name();
+        const auto shown = controller->parameters();
+        if (!shown.empty())
+        {
+            std::cout << " (";
+            bool first = true;
+            for (const auto &kv : shown)
+            {
+                std::cout << (first ? "" : ", ") << kv.first << "=" << kv.second;
+                first = false;
+            }
+            std::cout << ")";
+        }
+        std::cout << "\nseed:       " << seed << "\n";
+
+        Simulation sim(scenario, controller, static_cast<std::uint32_t>(seed));
+        const SimulationResult r = sim.run();
+
+        std::cout << "\n"
+                  << std::left << std::setw(10) << "robot" << std::setw(11) << "status" << std::right
+                  << std::setw(11) << "time [s]" << std::setw(11) << "length [m]" << std::setw(14)
+                  << "clearance [m]" << std::setw(13) << "robot d [m]" << std::setw(12) << "collisions"
+                  << "\n";
+        for (const RobotResult &rr : r.robots)
+            std::cout << std::left << std::setw(10) << rr.name << std::setw(11) << toString(rr.status)
+                      << std::right << std::setw(11) << metres(rr.traversalTime, 2) << std::setw(11)
+                      << metres(rr.pathLength) << std::setw(14) << metres(rr.minObstacleClearance)
+                      << std::setw(13) << metres(rr.minRobotDistance) << std::setw(12) << rr.collisions
+                      << "\n";
+
+        std::cout << "\nrobots:     " << r.done << " done, " << r.stuck << " stuck, " << r.unfinished
+                  << " unfinished (of " << r.robots.size() << ")\n";
+        std::cout << "flowtime:   " << metres(r.flowtime, 3) << " s" << (r.allDone ? "" : " (lower bound)")
+                  << "\n";
+        std::cout << "makespan:   " << metres(r.makespan, 3) << " s" << (r.allDone ? "" : " (lower bound)")
+                  << "\n";
+        std::cout << "collisions: " << r.collisions() << " (static " << r.staticCollisions << ", moving "
+                  << r.movingCollisions << ", robot-robot " << r.robotCollisions << ")\n";
+        std::cout << "min robot distance:       " << metres(r.minRobotDistance) << " m\n";
+        std::cout << "min obstacle clearance:   " << metres(r.minObstacleClearance) << " m\n";
+        std::cout << "simulated:  " << metres(r.simulatedTime, 2) << " s in " << r.steps << " steps ("
+                  << r.robotSteps << " robot-steps)\n";
+        std::cout << "wall time:  " << std::setprecision(4) << r.wallTime << " s (" << std::setprecision(0)
+                  << std::fixed << (r.wallTime > 0.0 ? static_cast<double>(r.robotSteps) / r.wallTime : 0.0)
+                  << " robot-steps/s)\n"
+                  << std::defaultfloat;
+        if (!r.counters.empty())
+        {
+            std::cout << "counters:  ";
+            for (const auto &kv : r.counters)
+                std::cout << " " << kv.first << "=" << std::setprecision(10) << kv.second;
+            std::cout << "\n";
+        }
+        std::cout << "seed:       " << r.seed << "\n";
+
+        if (args.has("csv"))
+        {
+            writeTextFile(args.get("csv"), trajectoryCsv(r));
+            std::cout << "csv:        " << args.get("csv") << "\n";
+        }
+        if (args.has("svg"))
+        {
+            writeTextFile(args.get("svg"),
+                          simulationSvg(scenario, r, !args.has("no-replay"), gif.maxFrames, gif.fps));
+            std::cout << "svg:        " << args.get("svg") << "\n";
+        }
+        if (args.has("gif"))
+        {
+            const ompl::time::point t0 = ompl::time::now();
+            writeSimulationGif(scenario, r, args.get("gif"), gif);
+            std::cout << "gif:        " << args.get("gif") << " (" << fs::file_size(args.get("gif"))
+                      << " bytes, " << std::setprecision(3) << ompl::time::seconds(ompl::time::now() - t0)
+                      << " s)\n";
+        }
+        return r.allDone ? 0 : 3;
+    }
+} // namespace mhplan::cli

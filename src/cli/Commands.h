@@ -20,6 +20,7 @@ namespace mhplan::cli
     int cmdReport(const Argv &argv);
     int cmdScen(const Argv &argv);
     int cmdOptimum(const Argv &argv);
+    int cmdSim(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */
     std::string environmentsDir();

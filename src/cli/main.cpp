@@ -50,6 +50,11 @@ namespace
             {"scen",
              {cmdScen, "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
                        "        (run every problem of a MovingAI scenario file; compare lengths with its optima)"}},
+            {"sim",
+             {cmdSim, "sim SCENARIO --controller NAME [--seed N] [--set key=value]... [--time-limit S]\n"
+                      "        [--svg FILE] [--no-replay] [--gif FILE] [--gif-width PX] [--fps F] [--max-frames N]\n"
+                      "        [--csv FILE]   (run a moving-world scenario, e.g. mapf_15robots; exit 0: all robots\n"
+                      "        done, 3: some stuck or unfinished, 1: bad input)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };
