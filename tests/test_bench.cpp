@@ -3,7 +3,8 @@
    planners, runs and columns; the optimality gap is recomputed from the stored values; sharded runs merge
    to the unsharded row count with identical results; a re-run resumes (skips finished experiments).
    Simulation experiments: parsed and refused with file:line, their rows carry exactly what an independent
-   run of the simulator with the same seed and start perturbation returns. */
+   run of the simulator with the same seed and start perturbation returns; a hanging simulation run is killed
+   and recorded as Crash. */
 #include "Campaign.h"
 #include "CampaignRunner.h"
 #include "CliSupport.h"
@@ -788,4 +789,42 @@ TEST(SimulationCampaign, StartJitterIsDeterministicAndValid)
     // The perturbed scenario is still a valid scenario: a simulation accepts it.
     Simulation sim(a, makeController("aapf"), 1);
     EXPECT_TRUE(sim.step());
+}
+
+TEST(SimulationCampaign, AHangingRunIsKilledAndRecordedAsCrash)
+{
+    // Plan-then-follow with RRT* planning 5 s per robot: 15 robots take over a minute; the wall limit kills
+    // the run at the watchdog's first look (0.2 s) and the campaign goes on with the next controller.
+    Campaign c = parseCampaign("campaign: hang\n"
+                               "runs: 1\n"
+                               "simulations:\n"
+                               "  - scenario: scenarios/mapf_15robots\n"
+                               "    wall_limit: 0.05\n"
+                               "    controllers:\n"
+                               "      - {controller: plan:RRTstar, name: slow, params: {plan_time: 5}}\n"
+                               "      - dapf\n",
+                               "hang.yaml");
+    const fs::path dir = fs::temp_directory_path() / ("mhplan_test_bench_hang_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    c.database = (dir / "hang.db").string();
+    c.logDir = (dir / "logs").string();
+    const CampaignSummary s = runCampaign(c, options());
+    EXPECT_EQ(s.completed, 1u);
+    EXPECT_EQ(s.runs, 2u);
+    EXPECT_EQ(s.crashes, 1u);
+    const Sql sql(c.database);
+    const std::string crash =
+        sql.rows("SELECT value FROM enums WHERE name = 'status' AND description = 'Crash'").at(0).at(0);
+    const auto rows =
+        sql.rows("SELECT plannerConfigs.name, runs.status, runs.solved, runs.makespan FROM runs JOIN "
+                 "plannerConfigs ON runs.plannerid = plannerConfigs.id ORDER BY plannerConfigs.name");
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0][0], "sim:dapf");
+    EXPECT_NE(rows[0][1], crash);
+    EXPECT_NE(rows[0][3], "NULL");
+    EXPECT_EQ(rows[1][0], "sim:slow");
+    EXPECT_EQ(rows[1][1], crash);
+    EXPECT_EQ(rows[1][2], "0");
+    EXPECT_EQ(rows[1][3], "NULL");
+    fs::remove_all(dir);
 }
