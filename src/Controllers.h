@@ -147,6 +147,11 @@ namespace mhplan
         | k_a          | 0 .. 100      | 1       | aapf: adaptive gain factor |
         | horizon      | 0 .. 100      | 1       | aapf: prediction horizon (s) |
         | safety_brake | 0 .. 1 (int)  | 1       | see ControllerBase |
+        Measured (tests/test_controllers.cpp, environments/scenarios/mapf_u_trap.yaml): in a U-shaped obstacle
+        open toward the robot, dapf stops in front of the back wall (the classic local minimum) and aapf is
+        trapped too: the rotation slides it along the back wall, but the side "facing the target" flips
+        when it crosses the U's axis, so it settles on the axis. The rotation resolves obstacles and robots
+        met head-on (no equilibrium behind a pillar on the line to the goal), not concave traps.
         Deterministic (no randomness); no heap allocation per command. */
     class ApfController : public ControllerBase
     {
@@ -199,7 +204,11 @@ namespace mhplan
         Parameters ([BFO] section 6 defaults): S 100 (2..100000), Nc 8, Ns 6, Nre 2, Ned 1 (1..100000;
         Ns 0..100000), Ped 0.15 (0..1), C 0.1, xi 0.1, eta 0.06, d0 1.5, lambda 0.2, D_sense 1.2 (C, d0,
         lambda, D_sense 1e-6..1e6; xi, eta 0..1e6), F_improv 3 (0..100000, used by atbfo), sector_angle 45
-        (0..180 degrees), safety_brake 1. Counters: "evaluations" (J evaluations), "decisions" (BFO runs).
+        (0..180 degrees), safety_brake 1, predict 1 (0 or 1; not in [BFO]): when on, the straight-segment
+        test against moving obstacles and robots (for bacteria and for the waypoint step) grows each disc by
+        the distance it travels at its current speed while the robot drives lambda at full speed (the cost
+        J itself uses the discs as they are); without it the robot often steps into the path of an obstacle
+        that then runs into it. Counters: "evaluations" (J evaluations), "decisions" (BFO runs).
         Deterministic given the RNG of reset(); the colony is allocated in reset(), so a command allocates
         nothing. */
     class BfoController : public ControllerBase
@@ -258,31 +267,39 @@ namespace mhplan
     /** \brief Plan-then-follow with any planner of the registry ("plan:<PLANNER>").
 
         When robot i starts a task, its planner plans on the static world (a copy of the scenario's world
-        with the robot's radius; Query from the robot's position to the goal's current position; the
-        project's collision model, validity checker and exact motion validator via makeSimpleSetup) for
-        \c plan_time seconds of wall clock (the one use of the clock). The path is the planner's exact
-        solution, else its approximate one, else the straight segment to the goal. The robot follows it by
-        pure pursuit: it steers toward the point \c lookahead metres further along the path than its
-        projection onto the path (the projection only advances), at full speed, slowing linearly within
-        \c slowdown metres of the path's end; within \c lookahead of the end it steers to the goal's
-        current position when the straight segment there is free.
+        with the robot's radius plus \c clearance; Query from the robot's position to the goal's current
+        position; the project's collision model, validity checker and exact motion validator via
+        makeSimpleSetup) for \c plan_time seconds of wall clock (the one use of the clock). The path is the
+        first exact solution found in: that world, then the world with the bare radius (narrow passages);
+        else the first approximate one; else the straight segment to the goal. The clearance keeps the
+        corners that pure pursuit cuts off the obstacles. The robot follows the path by pure pursuit: it
+        steers toward the point \c lookahead metres further along the path than its projection onto the path
+        (the projection only advances), pulled back (halved up to 6 times) while the straight way there is
+        not free; at full speed, slowing linearly within \c slowdown metres of the path's end; within
+        \c lookahead of the end it steers to the goal's current position when the straight way there is
+        free.
 
         Replanning (counted in counters()["replans"]; first plans in "plans"): when a moving obstacle or
         another present robot whose surface is within \c sense_range of the robot overlaps the robot disc
-        swept along the next \c sense_range metres of the remaining path, or when the goal has moved more
-        than \c goal_tolerance from the path's end (moving targets; also an approximate path that ends
-        short of the goal). The new plan starts at the robot's position in a world with those sensed discs
-        added as circles of their radius plus \c margin (grid worlds: the cells they overlap are blocked in
-        a copy of the grid); a disc that would make the start or the goal invalid is dropped. Replans are
-        at least \c replan_interval seconds apart (a blocking robot that stays put would otherwise cause
-        one per step); while the sensed disc blocks the path within \c lookahead ahead of the robot and a
-        replan is not yet allowed, the robot waits.
+        swept along the next \c sense_range metres of the remaining path, at its current position or at a
+        position predicted at its current velocity up to \c predict_time ahead (a robot's velocity is that
+        of its last step), or when the goal has moved more than \c goal_tolerance from the path's end
+        (moving targets; also an approximate path that ends short of the goal). The new plan starts at the
+        robot's position in a world where each such disc is added as circles of its radius plus \c margin,
+        at its current and its predicted positions (at most one radius of travel apart; grid worlds: the
+        cells the circles overlap are blocked in a copy of the grid); a circle that would cover the start or
+        the goal is shrunk to the room left and dropped when that is less than the disc's own radius. If
+        that world refuses the query, the static worlds above are used. Replans are at least
+        \c replan_interval seconds apart (a blocking robot that stays put would otherwise cause one per
+        step); while a robot blocks the path within \c lookahead and a replan is not yet allowed, the robot
+        waits (it does not wait for moving obstacles: they do not yield).
 
         Parameters: plan_time 0.5 (0.001..600 s), lookahead 0.3 (0.01..100 m), slowdown 0.3 (0..100 m),
-        sense_range 1.0 (0..1000 m), margin 0.1 (0..100 m), goal_tolerance 0.2 (0.001..1000 m),
-        replan_interval 1.0 (0..1000 s), safety_brake 1, and planner.<name> = value, forwarded to the
-        planner with applyPlannerParameters (checked when set, on a throwaway planner). A planner with a
-        "seed" parameter (mhplan's population planners) gets a seed drawn from the run's RNG.
+        sense_range 1.0 (0..1000 m), margin 0.1 (0..100 m), clearance 0.05 (0..100 m), predict_time 3
+        (0..100 s), goal_tolerance 0.2 (0.001..1000 m), replan_interval 0.5 (0..1000 s), safety_brake 1, and
+        planner.<name> = value, forwarded to the planner with applyPlannerParameters (checked when set, on
+        a throwaway planner). A planner with a "seed" parameter (mhplan's population planners) gets a seed
+        drawn from the run's RNG unless planner.seed is set.
         Determinism: ThetaStar and AStar are deterministic (they finish far within the budget), so runs
         repeat exactly per seed; sampling planners (RRT*, PRM, ...) draw from OMPL's global RNG and any
         planner stopped by the plan_time budget depends on the machine's speed: those runs do not repeat.
