@@ -8,10 +8,35 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <sstream>
 
 using namespace mhplan;
+
+/** \brief Heap allocations counted by this test program's global operator new (the replacements are not
+    inlined: GCC would otherwise pair malloc/free with new/delete and warn). */
+static std::atomic<unsigned long> gAllocations{0};
+
+[[gnu::noinline]] void *operator new(std::size_t size)
+{
+    ++gAllocations;
+    if (void *p = std::malloc(size == 0 ? 1 : size))
+        return p;
+    throw std::bad_alloc();
+}
+
+[[gnu::noinline]] void operator delete(void *p) noexcept
+{
+    std::free(p);
+}
+
+[[gnu::noinline]] void operator delete(void *p, std::size_t) noexcept
+{
+    std::free(p);
+}
 
 namespace
 {
@@ -343,4 +368,23 @@ simulation: {dt: 0.05, time_limit: 100, stuck_timeout: 20, goal_tolerance: 0.05}
     const SimulationResult blind =
         run(scenario, "plan:ThetaStar", 1, {{"sense_range", "0"}, {"predict_time", "0"}});
     EXPECT_GT(blind.movingCollisions, 0u);
+}
+
+TEST(Controllers, CommandsAllocateNothingOnceWarm)
+{
+    Scenario scenario = smallScenario();
+    scenario.settings.recordEvery = 1000000;
+    for (const std::string name : {"dapf", "aapf", "bfo", "atbfo"})
+    {
+        const ControllerPtr c = makeController(name);
+        Simulation sim(scenario, c, 3);
+        for (int k = 0; k < 40; ++k)
+            ASSERT_TRUE(sim.step());
+        const unsigned long before = gAllocations;
+        for (int k = 0; k < 50; ++k)
+            for (std::size_t i = 0; i < sim.robotCount(); ++i)
+                if (sim.state(i).status == RobotStatus::Moving)
+                    c->command(sim, i);
+        EXPECT_EQ(gAllocations - before, 0u) << name;
+    }
 }
