@@ -228,22 +228,8 @@ namespace mhplan::bench
 
     Campaign parseCampaign(const std::string &text, const std::string &fileName)
     {
-        YAML::Node root;
-        try
-        {
-            root = YAML::Load(text);
-        }
-        catch (const YAML::ParserException &e)
-        {
-            std::ostringstream msg;
-            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
-                << ": malformed YAML: " << e.msg;
-            throw InputError(msg.str());
-        }
+        const YAML::Node root = loadYamlMapping(text, fileName, "campaign file", "benchmarks/README.md");
         const YamlReader r(fileName);
-        if (!root.IsMap())
-            throw InputError(fileName +
-                             ":1: a campaign file must be a YAML mapping (see benchmarks/README.md)");
         r.allowKeys(root, "",
                     {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
                      "progress_interval", "planner_data", "collision", "worlds", "planners", "simulations"});

@@ -301,131 +301,14 @@ namespace mhplan::bench
             bool plannerData_;
         };
 
-        /** Child process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send the
-           run's properties, path and progress to \e fd. One process per run: the seed applies to exactly this
-           run, OMPL's memory figure is this run's, a crash takes nothing else with it, and no planner is ever
-            cleared or destroyed (the process just ends). Never returns. */
-        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
-                                          std::uint32_t seed, int fd)
+        /** The end of a run process: run \e body; an exception is reported on \e fd as an 'X' message
+            (exit code 3), then the process exits without running destructors. */
+        [[noreturn]] void finishRunChild(int fd, const std::function<void()> &body)
         {
             int code = 0;
             try
             {
-                ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                // The seed must be set before any random number generator exists in this process; the
-                // campaign process and the experiment process never allocate one.
-                ompl::RNG::setSeed(seed);
-                const Campaign &c = *xs.campaign;
-                // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
-                // generator (its path simplifier's).
-                const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
-                const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-                ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
-                inner->setName(spec.displayName);
-                auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
-                ss->setPlanner(planner);
-
-                ot::Benchmark benchmark(*ss, xs.experiment->name);
-                benchmark.addPlanner(planner);
-                CerrCapture capture;
-                // OMPL's collector samples the progress properties from the start of solve() at a fixed
-                // interval but not at its end: the post-run event adds that last sample.
-                std::map<std::string, std::string> finalSample;
-                benchmark.setPreRunEvent(
-                    [&](const ob::PlannerPtr &p)
-                    {
-                        const auto &data = benchmark.getRecordedExperimentData();
-                        std::map<std::string, std::string> common;
-                        p->params().getParams(common);
-                        p->getSpaceInformation()->params().getParams(common);
-                        std::ostringstream props;
-                        p->printProperties(props);
-                        std::string names = "time REAL";
-                        for (const auto &kv : p->getPlannerProgressProperties())
-                            names += std::string(1, kGroupSep) + kv.first;
-                        sendMessage(fd, 'C', 0, encodeMap(common));
-                        sendMessage(fd, 'S', 0,
-                                    encodeMap({{"host", data.host},
-                                               {"cpu", data.cpuInfo},
-                                               {"properties", props.str()},
-                                               {"progress", names}}));
-                    });
-                benchmark.setPostRunEvent(
-                    [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
-                    {
-                        const std::string crash = std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
-                        // OMPL's benchmark catches a std::runtime_error thrown by solve() and only reports it
-                        // on std::cerr: that is a crash too.
-                        if (capture.take().find("error executing planner") != std::string::npos)
-                        {
-                            run["status ENUM"] = crash;
-                            run["solved BOOLEAN"] = "0";
-                        }
-                        if (!c.plannerData)
-                        {
-                            run.erase("graph states INTEGER");
-                            run.erase("graph motions INTEGER");
-                        }
-                        run["run index INTEGER"] = std::to_string(runIndex);
-                        run["run seed INTEGER"] = std::to_string(seed);
-                        run["exact optimum length REAL"] = num(xs.optimum);
-                        if (!p->getPlannerProgressProperties().empty())
-                        {
-                            finalSample["time REAL"] = run["time REAL"];
-                            for (const auto &kv : p->getPlannerProgressProperties())
-                                finalSample[kv.first] = kv.second();
-                        }
-                        for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
-                        {
-                            const auto &fns = p->getPlannerProgressProperties();
-                            const auto it = fns.find(name);
-                            if (it != fns.end() && run.count(name) == 0)
-                                run[name] = it->second();
-                        }
-                        std::string path;
-                        const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
-                        if (pdef->hasSolution() && run["status ENUM"] != crash)
-                        {
-                            const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
-                            const std::vector<Vec2> pts = pathPoints(*geo);
-                            const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
-                            run["path length REAL"] = num(m.length);
-                            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
-                            run["min clearance REAL"] = num(m.minClearance);
-                            run["mean clearance REAL"] = num(m.meanClearance);
-                            run["smoothness REAL"] = num(m.smoothness);
-                            run["max curvature REAL"] = num(m.maxCurvature);
-                            run["angle over length REAL"] = num(m.angleOverLength);
-                            run["cusps INTEGER"] = std::to_string(m.cusps);
-                            if (pdef->hasExactSolution())
-                                run["optimality gap REAL"] = num(optimalityGapPercent(m.length, xs.optimum));
-                            path = encodePath(pts);
-                        }
-                        std::map<std::string, std::string> payload = run;
-                        payload["\x01path"] = path;
-                        sendMessage(fd, 'R', runIndex, encodeMap(payload));
-                    });
-                const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
-                                                 false, false);
-                benchmark.benchmark(req);
-                const auto &pd = benchmark.getRecordedExperimentData().planners;
-                if (!pd.empty() && !pd[0].runsProgressData.empty())
-                {
-                    std::string payload;
-                    double lastTime = -1.0;
-                    for (const auto &sample : pd[0].runsProgressData.back())
-                    {
-                        payload += encodeMap(sample) + kGroupSep;
-                        const auto t = sample.find("time REAL");
-                        if (t != sample.end())
-                            lastTime = std::max(lastTime, std::atof(t->second.c_str()));
-                    }
-                    const auto t = finalSample.find("time REAL");
-                    if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
-                        payload += encodeMap(finalSample) + kGroupSep;
-                    sendMessage(fd, 'G', runIndex, payload);
-                }
-                sendMessage(fd, 'E', runIndex, "");
+                body();
             }
             catch (const std::exception &e)
             {
@@ -439,6 +322,137 @@ namespace mhplan::bench
             }
             ::close(fd);
             ::_exit(code);
+        }
+
+        /** Child process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send the
+           run's properties, path and progress to \e fd. One process per run: the seed applies to exactly this
+           run, OMPL's memory figure is this run's, a crash takes nothing else with it, and no planner is ever
+            cleared or destroyed (the process just ends). Never returns. */
+        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
+                                          std::uint32_t seed, int fd)
+        {
+            finishRunChild(
+                fd,
+                [&]()
+                {
+                    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                    // The seed must be set before any random number generator exists in this process; the
+                    // campaign process and the experiment process never allocate one.
+                    ompl::RNG::setSeed(seed);
+                    const Campaign &c = *xs.campaign;
+                    // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
+                    // generator (its path simplifier's).
+                    const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+                    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+                    ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
+                    inner->setName(spec.displayName);
+                    auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
+                    ss->setPlanner(planner);
+
+                    ot::Benchmark benchmark(*ss, xs.experiment->name);
+                    benchmark.addPlanner(planner);
+                    CerrCapture capture;
+                    // OMPL's collector samples the progress properties from the start of solve() at a fixed
+                    // interval but not at its end: the post-run event adds that last sample.
+                    std::map<std::string, std::string> finalSample;
+                    benchmark.setPreRunEvent(
+                        [&](const ob::PlannerPtr &p)
+                        {
+                            const auto &data = benchmark.getRecordedExperimentData();
+                            std::map<std::string, std::string> common;
+                            p->params().getParams(common);
+                            p->getSpaceInformation()->params().getParams(common);
+                            std::ostringstream props;
+                            p->printProperties(props);
+                            std::string names = "time REAL";
+                            for (const auto &kv : p->getPlannerProgressProperties())
+                                names += std::string(1, kGroupSep) + kv.first;
+                            sendMessage(fd, 'C', 0, encodeMap(common));
+                            sendMessage(fd, 'S', 0,
+                                        encodeMap({{"host", data.host},
+                                                   {"cpu", data.cpuInfo},
+                                                   {"properties", props.str()},
+                                                   {"progress", names}}));
+                        });
+                    benchmark.setPostRunEvent(
+                        [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
+                        {
+                            const std::string crash =
+                                std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                            // OMPL's benchmark catches a std::runtime_error thrown by solve() and only
+                            // reports it on std::cerr: that is a crash too.
+                            if (capture.take().find("error executing planner") != std::string::npos)
+                            {
+                                run["status ENUM"] = crash;
+                                run["solved BOOLEAN"] = "0";
+                            }
+                            if (!c.plannerData)
+                            {
+                                run.erase("graph states INTEGER");
+                                run.erase("graph motions INTEGER");
+                            }
+                            run["run index INTEGER"] = std::to_string(runIndex);
+                            run["run seed INTEGER"] = std::to_string(seed);
+                            run["exact optimum length REAL"] = num(xs.optimum);
+                            if (!p->getPlannerProgressProperties().empty())
+                            {
+                                finalSample["time REAL"] = run["time REAL"];
+                                for (const auto &kv : p->getPlannerProgressProperties())
+                                    finalSample[kv.first] = kv.second();
+                            }
+                            for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
+                            {
+                                const auto &fns = p->getPlannerProgressProperties();
+                                const auto it = fns.find(name);
+                                if (it != fns.end() && run.count(name) == 0)
+                                    run[name] = it->second();
+                            }
+                            std::string path;
+                            const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
+                            if (pdef->hasSolution() && run["status ENUM"] != crash)
+                            {
+                                const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
+                                const std::vector<Vec2> pts = pathPoints(*geo);
+                                const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
+                                run["path length REAL"] = num(m.length);
+                                run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+                                run["min clearance REAL"] = num(m.minClearance);
+                                run["mean clearance REAL"] = num(m.meanClearance);
+                                run["smoothness REAL"] = num(m.smoothness);
+                                run["max curvature REAL"] = num(m.maxCurvature);
+                                run["angle over length REAL"] = num(m.angleOverLength);
+                                run["cusps INTEGER"] = std::to_string(m.cusps);
+                                if (pdef->hasExactSolution())
+                                    run["optimality gap REAL"] =
+                                        num(optimalityGapPercent(m.length, xs.optimum));
+                                path = encodePath(pts);
+                            }
+                            std::map<std::string, std::string> payload = run;
+                            payload["\x01path"] = path;
+                            sendMessage(fd, 'R', runIndex, encodeMap(payload));
+                        });
+                    const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
+                                                     false, false);
+                    benchmark.benchmark(req);
+                    const auto &pd = benchmark.getRecordedExperimentData().planners;
+                    if (!pd.empty() && !pd[0].runsProgressData.empty())
+                    {
+                        std::string payload;
+                        double lastTime = -1.0;
+                        for (const auto &sample : pd[0].runsProgressData.back())
+                        {
+                            payload += encodeMap(sample) + kGroupSep;
+                            const auto t = sample.find("time REAL");
+                            if (t != sample.end())
+                                lastTime = std::max(lastTime, std::atof(t->second.c_str()));
+                        }
+                        const auto t = finalSample.find("time REAL");
+                        if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
+                            payload += encodeMap(finalSample) + kGroupSep;
+                        sendMessage(fd, 'G', runIndex, payload);
+                    }
+                    sendMessage(fd, 'E', runIndex, "");
+                });
         }
 
         /** The data of one planner across all its runs (possibly gathered from several processes). */
@@ -842,46 +856,35 @@ namespace mhplan::bench
                                              std::size_t runIndex, std::uint32_t seed,
                                              std::uint32_t startSeed, int fd)
         {
-            int code = 0;
-            try
-            {
-                ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                // As for planners: the seed before any random number generator exists in this process
-                // (plan-then-follow controllers run OMPL planners).
-                ompl::RNG::setSeed(seed);
-                Scenario scenario = xs.scenario;
-                applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
-                const ControllerPtr controller = makeController(spec.controller);
-                for (const auto &kv : spec.params)
-                    controller->setParameter(kv.first, kv.second);
-                std::map<std::string, std::string> common;
-                for (const auto &kv : controller->parameters())
-                    common[oneLine(kv.first)] = oneLine(kv.second);
-                common["controller"] = spec.controller;
-                sendMessage(fd, 'C', 0, encodeMap(common));
-                Simulation sim(std::move(scenario), controller, seed);
-                const Clock::time_point t0 = Clock::now();
-                const SimulationResult result = sim.run();
-                const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
-                ot::Benchmark::RunProperties run = simulationProperties(result, wall);
-                run["run index INTEGER"] = std::to_string(runIndex);
-                run["run seed INTEGER"] = std::to_string(seed);
-                run["start seed INTEGER"] = std::to_string(startSeed);
-                sendMessage(fd, 'R', runIndex, encodeMap(run));
-                sendMessage(fd, 'E', runIndex, "");
-            }
-            catch (const std::exception &e)
-            {
-                sendMessage(fd, 'X', 0, e.what());
-                code = 3;
-            }
-            catch (...)
-            {
-                sendMessage(fd, 'X', 0, "unknown exception");
-                code = 3;
-            }
-            ::close(fd);
-            ::_exit(code);
+            finishRunChild(fd,
+                           [&]()
+                           {
+                               ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                               // As for planners: the seed before any random number generator exists in this
+                               // process (plan-then-follow controllers run OMPL planners).
+                               ompl::RNG::setSeed(seed);
+                               Scenario scenario = xs.scenario;
+                               applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter,
+                                                startSeed);
+                               const ControllerPtr controller = makeController(spec.controller);
+                               for (const auto &kv : spec.params)
+                                   controller->setParameter(kv.first, kv.second);
+                               std::map<std::string, std::string> common;
+                               for (const auto &kv : controller->parameters())
+                                   common[oneLine(kv.first)] = oneLine(kv.second);
+                               common["controller"] = spec.controller;
+                               sendMessage(fd, 'C', 0, encodeMap(common));
+                               Simulation sim(std::move(scenario), controller, seed);
+                               const Clock::time_point t0 = Clock::now();
+                               const SimulationResult result = sim.run();
+                               const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
+                               ot::Benchmark::RunProperties run = simulationProperties(result, wall);
+                               run["run index INTEGER"] = std::to_string(runIndex);
+                               run["run seed INTEGER"] = std::to_string(seed);
+                               run["start seed INTEGER"] = std::to_string(startSeed);
+                               sendMessage(fd, 'R', runIndex, encodeMap(run));
+                               sendMessage(fd, 'E', runIndex, "");
+                           });
         }
 
         /** Experiment process of a simulation experiment: every controller, every run, each in its own
@@ -1047,10 +1050,9 @@ namespace mhplan::bench
             xs.optimumSeconds = secondsSince(t0);
         }
 
-        /** Check every planner and parameter in a throw-away process (so that this process never
-            allocates a random number generator before the run processes set their seeds). */
-        void validatePlanners(const Campaign &c, const PlannerRegistry &registry, const World &world,
-                              const Query &query)
+        /** Run \e check in a throw-away child process; the message it returns (empty = fine) is thrown here
+            as InputError. A crash of the child is a runtime_error naming \e what. */
+        void checkInChildProcess(const std::function<std::string()> &check, const std::string &what)
         {
             int fds[2];
             if (::pipe(fds) != 0)
@@ -1058,6 +1060,8 @@ namespace mhplan::bench
             std::cout.flush();
             std::cerr.flush();
             const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
             if (pid == 0)
             {
                 ::close(fds[0]);
@@ -1065,23 +1069,7 @@ namespace mhplan::bench
                 try
                 {
                     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-                    const CollisionModelPtr model =
-                        makeCollisionModel(world, parseCollisionBackend(c.collision));
-                    const og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
-                    for (std::size_t i = 0; i < c.planners.size(); ++i)
-                    {
-                        try
-                        {
-                            registry.create(c.planners[i].planner, ss->getSpaceInformation(),
-                                            c.planners[i].params);
-                        }
-                        catch (const std::exception &ex)
-                        {
-                            error = c.file + ": planners[" + std::to_string(i) + "] (" +
-                                    c.planners[i].displayName + "): " + ex.what();
-                            break;
-                        }
-                    }
+                    error = check();
                 }
                 catch (const std::exception &ex)
                 {
@@ -1104,61 +1092,65 @@ namespace mhplan::bench
             if (!error.empty())
                 throw InputError(error);
             if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-                throw std::runtime_error("checking the campaign's planners crashed the checking process");
+                throw std::runtime_error("checking the campaign's " + what + " crashed the checking process");
+        }
+
+        /** Check every planner and parameter in a throw-away process (so that this process never
+            allocates a random number generator before the run processes set their seeds). */
+        void validatePlanners(const Campaign &c, const PlannerRegistry &registry, const World &world,
+                              const Query &query)
+        {
+            checkInChildProcess(
+                [&]() -> std::string
+                {
+                    const CollisionModelPtr model =
+                        makeCollisionModel(world, parseCollisionBackend(c.collision));
+                    const og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+                    for (std::size_t i = 0; i < c.planners.size(); ++i)
+                    {
+                        try
+                        {
+                            registry.create(c.planners[i].planner, ss->getSpaceInformation(),
+                                            c.planners[i].params);
+                        }
+                        catch (const std::exception &ex)
+                        {
+                            return c.file + ": planners[" + std::to_string(i) + "] (" +
+                                   c.planners[i].displayName + "): " + ex.what();
+                        }
+                    }
+                    return {};
+                },
+                "planners");
         }
 
         /** Check every controller and parameter of the simulations in a throw-away process (controllers may
             own planners and random number generators). Messages name the campaign file and line. */
         void validateControllers(const Campaign &c)
         {
-            int fds[2];
-            if (::pipe(fds) != 0)
-                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-            std::cout.flush();
-            std::cerr.flush();
-            const pid_t pid = ::fork();
-            if (pid < 0)
-                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-            if (pid == 0)
-            {
-                ::close(fds[0]);
-                std::string error;
-                ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-                for (std::size_t si = 0; si < c.simulations.size() && error.empty(); ++si)
-                    for (std::size_t ci = 0; ci < c.simulations[si].controllers.size() && error.empty(); ++ci)
-                    {
-                        const ControllerSpec &spec = c.simulations[si].controllers[ci];
-                        try
+            checkInChildProcess(
+                [&]() -> std::string
+                {
+                    for (std::size_t si = 0; si < c.simulations.size(); ++si)
+                        for (std::size_t ci = 0; ci < c.simulations[si].controllers.size(); ++ci)
                         {
-                            const ControllerPtr controller = makeController(spec.controller);
-                            for (const auto &kv : spec.params)
-                                controller->setParameter(kv.first, kv.second);
+                            const ControllerSpec &spec = c.simulations[si].controllers[ci];
+                            try
+                            {
+                                const ControllerPtr controller = makeController(spec.controller);
+                                for (const auto &kv : spec.params)
+                                    controller->setParameter(kv.first, kv.second);
+                            }
+                            catch (const std::exception &ex)
+                            {
+                                return c.file + ":" + std::to_string(spec.line) + ": simulations[" +
+                                       std::to_string(si) + "].controllers[" + std::to_string(ci) + "] (" +
+                                       spec.displayName + "): " + ex.what();
+                            }
                         }
-                        catch (const std::exception &ex)
-                        {
-                            error = c.file + ":" + std::to_string(spec.line) + ": simulations[" +
-                                    std::to_string(si) + "].controllers[" + std::to_string(ci) + "] (" +
-                                    spec.displayName + "): " + ex.what();
-                        }
-                    }
-                writeAll(fds[1], error);
-                ::close(fds[1]);
-                ::_exit(0);
-            }
-            ::close(fds[1]);
-            std::string error;
-            char buf[4096];
-            ssize_t n;
-            while ((n = ::read(fds[0], buf, sizeof(buf))) > 0 || (n < 0 && errno == EINTR))
-                if (n > 0)
-                    error.append(buf, static_cast<std::size_t>(n));
-            ::close(fds[0]);
-            int status = 0;
-            ::waitpid(pid, &status, 0);
-            if (!error.empty())
-                throw InputError(error);
-            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-                throw std::runtime_error("checking the campaign's controllers crashed the checking process");
+                    return {};
+                },
+                "controllers");
         }
 
         std::string formatDuration(double s)

@@ -154,21 +154,7 @@ namespace mhplan
 
     Scenario parseScenarioYaml(const std::string &text, const std::string &fileName)
     {
-        YAML::Node root;
-        try
-        {
-            root = YAML::Load(text);
-        }
-        catch (const YAML::ParserException &e)
-        {
-            std::ostringstream msg;
-            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
-                << ": malformed YAML: " << e.msg;
-            throw InputError(msg.str());
-        }
-        if (!root.IsMap())
-            throw InputError(fileName +
-                             ":1: a scenario file must be a YAML mapping (see environments/README.md)");
+        const YAML::Node root = loadYamlMapping(text, fileName, "scenario file", "environments/README.md");
         const YamlReader r(fileName);
         const std::set<std::string> scenarioKeys{"world",  "moving_obstacles", "robot_defaults",
                                                  "robots", "simulation",       "reference"};

@@ -221,21 +221,7 @@ namespace mhplan
 
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
     {
-        YAML::Node root;
-        try
-        {
-            root = YAML::Load(textIn);
-        }
-        catch (const YAML::ParserException &e)
-        {
-            std::ostringstream msg;
-            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
-                << ": malformed YAML: " << e.msg;
-            throw InputError(msg.str());
-        }
-        if (!root.IsMap())
-            throw InputError(fileName +
-                             ":1: a world file must be a YAML mapping (see environments/README.md)");
+        const YAML::Node root = loadYamlMapping(textIn, fileName, "world file", "environments/README.md");
         return readWorldNode(YamlReader(fileName), root);
     }
 

@@ -7,6 +7,26 @@
 
 namespace mhplan
 {
+    YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
+                               const std::string &help)
+    {
+        YAML::Node root;
+        try
+        {
+            root = YAML::Load(text);
+        }
+        catch (const YAML::ParserException &e)
+        {
+            std::ostringstream msg;
+            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                << ": malformed YAML: " << e.msg;
+            throw InputError(msg.str());
+        }
+        if (!root.IsMap())
+            throw InputError(fileName + ":1: a " + what + " must be a YAML mapping (see " + help + ")");
+        return root;
+    }
+
     void YamlReader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
     {
         std::ostringstream msg;

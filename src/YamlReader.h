@@ -11,6 +11,11 @@
 
 namespace mhplan
 {
+    /** \brief Parse one YAML document that must be a mapping; InputError "FILE:LINE:COL: malformed YAML: ..."
+        or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
+    YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
+                               const std::string &help);
+
     /** \brief Typed access to the nodes of one YAML document. Every problem throws InputError as
         "FILE:LINE: field 'a.b[2].c': what is wrong" (the line is 1-based, from the node's mark). */
     class YamlReader
