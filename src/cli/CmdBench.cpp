@@ -109,13 +109,21 @@ namespace mhplan::cli
             return 0;
         }
 
-        std::cout << "campaign " << campaign.name << ": " << campaign.planners.size() << " planners, "
-                  << campaign.runs << " runs each, " << campaign.timeLimit << " s per run, seed "
-                  << campaign.seed
-                  << (options.shardCount > 1 ? ", shard " + std::to_string(options.shardIndex) + "/" +
-                                                   std::to_string(options.shardCount)
-                                             : std::string())
-                  << ", " << options.jobs << " job(s)\n";
+        std::cout << "campaign " << campaign.name << ": seed " << campaign.seed;
+        if (!campaign.planners.empty())
+            std::cout << ", " << campaign.planners.size() << " planner(s), " << campaign.runs
+                      << " runs each, " << campaign.timeLimit << " s per run";
+        if (!campaign.simulations.empty())
+        {
+            std::size_t controllers = 0;
+            for (const auto &sim : campaign.simulations)
+                controllers += sim.controllers.size();
+            std::cout << ", " << campaign.simulations.size() << " simulation scenario(s) with " << controllers
+                      << " scenario-controller pair(s)";
+        }
+        if (options.shardCount > 1)
+            std::cout << ", shard " << options.shardIndex << "/" << options.shardCount;
+        std::cout << ", " << options.jobs << " job(s)\n";
         const bench::CampaignSummary s = bench::runCampaign(campaign, options);
         std::cout << std::fixed << std::setprecision(1);
         std::cout << "experiments: " << s.experiments << " (" << s.completed << " run now, " << s.skipped
