@@ -22,9 +22,6 @@ namespace mhplan
         constexpr double kInf = std::numeric_limits<double>::infinity();
         /** \brief Smallest speed a braked command keeps (the simulator turns only for a nonzero speed). */
         constexpr double kCreepSpeed = 1e-11;
-        /** \brief The safety brake keeps the robot at least this far from what it brakes for (exact distances
-            of touching shapes are not exactly representable). */
-        constexpr double kBrakeGap = 1e-6;
 
         Vec2 unit(const Vec2 &v)
         {
@@ -275,6 +272,7 @@ namespace mhplan
     ControllerBase::ControllerBase()
     {
         params_.add("safety_brake", &safetyBrake_, 0.0, 1.0, true);
+        params_.add("brake_margin", &brakeMargin_, 0.0, 1.0);
     }
 
     void ControllerBase::setParameter(const std::string &name, const std::string &value)
@@ -297,7 +295,7 @@ namespace mhplan
         const Vec2 step = Vec2(std::cos(s.heading + turn), std::sin(s.heading + turn)) *
                           (std::max(0.0, std::cos(error - turn)) * dt);
         double limit = speed;
-        forEachObstacle(sim, i, s.position, speed * dt / 0.45 + kBrakeGap, true,
+        forEachObstacle(sim, i, s.position, speed * dt / 0.45 + brakeMargin_, true,
                         [&](const SensedObstacle &o, double gap, const Vec2 &nearest)
                         {
                             using Source = SensedObstacle::Source;
@@ -313,7 +311,7 @@ namespace mhplan
                             if (approach <= 0.0)
                                 return;
                             const double share = o.source == Source::Robot ? 0.45 : 0.9;
-                            limit = std::min(limit, share * std::max(gap - kBrakeGap, 0.0) / approach);
+                            limit = std::min(limit, share * std::max(gap - brakeMargin_, 0.0) / approach);
                         });
         if (limited != nullptr)
             *limited = limit < speed;

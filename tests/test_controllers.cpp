@@ -388,3 +388,22 @@ TEST(Controllers, CommandsAllocateNothingOnceWarm)
         EXPECT_EQ(gAllocations - before, 0u) << name;
     }
 }
+
+TEST(Controllers, BrakeMarginIsKeptFromRobotsAndObstacles)
+{
+    // Default margin (1e-6 m): robots may come arbitrarily close; with 0.1 m the brake keeps every robot at
+    // least that far from every other robot and every static obstacle it approaches (robots then stall in
+    // the crowded centre: the margin is a safety property, not a planner).
+    const Scenario scenario =
+        loadScenario(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/scenarios/mapf_15robots.yaml");
+    for (const std::string controller : {"dapf", "aapf"})
+    {
+        const SimulationResult r = run(scenario, controller, 1, {{"brake_margin", "0.1"}});
+        EXPECT_EQ(r.collisions(), 0u) << controller;
+        EXPECT_GE(r.minRobotDistance, 0.1 - 1e-9) << controller;
+        EXPECT_GE(r.minObstacleClearance, 0.1 - 1e-9) << controller;
+    }
+    ControllerPtr c = makeController("aapf");
+    EXPECT_EQ(c->parameters().at("brake_margin"), "1e-06");
+    EXPECT_THROW(c->setParameter("brake_margin", "2"), InputError);
+}
