@@ -6,6 +6,7 @@
 #include "PopulationPlanner.h"
 
 #include <memory>
+#include <string>
 
 namespace mhplan
 {
@@ -39,7 +40,8 @@ namespace mhplan
     class Genetic : public PopulationPlanner
     {
       public:
-        explicit Genetic(const ompl::base::SpaceInformationPtr &si);
+        /** \brief \e name: "GA" (registry variants pass their own, e.g. "GA-WALK"). */
+        explicit Genetic(const ompl::base::SpaceInformationPtr &si, const std::string &name = "GA");
         ~Genetic() override;
 
         /** \brief PopulationPlanner::setup(), then refuse a space that is not 2-dimensional. */
@@ -60,6 +62,13 @@ namespace mhplan
         /** \brief Share of the population replaced by fresh individuals each generation (0..1). */
         void setReplaceFraction(double f);
         double getReplaceFraction() const { return replaceFraction_; }
+        /** \brief How new individuals are drawn: "nodes" (the spec's random node sequences: 1..waypoints
+           random free points, then repaired; the default) or "walk" (a random collision-free lattice walk
+           from start to goal, PathOperators::randomLatticePath, simplified; falls back to "nodes" when the
+           walk does not reach the goal within 20000 steps). "walk" is the improved variant GA-WALK: not in
+           [GMS]. */
+        void setInitialisation(const std::string &mode);
+        std::string getInitialisation() const { return walk_ ? "walk" : "nodes"; }
         /** \brief Apply node improvement to the offspring. */
         void setNodeImprovement(bool on) { nodeImprovement_ = on; }
         bool getNodeImprovement() const { return nodeImprovement_; }
@@ -83,6 +92,7 @@ namespace mhplan
         unsigned int tournamentSize_{2};
         double replaceFraction_{0.1};
         bool nodeImprovement_{true};
+        bool walk_{false};
 
         std::unique_ptr<PathOperators> ops_;
         std::vector<Individual> pop_, next_;

@@ -46,6 +46,14 @@ namespace mhplan
             keep the first move that lowers the [GMS] f1 while both adjacent segments stay valid. Only for
             feasible paths (returns false and does nothing otherwise). */
         bool improveNodes(std::vector<Vec2> &path);
+        /** \brief A random collision-free node sequence from \e start to \e goal (the initialisation of the
+            GA-WALK variant): a depth-first walk on the lattice start + step * (i, j) over the 8 compass
+           moves, each move ranked by its progress toward the goal plus uniform noise in [0, \e noise) and
+           taken when its segment is valid and its node unvisited (dead ends are backed out of), until the
+           goal is in sight. At most \e maxExpansions walk steps; false (and \e path unspecified) when the
+           goal was not reached. The path has no loops; simplify() it to a few nodes. */
+        bool randomLatticePath(std::vector<Vec2> &path, const Vec2 &start, const Vec2 &goal,
+                               unsigned int maxExpansions, double noise = 1.5);
 
       private:
         bool inBounds(const Vec2 &p) const;

@@ -120,7 +120,8 @@ namespace mhplan
                "Search tree with resolution independent density estimation (Gipson et al. 2013)",
                omplAllocator<og::STRIDE>()});
         // mhplan's planners: one line each (see ompl_planners/).
-        r.add({"AStar", "mhplan", "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
+        r.add({"AStar", "mhplan",
+               "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
                omplAllocator<AStar>()});
         r.add({"ThetaStar", "mhplan", "Theta*, any-angle A* on the same lattice (Nash et al. 2007)",
                omplAllocator<ThetaStar>()});
@@ -140,15 +141,25 @@ namespace mhplan
         r.add({"SMA-GMS", "mhplan",
                "SMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
                gmsVariant<SlimeMould>("SMA-GMS", 3)});
-        r.add({"LRSMA-GMS", "mhplan",
-               "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
-               "5 waypoints",
-               gmsVariant<LRSMA>("LRSMA-GMS", 5)});
+        r.add(
+            {"LRSMA-GMS", "mhplan",
+             "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
+             "5 waypoints",
+             gmsVariant<LRSMA>("LRSMA-GMS", 5)});
         r.add({"MGO-GMS", "mhplan",
                "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
                gmsVariant<MountainGazelle>("MGO-GMS", 3)});
         r.add(
             {"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", omplAllocator<Genetic>()});
+        r.add({"GA-WALK", "mhplan",
+               "GA, improved variant (not in the paper): initial and replacement individuals are random "
+               "collision-free lattice walks",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               {
+                   auto p = std::make_shared<Genetic>(si, "GA-WALK");
+                   p->setInitialisation("walk");
+                   return p;
+               }});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()

@@ -10,8 +10,8 @@ namespace ob = ompl::base;
 namespace mhplan
 {
 
-    Genetic::Genetic(const ob::SpaceInformationPtr &si)
-        : PopulationPlanner(si, "GA", PopulationDefaults{50, 100, 5, PathDecoding::Polyline})
+    Genetic::Genetic(const ob::SpaceInformationPtr &si, const std::string &name)
+        : PopulationPlanner(si, name, PopulationDefaults{50, 100, 5, PathDecoding::Polyline})
     {
         setFitness("gms");
         declareParam<double>("crossover_rate", this, &Genetic::setCrossoverRate, &Genetic::getCrossoverRate,
@@ -26,6 +26,8 @@ namespace mhplan
                              &Genetic::getReplaceFraction, "0.:0.05:1.");
         declareParam<bool>("node_improvement", this, &Genetic::setNodeImprovement,
                            &Genetic::getNodeImprovement, "0,1");
+        declareParam<std::string>("initialisation", this, &Genetic::setInitialisation,
+                                  &Genetic::getInitialisation, "nodes,walk");
     }
 
     Genetic::~Genetic() = default;
@@ -80,8 +82,21 @@ namespace mhplan
         ops_.reset();
     }
 
+    void Genetic::setInitialisation(const std::string &mode)
+    {
+        if (mode != "nodes" && mode != "walk")
+            throw std::invalid_argument(
+                getName() + ": parameter 'initialisation' must be 'nodes' or 'walk' (got '" + mode + "')");
+        walk_ = mode == "walk";
+    }
+
     void Genetic::randomIndividual(Individual &ind)
     {
+        if (walk_ && ops_->randomLatticePath(ind, startPoint(), goalPoint(), 20000))
+        {
+            ops_->simplify(ind);
+            return;
+        }
         ind.clear();
         ind.push_back(startPoint());
         const int k = rng_.uniformInt(1, static_cast<int>(getWaypoints()));

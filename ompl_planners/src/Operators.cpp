@@ -3,9 +3,13 @@
 #include <boost/math/constants/constants.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 
 namespace mhplan
 {
@@ -162,5 +166,59 @@ namespace mhplan
             }
         }
         return true;
+    }
+
+    bool PathOperators::randomLatticePath(std::vector<Vec2> &path, const Vec2 &start, const Vec2 &goal,
+                                          unsigned int maxExpansions, double noise)
+    {
+        static const int kMoves[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                         {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+        auto key = [](long ix, long iy)
+        { return (std::uint64_t(std::uint32_t(ix)) << 32) | std::uint64_t(std::uint32_t(iy)); };
+        auto at = [&](long ix, long iy) { return start + Vec2(ix * step_, iy * step_); };
+        std::unordered_set<std::uint64_t> visited{key(0, 0)};
+        std::vector<std::array<long, 2>> stack{{0, 0}};
+        for (unsigned int e = 0; e < maxExpansions && !stack.empty(); ++e)
+        {
+            const long ix = stack.back()[0], iy = stack.back()[1];
+            const Vec2 p = at(ix, iy);
+            if (fitness_.segmentValid(p, goal))
+            {
+                path.clear();
+                for (const auto &node : stack)
+                    path.push_back(at(node[0], node[1]));
+                path.front() = start;
+                path.push_back(goal);
+                return true;
+            }
+            const Vec2 toGoal = goal - p;
+            const double dist = norm(toGoal);
+            double score[8];
+            for (int m = 0; m < 8; ++m)
+            {
+                const Vec2 d(kMoves[m][0], kMoves[m][1]);
+                score[m] = visited.count(key(ix + kMoves[m][0], iy + kMoves[m][1])) != 0
+                               ? -std::numeric_limits<double>::infinity()
+                               : dot(d, toGoal) / (norm(d) * dist) + rng_.uniformReal(0.0, noise);
+            }
+            bool moved = false;
+            for (int tries = 0; tries < 8 && !moved; ++tries)
+            {
+                const int m = static_cast<int>(std::max_element(score, score + 8) - score);
+                if (score[m] == -std::numeric_limits<double>::infinity())
+                    break;
+                score[m] = -std::numeric_limits<double>::infinity();
+                const long jx = ix + kMoves[m][0], jy = iy + kMoves[m][1];
+                const Vec2 q = at(jx, jy);
+                if (!inBounds(q) || !fitness_.segmentValid(p, q))
+                    continue;
+                visited.insert(key(jx, jy));
+                stack.push_back({jx, jy});
+                moved = true;
+            }
+            if (!moved)
+                stack.pop_back(); // a dead end: back out
+        }
+        return false;
     }
 } // namespace mhplan
