@@ -144,6 +144,29 @@ namespace mhplan::bench
             return out;
         }
 
+        /** A forked process with a pipe from child to parent: in the child (pid 0) \c fd is the write end,
+            in the parent the read end; the other end is closed on each side. Output is flushed first so
+            that buffered text is not written twice. */
+        struct Forked
+        {
+            pid_t pid;
+            int fd;
+        };
+
+        Forked forkWithPipe()
+        {
+            int fds[2];
+            if (::pipe(fds) != 0)
+                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            ::close(pid == 0 ? fds[0] : fds[1]);
+            return {pid, pid == 0 ? fds[1] : fds[0]};
+        }
+
         void writeAll(int fd, const std::string &data)
         {
             std::size_t done = 0;
@@ -495,25 +518,16 @@ namespace mhplan::bench
         ChildOutcome runChildProcess(int progressFd, double watchdog, const std::function<void(int)> &body,
                                      const std::function<void(const Message &, double)> &onMessage)
         {
-            int fds[2];
-            if (::pipe(fds) != 0)
-                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-            std::cout.flush();
-            std::cerr.flush();
-            const pid_t pid = ::fork();
-            if (pid < 0)
-                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            const auto [pid, fd] = forkWithPipe();
             if (pid == 0)
             {
                 ::prctl(PR_SET_PDEATHSIG, SIGKILL);
                 const rlimit noCore{0, 0}; // a crashing run leaves no core file behind
                 ::setrlimit(RLIMIT_CORE, &noCore);
-                ::close(fds[0]);
                 ::close(progressFd);
-                body(fds[1]);
+                body(fd);
                 ::_exit(5); // body must not return
             }
-            ::close(fds[1]);
             ChildOutcome out;
             MessageReader reader;
             const Clock::time_point runStart = Clock::now();
@@ -521,7 +535,7 @@ namespace mhplan::bench
             char buf[65536];
             while (true)
             {
-                pollfd pfd{fds[0], POLLIN, 0};
+                pollfd pfd{fd, POLLIN, 0};
                 const int r = ::poll(&pfd, 1, 200);
                 if (r < 0 && errno == EINTR)
                     continue;
@@ -535,7 +549,7 @@ namespace mhplan::bench
                     }
                     continue;
                 }
-                const ssize_t n = ::read(fds[0], buf, sizeof(buf));
+                const ssize_t n = ::read(fd, buf, sizeof(buf));
                 if (n < 0 && errno == EINTR)
                     continue;
                 if (n <= 0)
@@ -551,7 +565,7 @@ namespace mhplan::bench
                         onMessage(m, secondsSince(runStart));
                 }
             }
-            ::close(fds[0]);
+            ::close(fd);
             while (::waitpid(pid, &out.status, 0) < 0 && errno == EINTR)
             {
             }
@@ -1054,17 +1068,9 @@ namespace mhplan::bench
             as InputError. A crash of the child is a runtime_error naming \e what. */
         void checkInChildProcess(const std::function<std::string()> &check, const std::string &what)
         {
-            int fds[2];
-            if (::pipe(fds) != 0)
-                throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-            std::cout.flush();
-            std::cerr.flush();
-            const pid_t pid = ::fork();
-            if (pid < 0)
-                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            const auto [pid, fd] = forkWithPipe();
             if (pid == 0)
             {
-                ::close(fds[0]);
                 std::string error;
                 try
                 {
@@ -1075,18 +1081,17 @@ namespace mhplan::bench
                 {
                     error = ex.what();
                 }
-                writeAll(fds[1], error);
-                ::close(fds[1]);
+                writeAll(fd, error);
+                ::close(fd);
                 ::_exit(0);
             }
-            ::close(fds[1]);
             std::string error;
             char buf[4096];
             ssize_t n;
-            while ((n = ::read(fds[0], buf, sizeof(buf))) > 0 || (n < 0 && errno == EINTR))
+            while ((n = ::read(fd, buf, sizeof(buf))) > 0 || (n < 0 && errno == EINTR))
                 if (n > 0)
                     error.append(buf, static_cast<std::size_t>(n));
-            ::close(fds[0]);
+            ::close(fd);
             int status = 0;
             ::waitpid(pid, &status, 0);
             if (!error.empty())
@@ -1414,18 +1419,10 @@ namespace mhplan::bench
                 while (nextTodo < todo.size() && active.size() < options.jobs)
                 {
                     const Experiment *e = todo[nextTodo++];
-                    int fds[2];
-                    if (::pipe(fds) != 0)
-                        throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-                    std::cout.flush();
-                    std::cerr.flush();
-                    const pid_t pid = ::fork();
-                    if (pid < 0)
-                        throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+                    const auto [pid, fd] = forkWithPipe();
                     if (pid == 0)
                     {
                         ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-                        ::close(fds[0]);
                         for (const auto &kv : active)
                             ::close(kv.second.fd);
                         int code = 0;
@@ -1440,7 +1437,7 @@ namespace mhplan::bench
                                 xs.experiment = e;
                                 xs.registry = &registry;
                                 prepareExperiment(xs);
-                                code = runExperimentProcess(xs, fds[1], solve);
+                                code = runExperimentProcess(xs, fd, solve);
                             }
                             else
                             {
@@ -1450,12 +1447,12 @@ namespace mhplan::bench
                                 xs.spec = &campaign.simulations[e->simulation];
                                 xs.scenario = loadScenario(e->scenarioFile);
                                 xs.slotBase = slotBase[e->simulation];
-                                code = runSimulationProcess(xs, fds[1], solve);
+                                code = runSimulationProcess(xs, fd, solve);
                             }
                             std::ostringstream done;
                             done.precision(17);
                             done << "e " << e->index << " " << secondsSince(w0) << " " << solve << "\n";
-                            writeAll(fds[1], done.str());
+                            writeAll(fd, done.str());
                         }
                         catch (const std::exception &ex)
                         {
@@ -1463,13 +1460,12 @@ namespace mhplan::bench
                                       << "\n";
                             code = 4;
                         }
-                        ::close(fds[1]);
+                        ::close(fd);
                         std::cout.flush();
                         std::cerr.flush();
                         ::_exit(code);
                     }
-                    ::close(fds[1]);
-                    active[pid] = Active{e, fds[0], "", false, 0.0, 0.0, 0};
+                    active[pid] = Active{e, fd, "", false, 0.0, 0.0, 0};
                 }
                 std::vector<pollfd> pfds;
                 std::vector<pid_t> pids;
