@@ -5,35 +5,14 @@
 #include "Generators.h"
 #include "WorldIO.h"
 
+#include "AllocationCounter.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <random>
-
-namespace
-{
-    std::atomic<long> gAllocations{0};
-}
-
-void *operator new(std::size_t size)
-{
-    ++gAllocations;
-    if (void *p = std::malloc(size == 0 ? 1 : size))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace mhplan;
 
@@ -52,7 +31,7 @@ namespace
         // Pass 0 warms up (thread-local scratch buffers grow to their working size once); pass 1 counts.
         for (int q = 0; q < 8; ++q)
         {
-            const long before = gAllocations.load();
+            const long before = static_cast<long>(test::heapAllocations());
             for (std::size_t i = 0; i + 1 < pts.size(); ++i)
             {
                 const Vec2 &a = pts[i];
@@ -74,7 +53,7 @@ namespace
                 }
             }
             if (q >= 4)
-                out[q - 4] = gAllocations.load() - before;
+                out[q - 4] = static_cast<long>(test::heapAllocations()) - before;
         }
         EXPECT_FALSE(std::isnan(sink));
         return out;

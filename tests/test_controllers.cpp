@@ -6,37 +6,15 @@
 
 #include <ompl/util/Console.h>
 
+#include "AllocationCounter.h"
+
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <sstream>
 
 using namespace mhplan;
-
-/** \brief Heap allocations counted by this test program's global operator new (the replacements are not
-    inlined: GCC would otherwise pair malloc/free with new/delete and warn). */
-static std::atomic<unsigned long> gAllocations{0};
-
-[[gnu::noinline]] void *operator new(std::size_t size)
-{
-    ++gAllocations;
-    if (void *p = std::malloc(size == 0 ? 1 : size))
-        return p;
-    throw std::bad_alloc();
-}
-
-[[gnu::noinline]] void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-
-[[gnu::noinline]] void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 namespace
 {
@@ -380,12 +358,12 @@ TEST(Controllers, CommandsAllocateNothingOnceWarm)
         Simulation sim(scenario, c, 3);
         for (int k = 0; k < 40; ++k)
             ASSERT_TRUE(sim.step());
-        const unsigned long before = gAllocations;
+        const unsigned long before = test::heapAllocations();
         for (int k = 0; k < 50; ++k)
             for (std::size_t i = 0; i < sim.robotCount(); ++i)
                 if (sim.state(i).status == RobotStatus::Moving)
                     c->command(sim, i);
-        EXPECT_EQ(gAllocations - before, 0u) << name;
+        EXPECT_EQ(test::heapAllocations() - before, 0u) << name;
     }
 }
 

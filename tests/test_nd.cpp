@@ -21,49 +21,14 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
+#include "AllocationCounter.h"
+
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <limits>
 #include <tuple>
-
-// Every heap allocation of this test program is counted (for "no allocation per fitness evaluation"). The
-// operators are kept out of line so that GCC does not pair an inlined free() with operator new.
-namespace
-{
-    std::atomic<unsigned long> gAllocations{0};
-} // namespace
-
-[[gnu::noinline]] void *operator new(std::size_t n)
-{
-    ++gAllocations;
-    if (void *p = std::malloc(n == 0 ? 1 : n))
-        return p;
-    throw std::bad_alloc();
-}
-[[gnu::noinline]] void *operator new[](std::size_t n)
-{
-    return operator new(n);
-}
-[[gnu::noinline]] void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete[](void *p) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete[](void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace mhplan;
 namespace ob = ompl::base;
@@ -484,10 +449,10 @@ TEST(NdEvaluation, NoHeapAllocationPerFitnessEvaluation)
                 for (std::size_t i = 0; i < 200; ++i)
                     probe->randomCandidate(xs.data() + i * probe->candidateDimension());
                 const unsigned long before = probe->evaluationCount();
-                const unsigned long allocations = gAllocations.load();
+                const unsigned long allocations = test::heapAllocations();
                 for (std::size_t i = 0; i < 200; ++i)
                     probe->evaluateCandidate(xs.data() + i * probe->candidateDimension());
-                EXPECT_EQ(gAllocations.load() - allocations, 0u)
+                EXPECT_EQ(test::heapAllocations() - allocations, 0u)
                     << decoding << " " << fitness << (clearanceChecker ? " clearance" : " validity-only");
                 EXPECT_EQ(probe->evaluationCount() - before, 200u);
             }
@@ -500,7 +465,7 @@ TEST(NdEvaluation, NoHeapAllocationPerFitnessEvaluation)
     ss->solve(never());
     std::vector<double> x(probe->candidateDimension());
     probe->randomCandidate(x.data());
-    const unsigned long allocations = gAllocations.load();
+    const unsigned long allocations = test::heapAllocations();
     probe->evaluateCandidate(x.data());
-    EXPECT_GT(gAllocations.load() - allocations, 0u);
+    EXPECT_GT(test::heapAllocations() - allocations, 0u);
 }

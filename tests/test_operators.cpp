@@ -20,12 +20,12 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
+#include "AllocationCounter.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdlib>
-#include <new>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -33,41 +33,6 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
-
-// Every heap allocation of this program is counted (the operator step allocates nothing once its buffers
-// exist). Kept out of line so that GCC does not pair an inlined free() with operator new.
-namespace
-{
-    std::atomic<unsigned long> gAllocations{0};
-} // namespace
-
-[[gnu::noinline]] void *operator new(std::size_t n)
-{
-    ++gAllocations;
-    if (void *p = std::malloc(n == 0 ? 1 : n))
-        return p;
-    throw std::bad_alloc();
-}
-[[gnu::noinline]] void *operator new[](std::size_t n)
-{
-    return operator new(n);
-}
-[[gnu::noinline]] void operator delete(void *p) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete[](void *p) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete(void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
-[[gnu::noinline]] void operator delete[](void *p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace mhplan;
 namespace ob = ompl::base;
@@ -383,9 +348,9 @@ TEST(GmsOperators, OperatorStepAllocatesNothingOnceWarm)
         ASSERT_TRUE(ss.haveExactSolutionPath());
         ss.getProblemDefinition()->clearSolutionPaths();
         const unsigned long evaluations = sma->evaluationCount();
-        const unsigned long before = gAllocations.load();
+        const unsigned long before = test::heapAllocations();
         sma->solve(ob::PlannerTerminationCondition([] { return false; }));
-        counts.push_back(gAllocations.load() - before);
+        counts.push_back(test::heapAllocations() - before);
         EXPECT_GE(sma->evaluationCount() - evaluations, on ? 600u : 300u);
     }
     EXPECT_EQ(counts[0], counts[1]) << "faithful " << counts[0] << ", with the operators " << counts[1];
