@@ -409,7 +409,6 @@ namespace mhplan
         ompl::base::State *costB_{nullptr};
         /** \brief States handed to PlannerData (it keeps the pointers): owned here until clear(). */
         mutable std::vector<ompl::base::State *> plannerDataStates_;
-        void freePlannerDataStates();
 
         std::atomic<double> bestCostValue_;
         std::atomic<unsigned long> iterationCount_{0};

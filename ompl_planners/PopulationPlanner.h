@@ -273,7 +273,6 @@ namespace mhplan
         void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
         void reportSolution(bool &exact, bool &approximate);
         void fireIntermediate();
-        void freePlannerDataStates();
         /** \brief The [GMS] operator step after an iteration (see the class doc); false when interrupted. */
         bool applyGmsOperators();
         /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */

@@ -4,6 +4,7 @@
 #define MHPLAN_POTENTIAL_FIELD_H
 
 #include "Collision.h"
+#include "PlannerSupport.h"
 
 #include <ompl/base/GenericParam.h>
 #include <ompl/base/Planner.h>
@@ -200,15 +201,6 @@ namespace mhplan
                                          const std::vector<Vec2> &walk, bool finished, bool reachedGoal,
                                          const Vec2 &goal, std::atomic<double> &bestCost);
 
-    /** \brief Add the walk's vertices (the first a start vertex, the last a goal vertex when \e reachedGoal)
-        and the edges between consecutive ones to \e data. PlannerData keeps the state pointers it is given
-        (and merges vertices by pointer): one state is allocated per vertex and appended to \e owned, which
-        the caller frees (si->freeState) when it clears or is destroyed. */
-    void walkPlannerData(const ompl::base::SpaceInformationPtr &si, const std::vector<Vec2> &walk,
-                         bool reachedGoal, ompl::base::PlannerData &data,
-                         std::vector<ompl::base::State *> &owned);
-    /** \brief Free the states of \e owned with \e si and empty it. */
-    void freeStates(const ompl::base::SpaceInformation &si, std::vector<ompl::base::State *> &owned);
     /** @} */
 } // namespace mhplan
 

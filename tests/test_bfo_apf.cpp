@@ -731,7 +731,9 @@ TEST(BfoApfWalkHelpers, ReachGoalReportAndPlannerData)
     {
         ob::PlannerData data(si);
         std::vector<ob::State *> owned;
-        walkPlannerData(si, three, reached, data, owned);
+        addPathToPlannerData(
+            *si, three.size(), [&](ob::State *st, std::size_t i) { setStatePosition(st, three[i]); }, reached,
+            data, owned);
         EXPECT_EQ(data.numVertices(), 3u);
         EXPECT_EQ(data.numEdges(), 2u);
         EXPECT_EQ(data.numStartVertices(), 1u);

@@ -47,13 +47,7 @@ namespace mhplan
                                    "0:1:10000000");
         declareParam<unsigned int>("max_steps", this, &A::setMaxSteps, &A::getMaxSteps, "1:1:10000000");
 
-        addPlannerProgressProperty("best cost REAL",
-                                   [this]
-                                   {
-                                       std::ostringstream out;
-                                       out << std::setprecision(17) << bestCostValue_.load();
-                                       return out.str();
-                                   });
+        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCostValue_.load()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(steps_.load()); });
         addPlannerProgressProperty("fitness evaluations INTEGER",
                                    [this] { return std::to_string(evaluations_.load()); });
@@ -314,6 +308,8 @@ namespace mhplan
     void ArtificialPotentialField::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        walkPlannerData(si_, walk_, state_ == State::ReachedGoal, data, plannerDataStates_);
+        addPathToPlannerData(
+            *si_, walk_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, walk_[i]); },
+            state_ == State::ReachedGoal, data, plannerDataStates_);
     }
 } // namespace mhplan

@@ -35,14 +35,8 @@ namespace mhplan
         updateSpecs();
 
         // Replace the base's progress properties by mode-aware ones (same names).
-        addPlannerProgressProperty("best cost REAL",
-                                   [this]
-                                   {
-                                       std::ostringstream out;
-                                       out << std::setprecision(17)
-                                           << (online_ ? onlineBestCost_.load() : bestCost());
-                                       return out.str();
-                                   });
+        addPlannerProgressProperty("best cost REAL", [this]
+                                   { return formatCost((online_ ? onlineBestCost_.load() : bestCost())); });
         addPlannerProgressProperty(
             "iterations INTEGER",
             [this] { return std::to_string(online_ ? onlineSteps_.load() : iterationCount()); });
@@ -255,7 +249,9 @@ namespace mhplan
             return;
         }
         ob::Planner::getPlannerData(data);
-        walkPlannerData(si_, walk_, walkState_ == WalkState::ReachedGoal, data, plannerDataStates_);
+        addPathToPlannerData(
+            *si_, walk_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, walk_[i]); },
+            walkState_ == WalkState::ReachedGoal, data, plannerDataStates_);
     }
 
     bool BacterialForaging::halt() const

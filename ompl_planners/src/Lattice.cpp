@@ -1,4 +1,5 @@
 #include "Lattice.h"
+#include "PlannerSupport.h"
 
 #include "GridCollision.h"
 #include "PopulationPlanner.h" // checkParameterRange
@@ -196,13 +197,7 @@ namespace mhplan
         declareParam<unsigned int>("max_iterations", this, &LatticePlanner::setMaxIterations,
                                    &LatticePlanner::getMaxIterations, "0:1:1000000000");
 
-        addPlannerProgressProperty("best cost REAL",
-                                   [this]
-                                   {
-                                       std::ostringstream out;
-                                       out << std::setprecision(17) << bestCost();
-                                       return out.str();
-                                   });
+        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
         addPlannerProgressProperty("motion checks INTEGER",
                                    [this] { return std::to_string(motionCheckCount()); });
@@ -215,14 +210,7 @@ namespace mhplan
             si_->freeState(costA_);
             si_->freeState(costB_);
         }
-        freePlannerDataStates();
-    }
-
-    void LatticePlanner::freePlannerDataStates()
-    {
-        for (ob::State *s : plannerDataStates_)
-            si_->freeState(s);
-        plannerDataStates_.clear();
+        freeStates(*si_, plannerDataStates_);
     }
 
     void LatticePlanner::setResolution(double r)
@@ -252,7 +240,7 @@ namespace mhplan
     void LatticePlanner::clear()
     {
         ob::Planner::clear();
-        freePlannerDataStates();
+        freeStates(*si_, plannerDataStates_);
         problemReady_ = linksReady_ = finished_ = found_ = false;
         solution_.clear();
         goalLinks_.clear();
@@ -569,21 +557,9 @@ namespace mhplan
     void LatticePlanner::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        // PlannerData keeps the state pointers it is given (and merges vertices by pointer): one state per
-        // point, owned by the planner until clear().
-        unsigned int previous = ob::PlannerData::INVALID_INDEX;
-        for (std::size_t i = 0; i < solution_.size(); ++i)
-        {
-            ob::State *s = si_->allocState();
-            plannerDataStates_.push_back(s);
-            setStatePosition(s, solution_[i]);
-            const ob::PlannerDataVertex v(s);
-            const unsigned int index =
-                i == 0 ? data.addStartVertex(v)
-                       : (i + 1 == solution_.size() ? data.addGoalVertex(v) : data.addVertex(v));
-            if (i > 0)
-                data.addEdge(previous, index);
-            previous = index;
-        }
+        addPathToPlannerData(
+            *si_, solution_.size(),
+            [this](ob::State *s, std::size_t i) { setStatePosition(s, solution_[i]); }, true, data,
+            plannerDataStates_);
     }
 } // namespace mhplan

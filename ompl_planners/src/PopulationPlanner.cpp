@@ -1,4 +1,5 @@
 #include "PopulationPlanner.h"
+#include "PlannerSupport.h"
 
 #include "GridCollision.h"
 #include "Operators.h"
@@ -94,13 +95,7 @@ namespace mhplan
         declareParam<double>("gms_replace_fraction", this, &PopulationPlanner::setGmsReplaceFraction,
                              &PopulationPlanner::getGmsReplaceFraction, "0.:0.05:1.");
 
-        addPlannerProgressProperty("best cost REAL",
-                                   [this]
-                                   {
-                                       std::ostringstream out;
-                                       out << std::setprecision(17) << bestCost();
-                                       return out.str();
-                                   });
+        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
         addPlannerProgressProperty("fitness evaluations INTEGER",
                                    [this] { return std::to_string(evaluationCount()); });
@@ -112,7 +107,7 @@ namespace mhplan
             si_->freeState(costA_);
         if (costB_ != nullptr)
             si_->freeState(costB_);
-        freePlannerDataStates();
+        freeStates(*si_, plannerDataStates_);
     }
 
     void PopulationPlanner::setPopulationSize(unsigned int n)
@@ -353,7 +348,7 @@ namespace mhplan
     {
         ob::Planner::clear();
         clearPopulation();
-        freePlannerDataStates();
+        freeStates(*si_, plannerDataStates_);
         problemReady_ = false;
         initialised_ = false;
         haveFeasible_ = false;
@@ -608,22 +603,10 @@ namespace mhplan
     {
         ob::Planner::getPlannerData(data);
         const std::vector<double> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
-        const std::size_t count = points.size() / spaceDim_;
-        // PlannerData keeps the state pointers it is given (and merges vertices by pointer): one state per
-        // point, owned by the planner until clear(), as OMPL's planners own their tree's states.
-        unsigned int previous = ob::PlannerData::INVALID_INDEX;
-        for (std::size_t i = 0; i < count; ++i)
-        {
-            ob::State *s = si_->allocState();
-            plannerDataStates_.push_back(s);
-            toState(s, points, i);
-            const ob::PlannerDataVertex v(s);
-            const unsigned int index = i == 0 ? data.addStartVertex(v)
-                                              : (i + 1 == count ? data.addGoalVertex(v) : data.addVertex(v));
-            if (i > 0)
-                data.addEdge(previous, index);
-            previous = index;
-        }
+        addPathToPlannerData(
+            *si_, points.size() / spaceDim_,
+            [this, &points](ob::State *s, std::size_t i) { toState(s, points, i); }, true, data,
+            plannerDataStates_);
     }
 
     bool PopulationPlanner::applyGmsOperators()
@@ -781,10 +764,4 @@ namespace mhplan
         }
     }
 
-    void PopulationPlanner::freePlannerDataStates()
-    {
-        for (ob::State *s : plannerDataStates_)
-            si_->freeState(s);
-        plannerDataStates_.clear();
-    }
 } // namespace mhplan

@@ -294,31 +294,4 @@ namespace mhplan
         pdef->addSolutionPath(solution);
         return exact ? ob::PlannerStatus::EXACT_SOLUTION : ob::PlannerStatus::APPROXIMATE_SOLUTION;
     }
-
-    void walkPlannerData(const ob::SpaceInformationPtr &si, const std::vector<Vec2> &walk, bool reachedGoal,
-                         ob::PlannerData &data, std::vector<ob::State *> &owned)
-    {
-        for (std::size_t i = 0; i < walk.size(); ++i)
-        {
-            ob::State *s = si->allocState();
-            owned.push_back(s);
-            setStatePosition(s, walk[i]);
-            const ob::PlannerDataVertex v(s);
-            if (i == 0)
-                data.addStartVertex(v);
-            else if (i + 1 == walk.size() && reachedGoal)
-                data.addGoalVertex(v);
-            else
-                data.addVertex(v);
-        }
-        for (std::size_t i = 1; i < walk.size(); ++i)
-            data.addEdge(static_cast<unsigned int>(i - 1), static_cast<unsigned int>(i));
-    }
-
-    void freeStates(const ob::SpaceInformation &si, std::vector<ob::State *> &owned)
-    {
-        for (ob::State *s : owned)
-            si.freeState(s);
-        owned.clear();
-    }
 } // namespace mhplan
