@@ -18,9 +18,53 @@ namespace mhplan
 {
     namespace
     {
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+
+        /** A* from \e s to \e goal over nodes 0..n-1: \e expand(u, relax) calls relax(v, w) for every edge
+            u -> v of weight w; \e h is an admissible heuristic. Returns the node sequence from s to goal
+           (empty when unreachable) and sets \e length (infinity then). */
+        template <class Heuristic, class Expand>
+        std::vector<int> aStar(std::size_t n, int s, int goal, Heuristic h, Expand expand, double &length)
+        {
+            std::vector<double> dist(n, kInf);
+            std::vector<int> parent(n, -1);
+            std::vector<char> closed(n, 0);
+            using Item = std::pair<double, int>;
+            std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+            dist[s] = 0.0;
+            open.emplace(h(s), s);
+            while (!open.empty())
+            {
+                const int u = open.top().second;
+                open.pop();
+                if (closed[u])
+                    continue;
+                closed[u] = 1;
+                if (u == goal)
+                    break;
+                expand(u,
+                       [&](int v, double w)
+                       {
+                           const double nd = dist[u] + w;
+                           if (nd < dist[v])
+                           {
+                               dist[v] = nd;
+                               parent[v] = u;
+                               open.emplace(nd + h(v), v);
+                           }
+                       });
+            }
+            length = dist[goal];
+            std::vector<int> out;
+            if (!(length < kInf))
+                return out;
+            for (int v = goal; v != -1; v = parent[v])
+                out.push_back(v);
+            std::reverse(out.begin(), out.end());
+            return out;
+        }
         constexpr double kPi = 3.14159265358979323846;
         constexpr double kTwoPi = 2.0 * kPi;
-        constexpr double kInf = std::numeric_limits<double>::infinity();
         /** Largest number of convex corners for the disc-robot grid optimum (the tangent graph checks all
             pairs of corner discs). */
         constexpr std::size_t kMaxGridDiscCorners = 4000;
@@ -340,43 +384,14 @@ namespace mhplan
                 sequence (empty when unreachable) and sets length. */
             std::vector<int> shortestPath(int s, int g, double &length) const
             {
-                const std::size_t n = pos.size();
-                std::vector<double> dist(n, kInf);
-                std::vector<int> parent(n, -1);
-                std::vector<char> closed(n, 0);
-                using Item = std::pair<double, int>;
-                std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-                auto h = [&](int v) { return distance(pos[v], pos[g]); };
-                dist[s] = 0.0;
-                open.emplace(h(s), s);
-                while (!open.empty())
-                {
-                    const int u = open.top().second;
-                    open.pop();
-                    if (closed[u])
-                        continue;
-                    closed[u] = 1;
-                    if (u == g)
-                        break;
-                    for (const Edge &e : adj[u])
+                return aStar(
+                    pos.size(), s, g, [&](int v) { return distance(pos[v], pos[g]); },
+                    [&](int u, auto &&relax)
                     {
-                        const double nd = dist[u] + e.w;
-                        if (nd < dist[e.to])
-                        {
-                            dist[e.to] = nd;
-                            parent[e.to] = u;
-                            open.emplace(nd + h(e.to), e.to);
-                        }
-                    }
-                }
-                length = dist[g];
-                std::vector<int> out;
-                if (!(dist[g] < kInf))
-                    return out;
-                for (int v = g; v != -1; v = parent[v])
-                    out.push_back(v);
-                std::reverse(out.begin(), out.end());
-                return out;
+                        for (const Edge &e : adj[u])
+                            relax(e.to, e.w);
+                    },
+                    length);
             }
 
             /** The pieces along a node sequence: segments, arcs, and zero-sweep arcs at nodes on discs
@@ -1262,43 +1277,25 @@ namespace mhplan
             const int dy = std::abs(c / W - ty);
             return (sqrt2 - 1.0) * std::min(dx, dy) + std::max(dx, dy);
         };
-        const std::size_t n = static_cast<std::size_t>(W) * H;
-        std::vector<double> dist(n, kInf);
-        std::vector<int> parent(n, -1);
-        std::vector<char> closed(n, 0);
-        using Item = std::pair<double, int>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-        dist[s] = 0.0;
-        open.emplace(h(s), s);
-        std::size_t edges = 0;
-        while (!open.empty())
-        {
-            const int c = open.top().second;
-            open.pop();
-            if (closed[c])
-                continue;
-            closed[c] = 1;
-            if (c == t)
-                break;
-            const int cx = c % W;
-            const int cy = c / W;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                {
-                    if ((dx == 0 && dy == 0) || g.blocked(cx + dx, cy + dy))
-                        continue;
-                    if (dx != 0 && dy != 0 && (g.blocked(cx + dx, cy) || g.blocked(cx, cy + dy)))
-                        continue;
-                    const int nb = (cy + dy) * W + cx + dx;
-                    const double nd = dist[c] + ((dx != 0 && dy != 0) ? sqrt2 : 1.0);
-                    if (nd < dist[nb])
+        double lengthCells = kInf;
+        const std::vector<int> cells = aStar(
+            static_cast<std::size_t>(W) * H, s, t, h,
+            [&](int c, auto &&relax)
+            {
+                const int cx = c % W;
+                const int cy = c / W;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
                     {
-                        dist[nb] = nd;
-                        parent[nb] = c;
-                        open.emplace(nd + h(nb), nb);
+                        if ((dx == 0 && dy == 0) || g.blocked(cx + dx, cy + dy))
+                            continue;
+                        if (dx != 0 && dy != 0 && (g.blocked(cx + dx, cy) || g.blocked(cx, cy + dy)))
+                            continue;
+                        relax((cy + dy) * W + cx + dx, (dx != 0 && dy != 0) ? sqrt2 : 1.0);
                     }
-                }
-        }
+            },
+            lengthCells);
+        std::size_t edges = 0;
         // Graph size: free cells and their MovingAI moves (each undirected move counted once).
         std::size_t nodes = 0;
         for (int y = 0; y < H; ++y)
@@ -1321,15 +1318,11 @@ namespace mhplan
         res.method = "grid-octile";
         res.graphNodes = nodes;
         res.graphEdges = edges;
-        if (dist[t] < kInf)
+        if (!cells.empty())
         {
             res.found = true;
-            res.lengthCells = dist[t];
-            res.length = dist[t] * g.cellSize();
-            std::vector<int> cells;
-            for (int c = t; c != -1; c = parent[c])
-                cells.push_back(c);
-            std::reverse(cells.begin(), cells.end());
+            res.lengthCells = lengthCells;
+            res.length = lengthCells * g.cellSize();
             for (int c : cells)
                 res.path.push_back(g.cellCenter(c % W, c / W));
             for (std::size_t i = 0; i + 1 < res.path.size(); ++i)
