@@ -1,12 +1,12 @@
-#include "Campaign.h"
+#include "mhplan/bench/Campaign.h"
 
-#include "Collision.h"
-#include "Controllers.h"
-#include "Problem.h"
-#include "ScenarioIO.h"
-#include "World.h"
-#include "WorldIO.h"
-#include "YamlReader.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/base/World.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/io/YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 

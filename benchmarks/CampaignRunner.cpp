@@ -1,17 +1,17 @@
-#include "CampaignRunner.h"
+#include "mhplan/bench/CampaignRunner.h"
 
-#include "Collision.h"
-#include "Controllers.h"
-#include "Metrics.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "ScenarioIO.h"
-#include "Simulation.h"
-#include "Version.h"
-#include "World.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/collision/Metrics.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
+#include "mhplan/base/Version.h"
+#include "mhplan/base/World.h"
+#include "mhplan/io/WorldIO.h"
 
-#include "Optimum.h"
+#include "mhplan/optimum/Optimum.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>

@@ -6,8 +6,8 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 #define MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 
-#include "Campaign.h"
-#include "Simulation.h"
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/sim/Simulation.h"
 
 #include <iosfwd>
 #include <string>

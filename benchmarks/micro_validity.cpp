@@ -1,10 +1,10 @@
 /* mhplan micro-benchmarks of the collision back ends: state validity, clearance and exact motion checks, on
    the 12-circle world of [BFO] case 2 and on a generated world of 10,000 circles. Query points and segments
    are drawn before the timed loops. Run: mhplan_microbench --benchmark_min_time=0.2 */
-#include "Collision.h"
-#include "FclCollision.h"
-#include "Problem.h"
-#include "Validity.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/FclCollision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>

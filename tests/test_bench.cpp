@@ -5,14 +5,14 @@
    Simulation experiments: parsed and refused with file:line, their rows carry exactly what an independent
    run of the simulator with the same seed and start perturbation returns; a hanging simulation run is killed
    and recorded as Crash. */
-#include "Campaign.h"
-#include "CampaignRunner.h"
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/CampaignRunner.h"
 #include "CliSupport.h"
-#include "Controllers.h"
-#include "Registry.h"
-#include "ScenarioIO.h"
-#include "Simulation.h"
-#include "World.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
+#include "mhplan/base/World.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Exception.h>

@@ -14,12 +14,12 @@
         y=3  +--------+       G (9,5) behind it
             x=3    x=6 x=6.5
 */
-#include "ArtificialPotentialField.h"
-#include "BacterialForaging.h"
-#include "PotentialField.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "Validity.h"
+#include "mhplan/planners/field/ArtificialPotentialField.h"
+#include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/planners/field/PotentialField.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

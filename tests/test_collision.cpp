@@ -1,9 +1,9 @@
 /* Tests of the collision models: the FCL-backed model against the analytic oracle on many worlds, both
    against closed forms, and the exact motion validator. */
-#include "Collision.h"
-#include "FclCollision.h"
-#include "Problem.h"
-#include "Validity.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/FclCollision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 

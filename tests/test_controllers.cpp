@@ -1,8 +1,8 @@
 /* Tests of the simulator's controllers (src/Controllers.h): names and parameters, an independent check that
    no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned during a
    run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
-#include "Controllers.h"
-#include "ScenarioIO.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/sim/ScenarioIO.h"
 
 #include <ompl/util/Console.h>
 

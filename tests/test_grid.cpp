@@ -1,8 +1,8 @@
 /* Occupancy grids: MovingAI and PGM parsing, and the exact grid collision model against brute force over
    every blocked square (drawings are y-up: row 0 of a file is the top). */
-#include "Collision.h"
-#include "GridCollision.h"
-#include "GridIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/GridCollision.h"
+#include "mhplan/io/GridIO.h"
 
 #include <gtest/gtest.h>
 

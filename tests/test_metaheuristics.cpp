@@ -1,11 +1,11 @@
 /* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
    and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each). */
-#include "Fitness.h"
-#include "PathEncoding.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "Validity.h"
-#include "WorldIO.h"
+#include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PathEncoding.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/collision/Validity.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>

@@ -8,8 +8,8 @@
                                    2 |  A ------------- B   |  A = (1, 2), B = (9, 2)
                                    0 +----------------------+ x
                                      0                     10                                      */
-#include "Collision.h"
-#include "Metrics.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -6,10 +6,10 @@
 
    Every returned path is checked independently (densely sampled against the sphere, not through the
    planner's motion validator), and setup() refuses unsupported spaces with a clear ompl::Exception. */
-#include "Fitness.h"
-#include "PopulationPlanner.h"
-#include "Registry.h"
-#include "SlimeMould.h"
+#include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PopulationPlanner.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/planners/population/SlimeMould.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/PlannerData.h>

@@ -1,7 +1,7 @@
 /* Tests of the simulator core and scenario files (src/Simulation.h, src/ScenarioIO.h), with controllers
    defined here so that the physics is tested independently of mhplan's controllers. */
-#include "ScenarioIO.h"
-#include "Simulation.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 

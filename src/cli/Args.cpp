@@ -1,4 +1,4 @@
-#include "Args.h"
+#include "mhplan/cli/Args.h"
 
 #include <cerrno>
 #include <cstdlib>

@@ -2,8 +2,8 @@
 #ifndef MHPLAN_CLI_ARGS_H
 #define MHPLAN_CLI_ARGS_H
 
-#include "Optimum.h"
-#include "World.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/base/World.h"
 
 #include <cstdint>
 #include <map>

@@ -2,7 +2,7 @@
 #ifndef MHPLAN_CLI_COMMANDS_H
 #define MHPLAN_CLI_COMMANDS_H
 
-#include "World.h"
+#include "mhplan/base/World.h"
 
 #include <string>
 #include <vector>
