@@ -784,6 +784,8 @@ namespace mhplan::bench
             const Campaign *campaign{nullptr};
             const Experiment *experiment{nullptr};
             const SimulationSpec *spec{nullptr};
+            /** \brief The planners of "plan:<PLANNER>" controllers: the campaign's registry. */
+            const PlannerRegistry *registry{nullptr};
             Scenario scenario;
             /** Progress slot of the first controller (see ProgressBar). */
             std::size_t slotBase{0};
@@ -880,7 +882,7 @@ namespace mhplan::bench
                                Scenario scenario = xs.scenario;
                                applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter,
                                                 startSeed);
-                               const ControllerPtr controller = makeController(spec.controller);
+                               const ControllerPtr controller = makeController(spec.controller, *xs.registry);
                                for (const auto &kv : spec.params)
                                    controller->setParameter(kv.first, kv.second);
                                std::map<std::string, std::string> common;
@@ -1131,7 +1133,7 @@ namespace mhplan::bench
 
         /** Check every controller and parameter of the simulations in a throw-away process (controllers may
             own planners and random number generators). Messages name the campaign file and line. */
-        void validateControllers(const Campaign &c)
+        void validateControllers(const Campaign &c, const PlannerRegistry &registry)
         {
             checkInChildProcess(
                 [&]() -> std::string
@@ -1142,7 +1144,7 @@ namespace mhplan::bench
                             const ControllerSpec &spec = c.simulations[si].controllers[ci];
                             try
                             {
-                                const ControllerPtr controller = makeController(spec.controller);
+                                const ControllerPtr controller = makeController(spec.controller, registry);
                                 for (const auto &kv : spec.params)
                                     controller->setParameter(kv.first, kv.second);
                             }
@@ -1356,7 +1358,7 @@ namespace mhplan::bench
             validatePlanners(campaign, registry, world, world.query(all.front().query));
         }
         if (!campaign.simulations.empty())
-            validateControllers(campaign);
+            validateControllers(campaign, registry);
         // Progress slots: the planners, then every controller of every simulation.
         std::vector<std::size_t> slotBase(campaign.simulations.size(), 0);
         std::size_t slots = campaign.planners.size();
@@ -1445,6 +1447,7 @@ namespace mhplan::bench
                                 xs.campaign = &campaign;
                                 xs.experiment = e;
                                 xs.spec = &campaign.simulations[e->simulation];
+                                xs.registry = &registry;
                                 xs.scenario = loadScenario(e->scenarioFile);
                                 xs.slotBase = slotBase[e->simulation];
                                 code = runSimulationProcess(xs, fd, solve);

@@ -38,7 +38,8 @@ namespace mhplan::bench
         std::ostream *messages{nullptr};
         /** \brief The converter from logs to the database. */
         std::string statisticsTool{"/usr/bin/ompl_benchmark_statistics"};
-        /** \brief Planners to draw from (default: PlannerRegistry::builtin()). */
+        /** \brief Planners to draw from, for the campaign's planners and its "plan:<PLANNER>" controllers
+            (default: PlannerRegistry::builtin()). */
         const PlannerRegistry *registry{nullptr};
         /** \brief How world names are resolved (required). */
         WorldResolver resolveWorld;

@@ -9,6 +9,7 @@
 #include "mhplan/bench/CampaignRunner.h"
 #include "CliSupport.h"
 #include "mhplan/sim/Controllers.h"
+#include "mhplan/planners/lattice/ThetaStar.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/sim/Simulation.h"
@@ -70,6 +71,8 @@ namespace
             PlannerRegistry r = PlannerRegistry::builtin();
             r.add({"CrashTest", "test", "always fails",
                    [](const ob::SpaceInformationPtr &si) { return std::make_shared<CrashPlanner>(si); }});
+            r.add({"ThetaStarHere", "test", "Theta* under a name only this registry knows",
+                   allocatorFor<ThetaStar>()});
             return r;
         }();
         return registry;
@@ -763,6 +766,43 @@ TEST(SimulationCampaign, RowsCarryTheValuesTheSimulationReturns)
     EXPECT_EQ(again.runs, 0u);
     EXPECT_EQ(again.mergedLogs, 0u);
     fs::remove_all(fs::temp_directory_path() / ("mhplan_test_bench_sim_" + std::to_string(::getpid())));
+}
+
+TEST(SimulationCampaign, PlanControllersDrawFromTheCampaignsRegistry)
+{
+    const std::string text = "campaign: ownplanner\n"
+                             "simulations:\n"
+                             "  - scenario: scenarios/mapf_2robots\n"
+                             "    runs: 1\n"
+                             "    controllers: [plan:ThetaStarHere]\n";
+    // The built-in registry does not know the planner: the campaign file is refused, naming the controller.
+    try
+    {
+        parseCampaign(text, "own.yaml");
+        ADD_FAILURE() << "no InputError";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("plan:ThetaStarHere"), std::string::npos) << e.what();
+    }
+    Campaign c = parseCampaign(text, "own.yaml", testRegistry());
+    ASSERT_EQ(c.simulations.size(), 1u);
+    const fs::path dir = fs::temp_directory_path() / ("mhplan_test_bench_own_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    c.database = (dir / "own.db").string();
+    c.logDir = (dir / "logs").string();
+    const CampaignSummary summary = runCampaign(c, options());
+    ASSERT_EQ(summary.failed, 0u) << (summary.errors.empty() ? "" : summary.errors[0]);
+    EXPECT_EQ(summary.runs, 1u);
+    EXPECT_EQ(summary.crashes, 0u);
+    const Sql sql(c.database);
+    const auto rows = sql.rows("SELECT runs.solved FROM runs JOIN plannerConfigs ON "
+                               "runs.plannerid = plannerConfigs.id WHERE plannerConfigs.name LIKE "
+                               "'%ThetaStarHere%'");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0][0], "1");
+    fs::remove_all(dir);
 }
 
 TEST(SimulationCampaign, StartJitterIsDeterministicAndValid)

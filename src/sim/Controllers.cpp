@@ -2,7 +2,6 @@
 #include "mhplan/sim/Controllers.h"
 
 #include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
@@ -659,9 +658,10 @@ namespace mhplan
     // ---------------------------------------------------------------------------------------------------
     // plan:<PLANNER>
 
-    PlanFollowController::PlanFollowController(std::string planner) : planner_(std::move(planner))
+    PlanFollowController::PlanFollowController(std::string planner, const PlannerRegistry &registry)
+        : planner_(std::move(planner)), registry_(&registry)
     {
-        PlannerRegistry::builtin().get(planner_); // InputError listing the planners for an unknown one
+        registry_->get(planner_); // InputError listing the planners for an unknown one
         params_.add("plan_time", &planTime_, 0.001, 600.0);
         params_.add("lookahead", &lookahead_, 0.01, 100.0);
         params_.add("slowdown", &slowdown_, 0.0, 100.0);
@@ -688,7 +688,7 @@ namespace mhplan
         auto si = std::make_shared<ompl::base::SpaceInformation>(space);
         try
         {
-            PlannerRegistry::builtin().create(planner_, si, {{key, value}});
+            registry_->create(planner_, si, {{key, value}});
         }
         catch (const InputError &e)
         {
@@ -799,7 +799,7 @@ namespace mhplan
             {
                 const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(*w, query, makeCollisionModel(*w));
                 const ompl::base::PlannerPtr planner =
-                    PlannerRegistry::builtin().create(planner_, ss->getSpaceInformation(), plannerParams_);
+                    registry_->create(planner_, ss->getSpaceInformation(), plannerParams_);
                 if (planner->params().hasParam("seed") && plannerParams_.count("seed") == 0)
                     planner->params().setParam("seed", std::to_string(rng_->uniformInt(1, 1 << 30)));
                 ss->setPlanner(planner);
@@ -946,24 +946,24 @@ namespace mhplan
         const std::string kPlanPrefix = "plan:";
     } // namespace
 
-    std::vector<std::string> controllerNames()
+    std::vector<std::string> controllerNames(const PlannerRegistry &registry)
     {
         std::vector<std::string> names = {"dapf", "aapf", "bfo", "atbfo"};
-        for (const std::string &p : PlannerRegistry::builtin().names())
+        for (const std::string &p : registry.names())
             names.push_back(kPlanPrefix + p);
         return names;
     }
 
-    ControllerPtr makeController(const std::string &name)
+    ControllerPtr makeController(const std::string &name, const PlannerRegistry &registry)
     {
         const auto it = fieldControllers().find(name);
         if (it != fieldControllers().end())
             return it->second();
         if (name.compare(0, kPlanPrefix.size(), kPlanPrefix) == 0 &&
-            PlannerRegistry::builtin().has(name.substr(kPlanPrefix.size())))
-            return std::make_shared<PlanFollowController>(name.substr(kPlanPrefix.size()));
+            registry.has(name.substr(kPlanPrefix.size())))
+            return std::make_shared<PlanFollowController>(name.substr(kPlanPrefix.size()), registry);
         std::string known;
-        for (const std::string &n : controllerNames())
+        for (const std::string &n : controllerNames(registry))
             known += (known.empty() ? "" : ", ") + n;
         throw InputError("unknown controller '" + name + "'; known controllers: " + known);
     }

@@ -3,6 +3,7 @@
 #ifndef MHPLAN_CONTROLLERS_H
 #define MHPLAN_CONTROLLERS_H
 
+#include "mhplan/registry/Registry.h"
 #include "mhplan/sim/Simulation.h"
 
 #include <cstdint>
@@ -13,12 +14,14 @@
 namespace mhplan
 {
     /** \brief The controller names makeController accepts: "dapf", "aapf", "bfo", "atbfo", and
-        "plan:<PLANNER>" for every planner name of the planner registry (e.g. "plan:ThetaStar"). */
-    std::vector<std::string> controllerNames();
+        "plan:<PLANNER>" for every planner name of \e registry (e.g. "plan:ThetaStar"). */
+    std::vector<std::string> controllerNames(const PlannerRegistry &registry = PlannerRegistry::builtin());
 
-    /** \brief A controller by name with its default parameters; throws InputError listing the accepted
-        names for an unknown one. */
-    ControllerPtr makeController(const std::string &name);
+    /** \brief A controller by name with its default parameters; "plan:<PLANNER>" plans with the planners of
+        \e registry (which must outlive the controller). Throws InputError listing the accepted names for an
+        unknown one. */
+    ControllerPtr makeController(const std::string &name,
+                                 const PlannerRegistry &registry = PlannerRegistry::builtin());
 
     /** \brief Numeric controller parameters by name: each bound to a member, with a closed range and an
         integer flag. set() throws InputError naming the controller, the parameter, the range and the value
@@ -315,8 +318,10 @@ namespace mhplan
     class PlanFollowController : public ControllerBase
     {
       public:
-        /** \brief Plans with registry planner \e planner (throws InputError for an unknown one). */
-        explicit PlanFollowController(std::string planner);
+        /** \brief Plans with planner \e planner of \e registry, which must outlive the controller (throws
+            InputError for an unknown one). */
+        explicit PlanFollowController(std::string planner,
+                                      const PlannerRegistry &registry = PlannerRegistry::builtin());
         std::string name() const override { return "plan:" + planner_; }
         void reset(const Simulation &sim, ompl::RNG &rng) override;
         void taskStarted(const Simulation &sim, std::size_t i) override;
@@ -348,6 +353,7 @@ namespace mhplan
         double blockedAt(const Simulation &sim, std::size_t i, bool &byRobot) const;
 
         std::string planner_;
+        const PlannerRegistry *registry_;
         std::map<std::string, std::string> plannerParams_;
         double planTime_{0.5}, lookahead_{0.3}, slowdown_{0.3}, senseRange_{1.0}, margin_{0.1};
         double goalTolerance_{0.2}, replanInterval_{0.5}, clearance_{0.05}, predictTime_{3.0};
