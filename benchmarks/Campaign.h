@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: benchmark campaigns. A campaign file (YAML, see benchmarks/README.md) names worlds and queries,
    planners with parameter overrides, limits, run count, seed and where the logs and the database go. Each
    (world, query) pair is one OMPL benchmark experiment. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/CampaignRunner.h"
 
 #include "mhplan/collision/Collision.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: running a benchmark campaign. Every (world, query) experiment is one ompl::tools::Benchmark
    experiment, every simulation entry one experiment whose "planners" are its controllers; runs execute in
    child processes so that a planner that throws, aborts, crashes or hangs

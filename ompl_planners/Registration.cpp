@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/Registration.h"
 
 #include "mhplan/planners/field/ArtificialPotentialField.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the registration of mhplan's own planners, beside the planners. */
 #ifndef MHPLAN_PLANNERS_REGISTRATION_H
 #define MHPLAN_PLANNERS_REGISTRATION_H

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install mhplan into a temporary prefix, build tests/consumer against it as a separate CMake project, run
 # it, and build the Debian package. Usage: consumer_test.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The hot paths (validity, motion and clearance queries of every collision model) never touch the heap once
    warm: fitness and planner loops call them millions of times. Counted with a replaced global operator new.
  */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The lattice baselines: A* equals the 8-connected (MovingAI) optimum, computed here by a plain Dijkstra and
    by the foundation's computeGridOctileOptimum; Theta* lies between the any-angle optimum and A*; geometric
    worlds, off-centre endpoints, disc robots, continuation, determinism; the 'mhplan scen' tool end to end. */

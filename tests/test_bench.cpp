@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Benchmark campaigns end to end: a tiny campaign (two worlds, GA twice under distinct names, RRT*, and two
    deliberately crashing planners) is run, merged into an OMPL database and checked for its experiments,
    planners, runs and columns; the optimality gap is recomputed from the stored values; sharded runs merge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the simulator's controllers (src/Controllers.h): names and parameters, an independent check that
    no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned during a
    run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
@@ -19,8 +20,6 @@ using namespace mhplan;
 
 namespace
 {
-    const double kPi = std::acos(-1.0);
-
     /** \brief Quiet OMPL's informational messages (the planners log every solve). */
     const bool kQuiet = []
     {
@@ -328,7 +327,7 @@ TEST(Controllers, FifteenRobotsCrossAnOpenWorld)
 
 TEST(Controllers, BfoReachesTheGoalOnAStaticWorld)
 {
-    // [BFO] case 1 (ALGORITHMS.md 9), a point robot at 1 m/s as in the case-3 scenarios.
+    // [BFO] case 1 (docs/algorithms.md 9), a point robot at 1 m/s as in the case-3 scenarios.
     const Scenario scenario = parseScenarioYaml(R"(
 name: bfo_static
 bounds: {xmin: 0, xmax: 10, ymin: 0, ymax: 10}

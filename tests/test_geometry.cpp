@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Closed-form geometry against hand computations (the drawings are y-up). */
 #include "mhplan/base/Geometry.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
    and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each). */
 #include "mhplan/planners/common/Fitness.h"
@@ -207,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA"
 namespace
 {
     /** \brief Exact optimum of a seed world's default query: src/Optimum.h when it is built, else the
-        spec's figures (ALGORITHMS.md 9); NaN when unknown. */
+        spec's figures (docs/algorithms.md 9); NaN when unknown. */
     double optimumLength(const std::string &world)
     {
         const std::map<std::string, double> spec{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Path metrics (src/Metrics.h) against hand computations.
 
    The clearance world:            y
@@ -20,8 +21,6 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr double kPi = 3.14159265358979323846;
-
     World circleWorld()
     {
         World w;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan's population planners on RealVectorStateSpaces of any dimension, through OMPL's C++ API with the
    user's own validity checker and OMPL's DiscreteMotionValidator (no mhplan world, checker or validator):
 

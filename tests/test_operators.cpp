@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The switchable [GMS] operators of PopulationPlanner (gms_repair, gms_revise, gms_simplify, gms_improve,
    gms_scope, gms_replace_fraction): validation, defaults, refusal where they cannot apply, and what the
    improved variants SMA-GMS, LRSMA-GMS and MGO-GMS achieve on bfo_case2 with the papers' budgets. */

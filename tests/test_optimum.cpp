@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the exact optimum: closed forms, the shipped seed worlds, random worlds against a dense roadmap
    (and, for point robots among polygons and on grids, against a brute-force visibility graph), and the
    grid octile optimum against a plain Dijkstra. */
@@ -21,8 +22,6 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr double kPi = 3.14159265358979323846;
-
     /** Portable uniform numbers (fixed seeds give the same worlds everywhere). */
     class Rng
     {

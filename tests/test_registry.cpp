@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
    and every registered planner solves a seed world through the shared exact validity checking. */
 #include "mhplan/collision/Problem.h"

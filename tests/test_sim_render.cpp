@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Drawing simulation runs (src/SimRender.h): the GIF encoder checked by an independent LZW decoder written
    here, the rasteriser and SVG on a small run, and `mhplan sim` end to end. */
 #include "CliSupport.h"

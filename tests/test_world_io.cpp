@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* World files: every malformed input is refused with the file, the line and the field; shipped worlds load.
  */
 #include "mhplan/collision/Collision.h"

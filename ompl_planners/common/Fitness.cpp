@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/common/Fitness.h"
 
 #include "mhplan/collision/Validity.h"
@@ -18,7 +19,7 @@ namespace mhplan
     {
         /** \brief f2 given to a path whose samples are all free but which fails the motion validator. */
         constexpr double kHiddenCollisionViolation = 1e-3;
-        /** \brief The robot-scale of the clearance-based penetration term (1 m, ALGORITHMS.md 1.2). */
+        /** \brief The robot-scale of the clearance-based penetration term (1 m, docs/algorithms.md 1.2). */
         constexpr double kPenetrationScale = 1.0;
 
         /** \brief |b - a| in R^k (std::hypot in the plane, as Geometry's distance()). */

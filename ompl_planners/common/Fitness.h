@@ -1,4 +1,5 @@
-/* mhplan: the path fitness functions of ALGORITHMS.md 1.2 ([LRSMA]) and 1.3 ([GMS]), shared by every
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the path fitness functions of docs/algorithms.md 1.2 ([LRSMA]) and 1.3 ([GMS]), shared by every
    population planner. */
 #ifndef MHPLAN_FITNESS_H
 #define MHPLAN_FITNESS_H
@@ -24,7 +25,7 @@ namespace mhplan
     FitnessKind parseFitnessKind(const std::string &name);
     std::string toString(FitnessKind kind);
 
-    /** \brief Weights of both fitness functions (defaults from ALGORITHMS.md 1.2 and 1.3). */
+    /** \brief Weights of both fitness functions (defaults from docs/algorithms.md 1.2 and 1.3). */
     struct FitnessWeights
     {
         /** \brief eta1 of [LRSMA] (length). */
@@ -53,7 +54,7 @@ namespace mhplan
         double violation{0.0};
     };
 
-    /** \brief How the [LRSMA] collision term f2 measures a sample point (ALGORITHMS.md 1.2). */
+    /** \brief How the [LRSMA] collision term f2 measures a sample point (docs/algorithms.md 1.2). */
     enum class PenaltyMode
     {
         ExactCircles, ///< the spec's circle formula (planar WorldValidityChecker over circles only)
@@ -65,7 +66,7 @@ namespace mhplan
         any ompl::base::RealVectorStateSpace problem of any dimension k (points are k coordinates; the
         planar Vec2 overloads are for k = 2).
 
-        [LRSMA] collision term f2 (ALGORITHMS.md 1.2), choices made here (penaltyMode()):
+        [LRSMA] collision term f2 (docs/algorithms.md 1.2), choices made here (penaltyMode()):
         - ExactCircles: when k = 2 and the validity checker is a WorldValidityChecker over an
           AnalyticCollisionModel whose world has only circles, the exact formula of the spec: f2 = sum over
           circles of the mean over the samples of max(1 - |q - c| / (R + r), 0), r the robot radius.

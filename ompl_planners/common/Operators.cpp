@@ -1,6 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/common/Operators.h"
-
-#include <boost/math/constants/constants.hpp>
 
 #include <algorithm>
 #include <array>
@@ -44,7 +43,7 @@ namespace mhplan
     {
         if (fitness_.pointValid(p))
             return true;
-        const double twoPi = 2.0 * boost::math::constants::pi<double>();
+        const double twoPi = 2.0 * kPi;
         const double offset = rng_.uniformReal(0.0, twoPi);
         for (unsigned int k = 1; k <= 200; ++k)
         {

@@ -1,4 +1,5 @@
-/* mhplan: the [GMS] path operators (ALGORITHMS.md 1.5) on explicit point lists, shared by any planner. */
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the [GMS] path operators (docs/algorithms.md 1.5) on explicit point lists, for any planner. */
 #ifndef MHPLAN_OPERATORS_H
 #define MHPLAN_OPERATORS_H
 
@@ -14,7 +15,7 @@ namespace mhplan
         path given as a list of points (first = start, last = goal; both are never moved or removed).
         Validity goes through a PathFitness, i.e. the problem's own validity checker and motion validator,
         so the operators work on geometric and grid worlds alike (continuous versions of the grid operators:
-        rings of samples instead of BFS over cells, ALGORITHMS.md 1.5). Replacement is a population-level
+        rings of samples instead of BFS over cells, docs/algorithms.md 1.5). Replacement is a population-level
         operator and lives in the planners. Randomness from the RNG passed in.
 
         \e step is the base length of the operators' moves (default 1% of the bounds' larger side).

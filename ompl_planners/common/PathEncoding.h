@@ -1,4 +1,5 @@
-/* mhplan: the continuous waypoint encoding of ALGORITHMS.md section 1.1, shared by every population planner.
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the continuous waypoint encoding of docs/algorithms.md 1.1, shared by every population planner.
  */
 #ifndef MHPLAN_PATH_ENCODING_H
 #define MHPLAN_PATH_ENCODING_H
@@ -11,7 +12,7 @@
 
 namespace mhplan
 {
-    /** \brief How a waypoint vector becomes a path (ALGORITHMS.md 1.1). */
+    /** \brief How a waypoint vector becomes a path (docs/algorithms.md 1.1). */
     enum class PathDecoding
     {
         Polyline, ///< start, the m waypoints, goal joined by straight segments
@@ -42,7 +43,7 @@ namespace mhplan
 
     /** \brief Decodes a candidate x = (waypoint 1, ..., waypoint m), each waypoint k coordinates (k = the
         state space's dimension; 2m values in the planar worlds), into a path and into the interpolation
-        points that the [LRSMA] collision term (ALGORITHMS.md 1.2) is measured on.
+        points that the [LRSMA] collision term (docs/algorithms.md 1.2) is measured on.
 
         - Spline: each coordinate is splined separately against t = 0, 1, ..., m + 1 (start at 0, goal at
           m + 1), as [LRSMA] does for x and y; the path is the polyline through the n spline samples; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: small pieces every mhplan planner shares (planner data of a path, progress formatting). */
 #ifndef MHPLAN_PLANNER_SUPPORT_H
 #define MHPLAN_PLANNER_SUPPORT_H

@@ -1,4 +1,5 @@
-/* mhplan: the machinery every population-based planner shares (ALGORITHMS.md 1.1-1.2): parameters, the
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the machinery every population-based planner shares (docs/algorithms.md 1.1-1.2): parameters, the
    waypoint encoding, fitness, evaluation counting, best-so-far tracking, progress properties, termination
    checks and solution reporting. An algorithm only writes its initialisation and its update rules. */
 #ifndef MHPLAN_POPULATION_PLANNER_H
@@ -38,7 +39,7 @@ namespace mhplan
         Problem: any ompl::base::RealVectorStateSpace of dimension k >= 1 with finite bounds (the planar
         worlds are k = 2), with the user's own validity checker and motion validator; start and goal from
         the problem definition (the first start state, one goal sample). A candidate is the waypoint vector
-        of ALGORITHMS.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
+        of docs/algorithms.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
         coordinate bounded by the space's bounds on it (see WaypointDecoder; the spline decoding splines
         each coordinate against t, in any dimension), or any list of points (evaluatePath(), used by the
         GA); its fitness is a PathFitness ([LRSMA] S or [GMS] f1/f2, parameter \c fitness; \c auto picks
@@ -70,8 +71,9 @@ namespace mhplan
         Randomness comes only from the member ompl::RNG (seeded from OMPL's global seed at construction, or
         from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation.
 
-        Switchable [GMS] operators (ALGORITHMS.md 1.5; all off by default, and then no operator code runs and
-        no random number is drawn, so the faithful algorithms are bit-identical to their papers' versions):
+        Switchable [GMS] operators (docs/algorithms.md 1.5; all off by default, and then no operator code
+        runs and no random number is drawn, so the faithful algorithms are bit-identical to their papers'
+        versions):
         \c gms_repair (0/1: node repair + line-segment repair), \c gms_revise (0/1), \c gms_simplify (0/1),
         \c gms_improve (0/1: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
         ([0, 1], 0 = off). They act on the fixed-length waypoint encoding as follows, after every completed
@@ -233,7 +235,7 @@ namespace mhplan
 
         /** \brief Uniform random waypoint vector in the bounds. */
         void randomPosition(double *x);
-        /** \brief Clamp every coordinate to the bounds (ALGORITHMS.md 1.1). */
+        /** \brief Clamp every coordinate to the bounds (docs/algorithms.md 1.1). */
         void clampToBounds(double *x) const;
 
         /** \brief m k: the waypoints times the state space's dimension. */

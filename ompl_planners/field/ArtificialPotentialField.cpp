@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/field/ArtificialPotentialField.h"
 
 #include "mhplan/planners/common/PopulationPlanner.h"
@@ -19,7 +20,6 @@ namespace mhplan
     namespace
     {
         constexpr double kInf = std::numeric_limits<double>::infinity();
-        constexpr double kPi = 3.14159265358979323846;
     } // namespace
 
     ArtificialPotentialField::ArtificialPotentialField(const ob::SpaceInformationPtr &si)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the classic artificial potential field planner (descent on J) as an OMPL planner. */
 #ifndef MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
 #define MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
@@ -15,7 +16,7 @@
 namespace mhplan
 {
     /** \brief Artificial potential field planner (Khatib, "Real-time obstacle avoidance for manipulators and
-        mobile robots", IJRR 5(1), 1986), with the cost of [BFO] eqs 3-6 (ALGORITHMS.md 7): descent on
+        mobile robots", IJRR 5(1), 1986), with the cost of [BFO] eqs 3-6 (docs/algorithms.md 7): descent on
         J = J_goal + J_obs of PotentialField (xi, eta, d0, D_sense) in steps of length lambda.
 
         - \c descent = directions (default): the robot evaluates J at the 16 (parameter \c directions)

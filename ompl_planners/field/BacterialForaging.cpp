@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/field/BacterialForaging.h"
 
 #include "mhplan/collision/Validity.h"
@@ -21,7 +22,6 @@ namespace mhplan
     namespace
     {
         constexpr double kInf = std::numeric_limits<double>::infinity();
-        constexpr double kPi = 3.14159265358979323846;
     } // namespace
 
     BacterialForaging::BacterialForaging(const ob::SpaceInformationPtr &si, bool adaptiveTumble)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: Bacterial Foraging Optimization (BFO) and Adaptive-Tumble BFO (ATBFO) as an OMPL planner. */
 #ifndef MHPLAN_BACTERIAL_FORAGING_H
 #define MHPLAN_BACTERIAL_FORAGING_H
@@ -16,7 +17,7 @@ namespace mhplan
     /** \brief Bacterial Foraging Optimization (Passino, "Biomimicry of bacterial foraging for distributed
         optimization and control", IEEE Control Systems 22(3):52-67, 2002) and its adaptive-tumble variant
         for path planning of Abbas & Ali, "Path Planning of an Autonomous Mobile Robot using Enhanced
-        Bacterial Foraging Optimization Algorithm" (2016) ([BFO]; ALGORITHMS.md sections 6.1-6.4).
+        Bacterial Foraging Optimization Algorithm" (2016) ([BFO]; docs/algorithms.md sections 6.1-6.4).
 
         Core BFO (6.1) on a cost J: for l < Ned, k < Nre, j < Nc, every bacterium i: tumble along a random
        unit direction phi (theta_i += C phi, evaluate), then swim (again C phi) while J improves, at most Ns

@@ -1,4 +1,5 @@
-/* mhplan: the artificial potential field cost J = J_goal + J_obs of ALGORITHMS.md 6.3 ([BFO] eqs 3-6,
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the artificial potential field cost J = J_goal + J_obs of docs/algorithms.md 6.3 ([BFO] eqs 3-6,
    Khatib 1986), shared by the BFO online mode and the APF planner. */
 #ifndef MHPLAN_POTENTIAL_FIELD_H
 #define MHPLAN_POTENTIAL_FIELD_H
@@ -102,13 +103,13 @@ namespace mhplan
         RepulsionMode repulsion_{RepulsionMode::Sum};
     };
 
-    /** \brief The APF cost of ALGORITHMS.md 6.3 at a position P of a 2D RealVectorStateSpace problem:
+    /** \brief The APF cost of docs/algorithms.md 6.3 at a position P of a 2D RealVectorStateSpace problem:
 
         J(P) = 0.5 xi |P - P_T|^2 + sum over obstacles o with d_o(P) <= D_sense of 0.5 eta max(0, 1/d_o(P) -
         1/d0), and J(P) = +infinity when P is not a valid state (inside an obstacle, or the robot outside the
         bounds).
 
-        Choices where the spec is open (ALGORITHMS.md 6.3, 7):
+        Choices where the spec is open (docs/algorithms.md 6.3, 7):
         - d(P) is the distance from P to the obstacle's \b surface minus the robot radius, i.e. the
           signed clearance that mhplan's validity checker reports (exact for every mhplan collision model).
         - The spec's repulsive term is linear in (1/d - 1/d0) (not Khatib's square); it is clamped at 0 so

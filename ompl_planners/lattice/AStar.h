@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: A* on an 8-connected lattice as an OMPL planner (a deterministic baseline). */
 #ifndef MHPLAN_ASTAR_H
 #define MHPLAN_ASTAR_H

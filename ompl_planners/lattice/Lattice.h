@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the 8-connected lattice, the open list and the planner skeleton shared by the graph-search
    baselines (A* and Theta*). */
 #ifndef MHPLAN_LATTICE_H

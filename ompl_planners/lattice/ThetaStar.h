@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: Theta* (any-angle A*) on an 8-connected lattice as an OMPL planner (a deterministic baseline). */
 #ifndef MHPLAN_THETA_STAR_H
 #define MHPLAN_THETA_STAR_H

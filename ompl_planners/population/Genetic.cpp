@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/Genetic.h"
 
 #include <algorithm>

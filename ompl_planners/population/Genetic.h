@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the [GMS] genetic algorithm as an OMPL planner. */
 #ifndef MHPLAN_GENETIC_H
 #define MHPLAN_GENETIC_H
@@ -11,7 +12,7 @@
 namespace mhplan
 {
     /** \brief Genetic algorithm of [GMS] ("Using Mountain Gazelle and Slime Mould Algorithms to Solve the
-       Path Planning Problem", Adv. Defence Sci. & Technol., 2024; ALGORITHMS.md sections 1.4, 1.5 and 2).
+       Path Planning Problem", Adv. Defence Sci. & Technol., 2024; docs/algorithms.md 1.4, 1.5 and 2).
 
         An individual is a variable-length list of points from start to goal (the continuous form of the
         grid-node encoding, 1.4). Initial population: 1..\c waypoints random free points per individual, then

@@ -1,6 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/LRSMA.h"
-
-#include <boost/math/constants/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -88,7 +87,7 @@ namespace mhplan
         rank_.resize(getPopulationSize());
         tau_ = 0;
         // Mantegna's sigma_u for the configured beta (eq 7).
-        const double pi = boost::math::constants::pi<double>();
+        const double pi = kPi;
         sigmaU_ =
             std::pow(std::tgamma(1.0 + beta_) * std::sin(pi * beta_ / 2.0) /
                          (std::tgamma((1.0 + beta_) / 2.0) * beta_ * std::pow(2.0, (beta_ - 1.0) / 2.0)),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the Levy-flight-rotation Slime Mould Algorithm as an OMPL planner. */
 #ifndef MHPLAN_LRSMA_H
 #define MHPLAN_LRSMA_H
@@ -7,8 +8,8 @@
 namespace mhplan
 {
     /** \brief Levy-flight-rotation SMA (LRSMA): Zheng et al., "Path Planning of Autonomous Mobile Robots
-       Based on an Improved Slime Mould Algorithm", Drones 7(4):257, 2023, section 4 (ALGORITHMS.md section
-       5).
+       Based on an Improved Slime Mould Algorithm", Drones 7(4):257, 2023, section 4 (docs/algorithms.md
+       section 5).
 
         Each iteration: the SMA update (SlimeMould), then
         - variable-neighbourhood Levy flight on the elite (eqs 6-7, Mantegna): for index = 0, 1, 2,

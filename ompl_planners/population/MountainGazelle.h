@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the Mountain Gazelle Optimizer as an OMPL planner. */
 #ifndef MHPLAN_MOUNTAIN_GAZELLE_H
 #define MHPLAN_MOUNTAIN_GAZELLE_H
@@ -9,7 +10,7 @@ namespace mhplan
     /** \brief Mountain Gazelle Optimizer (MGO): Abdollahzadeh, Gharehchopogh, Khodadadi, Mirjalili, "Mountain
         Gazelle Optimizer: A new Nature-inspired Metaheuristic Algorithm for Global Optimization Problems",
         Advances in Engineering Software 174:103282, 2022, as used for path planning by [GMS]
-        (ALGORITHMS.md section 3).
+        (docs/algorithms.md section 3).
 
         Each iteration, for every gazelle X: coefficient vectors Cof_1 = (a + 1) + r3, Cof_2 = a N2,
         Cof_3 = r4, Cof_4 = N3 N4^2 cos(2 r5 N3) with a = -1 - t/T (Cof_r = one of the four, drawn afresh at

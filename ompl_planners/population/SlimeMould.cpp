@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/SlimeMould.h"
 
 #include <algorithm>

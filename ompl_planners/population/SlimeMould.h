@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the Slime Mould Algorithm as an OMPL planner. */
 #ifndef MHPLAN_SLIME_MOULD_H
 #define MHPLAN_SLIME_MOULD_H
@@ -8,7 +9,7 @@ namespace mhplan
 {
     /** \brief Slime Mould Algorithm (SMA): Li, Chen, Wang, Heidari, Mirjalili, "Slime mould algorithm: A new
         method for stochastic optimization", Future Generation Computer Systems 111:300-323, 2020, as used
-        for path planning by [GMS] and [LRSMA] section 3 (ALGORITHMS.md section 4).
+        for path planning by [GMS] and [LRSMA] section 3 (docs/algorithms.md section 4).
 
         Each iteration: sort the population by fitness; weights W = 1 +- r log10((bF - S_i) / (bF - wF + eps)
         + 1) (plus for the better half by rank, minus for the rest); a = arctanh(1 - t/T), b = 1 - t/T; each
@@ -16,10 +17,10 @@ namespace mhplan
         p = tanh|S_i - DF|: X_j = X_best_j + vb_j (W_ij X_A_j - X_B_j) when r < p (A, B drawn afresh for every
         coordinate), else X_j = vc_j X_j; then clamp and evaluate (N evaluations per iteration).
 
-        Choices where the spec leaves room (stated here as STYLE.md asks):
+        Choices where the spec leaves room (stated here as docs/conventions.md asks):
         - Defaults: N = 30, T = 30, z = 0.3 ([LRSMA] Table 2; the original paper's 0.03 is a parameter value),
-          m = 3 waypoints, polyline decoding (ALGORITHMS.md 1.1), [LRSMA] fitness S on geometric worlds and
-          [GMS] f1/f2 on grid worlds (parameter \c fitness).
+          m = 3 waypoints, polyline decoding (docs/algorithms.md 1.1), [LRSMA] fitness S on geometric
+          worlds and [GMS] f1/f2 on grid worlds (parameter \c fitness).
         - The population is updated in place, as in the original code (later individuals read already
           updated ones through X_A, X_B); DF / X_best are updated right after each evaluation round (the
           original does it at the start of the next iteration from the same values: same result).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: exact 2D geometry shared by the world model, the collision back ends and the optimum. */
 #ifndef MHPLAN_GEOMETRY_H
 #define MHPLAN_GEOMETRY_H
@@ -7,6 +8,9 @@
 
 namespace mhplan
 {
+    /** \brief pi, the one definition of it in mhplan. */
+    constexpr double kPi = 3.14159265358979323846;
+
     /** \brief A point or vector in the plane. */
     struct Vec2
     {

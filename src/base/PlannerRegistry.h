@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the string-keyed planner registry shared by the CLI, the benchmark driver and the tests (the
    generic class; the built-in planners are registered by the registry layer, mhplan/registry/Registry.h). */
 #ifndef MHPLAN_PLANNER_REGISTRY_H

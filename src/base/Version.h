@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: version strings (OMPL's own, which Debian's build leaves empty, comes from its CMake package). */
 #ifndef MHPLAN_VERSION_H
 #define MHPLAN_VERSION_H

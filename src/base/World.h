@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the 2D world model shared by every planner, checker and tool. */
 #ifndef MHPLAN_WORLD_H
 #define MHPLAN_WORLD_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/cli/Args.h"
 
 #include <cerrno>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan CLI: a small argument parser that refuses what it does not know. */
 #ifndef MHPLAN_CLI_ARGS_H
 #define MHPLAN_CLI_ARGS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench CAMPAIGN: run a benchmark campaign (benchmarks/README.md) and build its database. */
 #include "mhplan/cli/Args.h"
 #include "mhplan/cli/Commands.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan optimum WORLD: the exact shortest path of the world's robot, its length and the path itself. */
 #include "mhplan/cli/Commands.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan report DB -o DIR: runs analysis/report.py with an interpreter that has matplotlib and numpy. */
 #include "mhplan/cli/Commands.h"
 

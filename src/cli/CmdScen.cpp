@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan scen: run every problem of a MovingAI scenario file and compare the lengths with the file's optima.
  */
 #include "mhplan/cli/Commands.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan sim SCENARIO: run a moving-world scenario with a controller, print per-robot and run metrics, and
    draw the run (SVG with a replay, animated GIF) or write its trajectories (CSV). */
 #include "mhplan/cli/Commands.h"

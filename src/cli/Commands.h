@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan CLI: one function per subcommand, dispatched from main.cpp's command table. */
 #ifndef MHPLAN_CLI_COMMANDS_H
 #define MHPLAN_CLI_COMMANDS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the command-line program. One table of subcommands; each lives in its own function. */
 #include "mhplan/cli/Commands.h"
 #include "mhplan/base/Version.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Collision.h"
 
 #include "mhplan/collision/FclCollision.h"

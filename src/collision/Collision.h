@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: collision models of a World for a disc robot. Every planner, metric and tool goes through one of
    these (wrapped by the OMPL validity checker and motion validator in Validity.h). */
 #ifndef MHPLAN_COLLISION_H

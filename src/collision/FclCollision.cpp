@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/FclCollision.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: FCL-backed collision model for geometric worlds. */
 #ifndef MHPLAN_FCL_COLLISION_H
 #define MHPLAN_FCL_COLLISION_H

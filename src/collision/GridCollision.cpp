@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: exact collision model of an occupancy-grid world.
 
    Geometry. Blocked cells are closed squares; every cell outside the grid counts as blocked, so the obstacle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: exact collision model of an occupancy-grid world. */
 #ifndef MHPLAN_GRID_COLLISION_H
 #define MHPLAN_GRID_COLLISION_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: path quality metrics shared by the benchmark driver, the reports and the tests. The curvature,
    angle-over-length and cusp metrics follow Bench-MR's definitions (Heiden et al., "Bench-MR: A Motion
    Planning Benchmark for Wheeled Mobile Robots", RA-L 2021); every deviation is stated where it is made. */

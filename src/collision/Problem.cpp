@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Problem.h"
 
 #include "mhplan/collision/Validity.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: one OMPL problem (state space, validity checker, motion validator, objective) per world query. */
 #ifndef MHPLAN_PROBLEM_H
 #define MHPLAN_PROBLEM_H

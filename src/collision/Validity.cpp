@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the OMPL validity checker and exact motion validator every planner shares. */
 #ifndef MHPLAN_VALIDITY_H
 #define MHPLAN_VALIDITY_H

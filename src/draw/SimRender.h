@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: drawing simulation runs (Simulation.h): an SVG of the trajectories (with an optional SMIL
    animation), an animated GIF written from scratch (GIF89a, LZW), and the trajectories as CSV. */
 #ifndef MHPLAN_SIM_RENDER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: SVG drawings of worlds and paths. */
 #ifndef MHPLAN_SVG_H
 #define MHPLAN_SVG_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/Generators.h"
 
 #include <cmath>
@@ -9,8 +10,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kPi = 3.14159265358979323846;
-
         /** Portable uniform numbers (std distributions differ between standard libraries). */
         class PortableRandom
         {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: random world generators (seeded, reproducible). */
 #ifndef MHPLAN_GENERATORS_H
 #define MHPLAN_GENERATORS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: occupancy grids from MovingAI .map files and PGM images. */
 #ifndef MHPLAN_GRID_IO_H
 #define MHPLAN_GRID_IO_H

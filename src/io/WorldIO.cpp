@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/WorldIO.h"
 
 #include "mhplan/collision/Collision.h"
@@ -17,8 +18,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kPi = 3.14159265358979323846;
-
         std::string directoryOf(const std::string &path)
         {
             const auto slash = path.find_last_of('/');

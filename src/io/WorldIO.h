@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: reading and writing world files. */
 #ifndef MHPLAN_WORLD_IO_H
 #define MHPLAN_WORLD_IO_H

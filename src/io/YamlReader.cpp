@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/YamlReader.h"
 
 #include "mhplan/base/World.h"

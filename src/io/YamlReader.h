@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: reading YAML input files (worlds, campaigns) with errors that name the file, line and field. */
 #ifndef MHPLAN_YAML_READER_H
 #define MHPLAN_YAML_READER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/optimum/Optimum.h"
 
 #include "mhplan/collision/Collision.h"
@@ -63,7 +64,6 @@ namespace mhplan
             std::reverse(out.begin(), out.end());
             return out;
         }
-        constexpr double kPi = 3.14159265358979323846;
         constexpr double kTwoPi = 2.0 * kPi;
         /** Largest number of convex corners for the disc-robot grid optimum (the tangent graph checks all
             pairs of corner discs). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: exact shortest paths (the optimum every benchmark run is compared with). */
 #ifndef MHPLAN_OPTIMUM_H
 #define MHPLAN_OPTIMUM_H

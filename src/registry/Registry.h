@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the built-in planner registry (OMPL's planners and mhplan's) and the helpers that draw from it. */
 #ifndef MHPLAN_REGISTRY_REGISTRY_H
 #define MHPLAN_REGISTRY_REGISTRY_H

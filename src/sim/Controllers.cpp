@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the simulator's controllers (see Controllers.h). */
 #include "mhplan/sim/Controllers.h"
 
@@ -17,7 +18,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kPi = 3.14159265358979323846;
         constexpr double kInf = std::numeric_limits<double>::infinity();
         /** \brief Smallest speed a braked command keeps (the simulator turns only for a nonzero speed). */
         constexpr double kCreepSpeed = 1e-11;

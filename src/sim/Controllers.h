@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: controllers for the simulator (Simulation.h): classic distributed APF, the adaptive APF of
    [MAPF], the online BFO/ATBFO-APF step of [BFO], and plan-then-follow with any registered planner. */
 #ifndef MHPLAN_CONTROLLERS_H
@@ -119,7 +120,7 @@ namespace mhplan
     };
 
     /** \brief Distributed artificial potential fields for many robots: the classic baseline "dapf" and the
-        adaptive field "aapf" of [MAPF] (ALGORITHMS.md section 8). Robot i at r_i, heading psi_i, goal g_i:
+        adaptive field "aapf" of [MAPF] (docs/algorithms.md 8). Robot i at r_i, heading psi_i, goal g_i:
 
         v_i = F_A + sum over obstacles within rho of F_O + sum over robots within rho of F_R, capped at
         v_max (the robot's maxSpeed), then the safety brake (ControllerBase).
@@ -183,7 +184,7 @@ namespace mhplan
         double coneDegrees_{60.0}, adaptiveGain_{1.0}, horizon_{1.0};
     };
 
-    /** \brief The online BFO/ATBFO-APF step of [BFO] section 5 (ALGORITHMS.md 6.3) as a controller
+    /** \brief The online BFO/ATBFO-APF step of [BFO] section 5 (docs/algorithms.md 6.3) as a controller
         ("bfo", "atbfo"): each robot walks from waypoint to waypoint, one BFO run per decision.
 
         A decision for robot i at r (radius R) toward its current goal g: the sensed obstacles are the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: scenario files (format: environments/README.md, "Scenario files"). */
 #include "mhplan/sim/ScenarioIO.h"
 
@@ -13,7 +14,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kPi = 3.14159265358979323846;
         /** \brief Samples per period when checking that a moving goal stays in free space. */
         constexpr int kMotionSamples = 72;
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: reading scenario files (a world file extended with robots, moving obstacles and settings). */
 #ifndef MHPLAN_SCENARIO_IO_H
 #define MHPLAN_SCENARIO_IO_H

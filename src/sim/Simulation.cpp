@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the time-stepped multi-robot simulator (see Simulation.h). */
 #include "mhplan/sim/Simulation.h"
 
@@ -9,8 +10,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kPi = 3.14159265358979323846;
-
         double wrapAngle(double a)
         {
             a = std::fmod(a + kPi, 2.0 * kPi);

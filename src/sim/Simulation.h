@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: a time-stepped 2D multi-robot simulator for planning while the world moves (moving obstacles and
-   targets, robots joining and goals assigned during a run), ALGORITHMS.md sections 6.3, 8 and 9 (case 3). */
+   targets, robots joining and goals assigned during a run), docs/algorithms.md 6.3, 8 and 9 (case 3). */
 #ifndef MHPLAN_SIMULATION_H
 #define MHPLAN_SIMULATION_H
 
@@ -70,7 +71,7 @@ namespace mhplan
     };
 
     /** \brief A robot of a scenario: a disc with unicycle (differential-drive) limits. Defaults: a
-        TurtleBot3 Burger (ALGORITHMS.md 8). */
+        TurtleBot3 Burger (docs/algorithms.md 8). */
     struct RobotSpec
     {
         std::string name;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Your own OMPL program, with mhplan's Slime Mould planner added in a few lines.
 #include <mhplan/registry/Registry.h>
 #include <mhplan/planners/population/SlimeMould.h>
