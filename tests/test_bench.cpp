@@ -335,7 +335,7 @@ TEST_F(TinyCampaign, GapEqualsRecomputedFromStoredLengthAndOptimum)
 {
     const Sql sql(campaign_->database);
     if (sql.columns("experiments").count("exact_optimum") == 0)
-        GTEST_SKIP() << "no exact optimum in this build (src/Optimum.cpp not in mhplan_core)";
+        GTEST_SKIP() << "no exact optimum in this build (src/optimum/Optimum.cpp not in mhplan_core)";
     const auto rows = sql.rows("SELECT runs.path_length, runs.exact_optimum_length, runs.optimality_gap, "
                                "experiments.exact_optimum FROM runs JOIN experiments ON runs.experimentid = "
                                "experiments.id WHERE runs.optimality_gap IS NOT NULL");

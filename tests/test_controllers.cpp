@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* Tests of the simulator's controllers (src/Controllers.h): names and parameters, an independent check that
-   no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned during a
-   run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
+/* Tests of the simulator's controllers (src/sim/Controllers.h): names and parameters, an independent check
+   that no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned
+   during a run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
 #include "mhplan/planners/lattice/ThetaStar.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/sim/ScenarioIO.h"

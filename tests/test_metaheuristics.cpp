@@ -207,7 +207,7 @@ INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA"
 
 namespace
 {
-    /** \brief Exact optimum of a seed world's default query: src/Optimum.h when it is built, else the
+    /** \brief Exact optimum of a seed world's default query: src/optimum/Optimum.h when it is built, else the
         spec's figures (docs/algorithms.md 9); NaN when unknown. */
     double optimumLength(const std::string &world)
     {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* Path metrics (src/Metrics.h) against hand computations.
+/* Path metrics (src/collision/Metrics.h) against hand computations.
 
    The clearance world:            y
                                   10 +----------------------+
