@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """mhplan report DB -o DIR: write DIR/index.html with figures and tables from a benchmark database.
 Runs with Debian's /usr/bin/python3 (matplotlib, numpy, yaml)."""
 

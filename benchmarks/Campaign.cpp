@@ -1,12 +1,13 @@
-#include "Campaign.h"
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/bench/Campaign.h"
 
-#include "Collision.h"
-#include "Controllers.h"
-#include "Problem.h"
-#include "ScenarioIO.h"
-#include "World.h"
-#include "WorldIO.h"
-#include "YamlReader.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/base/World.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/io/YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -108,12 +109,12 @@ namespace mhplan::bench
         }
 
         void readControllers(const YamlReader &r, const YAML::Node &n, const std::string &base,
-                             SimulationSpec &sim)
+                             SimulationSpec &sim, const PlannerRegistry &registry)
         {
             if (!n.IsSequence() || n.size() == 0)
                 r.fail(n, base,
                        "expected a non-empty list of controllers (names or {controller, name, params})");
-            const std::vector<std::string> known = controllerNames();
+            const std::vector<std::string> known = controllerNames(registry);
             std::set<std::string> names;
             for (std::size_t i = 0; i < n.size(); ++i)
             {
@@ -158,7 +159,8 @@ namespace mhplan::bench
             }
         }
 
-        void readSimulations(const YamlReader &r, const YAML::Node &n, Campaign &c)
+        void readSimulations(const YamlReader &r, const YAML::Node &n, Campaign &c,
+                             const PlannerRegistry &registry)
         {
             if (!n.IsSequence() || n.size() == 0)
                 r.fail(n, "simulations", "expected a non-empty list of {scenario, controllers, ...}");
@@ -187,7 +189,7 @@ namespace mhplan::bench
                 if (s["wall_limit"].IsDefined())
                     sim.wallLimit = r.number(s["wall_limit"], field + ".wall_limit", 1e-3, 1e7);
                 readControllers(r, r.require(s, "controllers", field + ".controllers"),
-                                field + ".controllers", sim);
+                                field + ".controllers", sim, registry);
                 c.simulations.push_back(std::move(sim));
             }
         }
@@ -226,7 +228,8 @@ namespace mhplan::bench
         }
     } // namespace
 
-    Campaign parseCampaign(const std::string &text, const std::string &fileName)
+    Campaign parseCampaign(const std::string &text, const std::string &fileName,
+                           const PlannerRegistry &registry)
     {
         const YAML::Node root = loadYamlMapping(text, fileName, "campaign file", "benchmarks/README.md");
         const YamlReader r(fileName);
@@ -286,15 +289,15 @@ namespace mhplan::bench
             readPlanners(r, root["planners"], c);
         }
         if (simulations)
-            readSimulations(r, root["simulations"], c);
+            readSimulations(r, root["simulations"], c, registry);
         return c;
     }
 
-    Campaign loadCampaign(const std::string &path)
+    Campaign loadCampaign(const std::string &path, const PlannerRegistry &registry)
     {
         if (!fs::is_regular_file(path))
             throw InputError("campaign '" + path + "': no such file");
-        return parseCampaign(readFile(path), path);
+        return parseCampaign(readFile(path), path, registry);
     }
 
     std::string fingerprint(const std::string &text)

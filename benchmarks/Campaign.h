@@ -1,8 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: benchmark campaigns. A campaign file (YAML, see benchmarks/README.md) names worlds and queries,
    planners with parameter overrides, limits, run count, seed and where the logs and the database go. Each
    (world, query) pair is one OMPL benchmark experiment. */
 #ifndef MHPLAN_BENCH_CAMPAIGN_H
 #define MHPLAN_BENCH_CAMPAIGN_H
+
+#include "mhplan/base/PlannerRegistry.h"
 
 #include <cstdint>
 #include <functional>
@@ -105,11 +108,14 @@ namespace mhplan::bench
         std::string logDir;
     };
 
-    /** \brief Read a campaign file; throws InputError naming the file, line and field on any problem. */
-    Campaign loadCampaign(const std::string &path);
+    /** \brief Read a campaign file; throws InputError naming the file, line and field on any problem.
+        Controller names "plan:<PLANNER>" are checked against \e registry. */
+    Campaign loadCampaign(const std::string &path,
+                          const PlannerRegistry &registry = PlannerRegistry::builtin());
 
     /** \brief Parse campaign YAML; \e fileName is used in messages and to resolve relative world paths. */
-    Campaign parseCampaign(const std::string &text, const std::string &fileName);
+    Campaign parseCampaign(const std::string &text, const std::string &fileName,
+                           const PlannerRegistry &registry = PlannerRegistry::builtin());
 
     /** \brief One (world, query) planning experiment or one scenario's simulation experiment. */
     struct Experiment

@@ -1,17 +1,18 @@
-#include "CampaignRunner.h"
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/bench/CampaignRunner.h"
 
-#include "Collision.h"
-#include "Controllers.h"
-#include "Metrics.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "ScenarioIO.h"
-#include "Simulation.h"
-#include "Version.h"
-#include "World.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/collision/Metrics.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
+#include "mhplan/base/Version.h"
+#include "mhplan/base/World.h"
+#include "mhplan/io/WorldIO.h"
 
-#include "Optimum.h"
+#include "mhplan/optimum/Optimum.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -784,6 +785,8 @@ namespace mhplan::bench
             const Campaign *campaign{nullptr};
             const Experiment *experiment{nullptr};
             const SimulationSpec *spec{nullptr};
+            /** \brief The planners of "plan:<PLANNER>" controllers: the campaign's registry. */
+            const PlannerRegistry *registry{nullptr};
             Scenario scenario;
             /** Progress slot of the first controller (see ProgressBar). */
             std::size_t slotBase{0};
@@ -880,7 +883,7 @@ namespace mhplan::bench
                                Scenario scenario = xs.scenario;
                                applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter,
                                                 startSeed);
-                               const ControllerPtr controller = makeController(spec.controller);
+                               const ControllerPtr controller = makeController(spec.controller, *xs.registry);
                                for (const auto &kv : spec.params)
                                    controller->setParameter(kv.first, kv.second);
                                std::map<std::string, std::string> common;
@@ -1131,7 +1134,7 @@ namespace mhplan::bench
 
         /** Check every controller and parameter of the simulations in a throw-away process (controllers may
             own planners and random number generators). Messages name the campaign file and line. */
-        void validateControllers(const Campaign &c)
+        void validateControllers(const Campaign &c, const PlannerRegistry &registry)
         {
             checkInChildProcess(
                 [&]() -> std::string
@@ -1142,7 +1145,7 @@ namespace mhplan::bench
                             const ControllerSpec &spec = c.simulations[si].controllers[ci];
                             try
                             {
-                                const ControllerPtr controller = makeController(spec.controller);
+                                const ControllerPtr controller = makeController(spec.controller, registry);
                                 for (const auto &kv : spec.params)
                                     controller->setParameter(kv.first, kv.second);
                             }
@@ -1356,7 +1359,7 @@ namespace mhplan::bench
             validatePlanners(campaign, registry, world, world.query(all.front().query));
         }
         if (!campaign.simulations.empty())
-            validateControllers(campaign);
+            validateControllers(campaign, registry);
         // Progress slots: the planners, then every controller of every simulation.
         std::vector<std::size_t> slotBase(campaign.simulations.size(), 0);
         std::size_t slots = campaign.planners.size();
@@ -1445,6 +1448,7 @@ namespace mhplan::bench
                                 xs.campaign = &campaign;
                                 xs.experiment = e;
                                 xs.spec = &campaign.simulations[e->simulation];
+                                xs.registry = &registry;
                                 xs.scenario = loadScenario(e->scenarioFile);
                                 xs.slotBase = slotBase[e->simulation];
                                 code = runSimulationProcess(xs, fd, solve);

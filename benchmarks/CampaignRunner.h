@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: running a benchmark campaign. Every (world, query) experiment is one ompl::tools::Benchmark
    experiment, every simulation entry one experiment whose "planners" are its controllers; runs execute in
    child processes so that a planner that throws, aborts, crashes or hangs
@@ -6,8 +7,8 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 #define MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 
-#include "Campaign.h"
-#include "Simulation.h"
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/sim/Simulation.h"
 
 #include <iosfwd>
 #include <string>
@@ -38,7 +39,8 @@ namespace mhplan::bench
         std::ostream *messages{nullptr};
         /** \brief The converter from logs to the database. */
         std::string statisticsTool{"/usr/bin/ompl_benchmark_statistics"};
-        /** \brief Planners to draw from (default: PlannerRegistry::builtin()). */
+        /** \brief Planners to draw from, for the campaign's planners and its "plan:<PLANNER>" controllers
+            (default: PlannerRegistry::builtin()). */
         const PlannerRegistry *registry{nullptr};
         /** \brief How world names are resolved (required). */
         WorldResolver resolveWorld;

@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan micro-benchmarks of the collision back ends: state validity, clearance and exact motion checks, on
    the 12-circle world of [BFO] case 2 and on a generated world of 10,000 circles. Query points and segments
    are drawn before the timed loops. Run: mhplan_microbench --benchmark_min_time=0.2 */
-#include "Collision.h"
-#include "FclCollision.h"
-#include "Problem.h"
-#include "Validity.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/FclCollision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>
@@ -21,7 +22,7 @@ using namespace mhplan;
 
 namespace
 {
-    /** [BFO] case 2 (ALGORITHMS.md section 9): 12 circles in [0, 10]^2, point robot, (0, 0) to (10, 10). */
+    /** [BFO] case 2 (docs/algorithms.md 9): 12 circles in [0, 10]^2, point robot, (0, 0) to (10, 10). */
     World bfoCase2World()
     {
         World w;
@@ -71,7 +72,7 @@ namespace
             std::mt19937_64 rng(7);
             std::uniform_real_distribution<double> x(w.bounds.xmin, w.bounds.xmax);
             std::uniform_real_distribution<double> y(w.bounds.ymin, w.bounds.ymax);
-            std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
+            std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
             std::uniform_real_distribution<double> length(0.0, 0.05 * w.bounds.width());
             for (std::size_t i = 0; i < kCount; ++i)
             {

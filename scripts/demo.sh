@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install what is missing, build, and run the main job: the default benchmark campaign (every shipped seed
 # world x the five metaheuristics in their papers' settings x RRT*, Informed RRT*, PRM*, BIT* and A*) into
 # results/seeds.db (OMPL logs + SQLite, Planner Arena compatible), then the HTML report results/report/.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install the Debian packages mhplan needs (only those missing), then configure and build out of source.
 # Idempotent and quiet when everything is present. Usage: scripts/setup.sh [BUILD_DIR]
 set -euo pipefail

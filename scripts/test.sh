@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install what is missing, build, and run every test through CTest.
 set -euo pipefail
 cd "$(dirname "$0")/.."

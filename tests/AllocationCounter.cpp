@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The replaced global allocation functions behind AllocationCounter.h. Kept out of line (noinline) so that
    GCC does not pair an inlined free() with operator new. */
 #include "AllocationCounter.h"

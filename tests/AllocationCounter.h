@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Counting heap allocations in a test program: linking AllocationCounter.cpp replaces the global operator
    new/delete with versions that count every allocation (for "no heap allocation in the hot path" tests). */
 #ifndef MHPLAN_TESTS_ALLOCATION_COUNTER_H

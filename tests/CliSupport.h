@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Test support: run the mhplan program as a user would and capture what it prints. */
 #ifndef MHPLAN_TESTS_CLI_SUPPORT_H
 #define MHPLAN_TESTS_CLI_SUPPORT_H

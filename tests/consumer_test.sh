@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install mhplan into a temporary prefix, build tests/consumer against it as a separate CMake project, run
 # it, and build the Debian package. Usage: consumer_test.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
@@ -8,7 +9,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/lib/cmake/mhplan/mhplanConfig.cmake"
-test -f "$work/prefix/include/mhplan/SlimeMould.h"
+test -f "$work/prefix/include/mhplan/planners/population/SlimeMould.h"
+test -f "$work/prefix/include/mhplan/base/VersionConfig.h"
 test -x "$work/prefix/bin/mhplan"
 # The installed program finds its installed worlds (not the source tree's).
 worlds=$(env -u MHPLAN_ENVIRONMENTS "$work/prefix/bin/mhplan" worlds)

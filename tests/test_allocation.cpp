@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The hot paths (validity, motion and clearance queries of every collision model) never touch the heap once
    warm: fitness and planner loops call them millions of times. Counted with a replaced global operator new.
  */
-#include "Collision.h"
-#include "Generators.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/io/Generators.h"
+#include "mhplan/io/WorldIO.h"
 
 #include "AllocationCounter.h"
 

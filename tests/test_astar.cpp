@@ -1,15 +1,16 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The lattice baselines: A* equals the 8-connected (MovingAI) optimum, computed here by a plain Dijkstra and
    by the foundation's computeGridOctileOptimum; Theta* lies between the any-angle optimum and A*; geometric
    worlds, off-centre endpoints, disc robots, continuation, determinism; the 'mhplan scen' tool end to end. */
-#include "AStar.h"
-#include "Generators.h"
-#include "GridIO.h"
-#include "Optimum.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "ThetaStar.h"
-#include "Validity.h"
-#include "WorldIO.h"
+#include "mhplan/planners/lattice/AStar.h"
+#include "mhplan/io/Generators.h"
+#include "mhplan/io/GridIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/planners/lattice/ThetaStar.h"
+#include "mhplan/collision/Validity.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerTerminationCondition.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Benchmark campaigns end to end: a tiny campaign (two worlds, GA twice under distinct names, RRT*, and two
    deliberately crashing planners) is run, merged into an OMPL database and checked for its experiments,
    planners, runs and columns; the optimality gap is recomputed from the stored values; sharded runs merge
@@ -5,14 +6,15 @@
    Simulation experiments: parsed and refused with file:line, their rows carry exactly what an independent
    run of the simulator with the same seed and start perturbation returns; a hanging simulation run is killed
    and recorded as Crash. */
-#include "Campaign.h"
-#include "CampaignRunner.h"
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/CampaignRunner.h"
 #include "CliSupport.h"
-#include "Controllers.h"
-#include "Registry.h"
-#include "ScenarioIO.h"
-#include "Simulation.h"
-#include "World.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/planners/lattice/ThetaStar.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
+#include "mhplan/base/World.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Exception.h>
@@ -70,6 +72,8 @@ namespace
             PlannerRegistry r = PlannerRegistry::builtin();
             r.add({"CrashTest", "test", "always fails",
                    [](const ob::SpaceInformationPtr &si) { return std::make_shared<CrashPlanner>(si); }});
+            r.add({"ThetaStarHere", "test", "Theta* under a name only this registry knows",
+                   allocatorFor<ThetaStar>()});
             return r;
         }();
         return registry;
@@ -331,7 +335,7 @@ TEST_F(TinyCampaign, GapEqualsRecomputedFromStoredLengthAndOptimum)
 {
     const Sql sql(campaign_->database);
     if (sql.columns("experiments").count("exact_optimum") == 0)
-        GTEST_SKIP() << "no exact optimum in this build (src/Optimum.cpp not in mhplan_core)";
+        GTEST_SKIP() << "no exact optimum in this build (src/optimum/Optimum.cpp not in mhplan_core)";
     const auto rows = sql.rows("SELECT runs.path_length, runs.exact_optimum_length, runs.optimality_gap, "
                                "experiments.exact_optimum FROM runs JOIN experiments ON runs.experimentid = "
                                "experiments.id WHERE runs.optimality_gap IS NOT NULL");
@@ -763,6 +767,43 @@ TEST(SimulationCampaign, RowsCarryTheValuesTheSimulationReturns)
     EXPECT_EQ(again.runs, 0u);
     EXPECT_EQ(again.mergedLogs, 0u);
     fs::remove_all(fs::temp_directory_path() / ("mhplan_test_bench_sim_" + std::to_string(::getpid())));
+}
+
+TEST(SimulationCampaign, PlanControllersDrawFromTheCampaignsRegistry)
+{
+    const std::string text = "campaign: ownplanner\n"
+                             "simulations:\n"
+                             "  - scenario: scenarios/mapf_2robots\n"
+                             "    runs: 1\n"
+                             "    controllers: [plan:ThetaStarHere]\n";
+    // The built-in registry does not know the planner: the campaign file is refused, naming the controller.
+    try
+    {
+        parseCampaign(text, "own.yaml");
+        ADD_FAILURE() << "no InputError";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("plan:ThetaStarHere"), std::string::npos) << e.what();
+    }
+    Campaign c = parseCampaign(text, "own.yaml", testRegistry());
+    ASSERT_EQ(c.simulations.size(), 1u);
+    const fs::path dir = fs::temp_directory_path() / ("mhplan_test_bench_own_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    c.database = (dir / "own.db").string();
+    c.logDir = (dir / "logs").string();
+    const CampaignSummary summary = runCampaign(c, options());
+    ASSERT_EQ(summary.failed, 0u) << (summary.errors.empty() ? "" : summary.errors[0]);
+    EXPECT_EQ(summary.runs, 1u);
+    EXPECT_EQ(summary.crashes, 0u);
+    const Sql sql(c.database);
+    const auto rows = sql.rows("SELECT runs.solved FROM runs JOIN plannerConfigs ON "
+                               "runs.plannerid = plannerConfigs.id WHERE plannerConfigs.name LIKE "
+                               "'%ThetaStarHere%'");
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0][0], "1");
+    fs::remove_all(dir);
 }
 
 TEST(SimulationCampaign, StartJitterIsDeterministicAndValid)

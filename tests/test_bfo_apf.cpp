@@ -1,4 +1,5 @@
-/* BFO, ATBFO and APF ([BFO] Abbas & Ali 2016; ALGORITHMS.md sections 6 and 7) on worlds built in code:
+// SPDX-License-Identifier: BSD-3-Clause
+/* BFO, ATBFO and APF ([BFO] Abbas & Ali 2016; docs/algorithms.md sections 6 and 7) on worlds built in code:
    the paper's case 1 and case 2 circle worlds (start (0,0), goal (10,10), [0,10]^2, point robot), a free
    world and a U-shaped trap. Every path is checked by an independent dense sampling of the obstacles and by
    the motion validator.
@@ -14,12 +15,12 @@
         y=3  +--------+       G (9,5) behind it
             x=3    x=6 x=6.5
 */
-#include "ArtificialPotentialField.h"
-#include "BacterialForaging.h"
-#include "PotentialField.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "Validity.h"
+#include "mhplan/planners/field/ArtificialPotentialField.h"
+#include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/planners/field/PotentialField.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -53,7 +54,7 @@ namespace
         return w;
     }
 
-    /** \brief [BFO] case 1 (ALGORITHMS.md 9). */
+    /** \brief [BFO] case 1 (docs/algorithms.md 9). */
     World case1()
     {
         World w = squareWorld("case1");
@@ -62,7 +63,7 @@ namespace
         return w;
     }
 
-    /** \brief [BFO] case 2 (ALGORITHMS.md 9). */
+    /** \brief [BFO] case 2 (docs/algorithms.md 9). */
     World case2()
     {
         World w = squareWorld("case2");

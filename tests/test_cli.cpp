@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The mhplan program end to end: exit codes and messages as a user sees them. */
 #include "CliSupport.h"
 
@@ -126,7 +127,7 @@ TEST(Cli, OptimumAndGapAreReported)
 {
     Result r = run("optimum bfo_case1");
     ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_TRUE(contains(r.out, "length:  14.2734")) << r.out; // ../shared/ALGORITHMS.md section 9
+    EXPECT_TRUE(contains(r.out, "length:  14.2734")) << r.out; // docs/algorithms.md section 9
     EXPECT_TRUE(contains(r.out, "tangent-graph")) << r.out;
     r = run("optimum gms_grid10 --octile");
     ASSERT_EQ(r.code, 0) << r.out;

@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the collision models: the FCL-backed model against the analytic oracle on many worlds, both
    against closed forms, and the exact motion validator. */
-#include "Collision.h"
-#include "FclCollision.h"
-#include "Problem.h"
-#include "Validity.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/FclCollision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 
@@ -18,8 +19,6 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr double kPi = 3.14159265358979323846;
-
     World baseWorld(const std::string &name, double robotRadius)
     {
         World w;

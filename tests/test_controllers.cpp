@@ -1,8 +1,10 @@
-/* Tests of the simulator's controllers (src/Controllers.h): names and parameters, an independent check that
-   no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned during a
-   run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
-#include "Controllers.h"
-#include "ScenarioIO.h"
+// SPDX-License-Identifier: BSD-3-Clause
+/* Tests of the simulator's controllers (src/sim/Controllers.h): names and parameters, an independent check
+   that no trajectory overlaps a static obstacle, determinism per seed, robots joining and tasks assigned
+   during a run, the U-shaped trap, 15 robots crossing, BFO on a static world, plan-then-follow replanning. */
+#include "mhplan/planners/lattice/ThetaStar.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/sim/ScenarioIO.h"
 
 #include <ompl/util/Console.h>
 
@@ -18,8 +20,6 @@ using namespace mhplan;
 
 namespace
 {
-    const double kPi = std::acos(-1.0);
-
     /** \brief Quiet OMPL's informational messages (the planners log every solve). */
     const bool kQuiet = []
     {
@@ -154,6 +154,41 @@ TEST(ControllerNames, KnownAndUnknown)
         EXPECT_NE(msg.find("dapf"), std::string::npos) << msg;
         EXPECT_NE(msg.find("plan:ThetaStar"), std::string::npos) << msg;
     }
+}
+
+TEST(ControllerNames, PlanDrawsFromTheRegistryItIsHanded)
+{
+    // A planner only this registry knows, counting its allocations.
+    static int allocations = 0;
+    PlannerRegistry registry = PlannerRegistry::builtin();
+    registry.add({"OnlyHere", "test", "Theta* under a name the built-in registry does not know",
+                  [](const ompl::base::SpaceInformationPtr &si) -> ompl::base::PlannerPtr
+                  {
+                      ++allocations;
+                      return std::make_shared<ThetaStar>(si);
+                  }});
+    const std::vector<std::string> names = controllerNames(registry);
+    EXPECT_NE(std::find(names.begin(), names.end(), "plan:OnlyHere"), names.end());
+    const std::vector<std::string> builtinNames = controllerNames();
+    EXPECT_EQ(std::find(builtinNames.begin(), builtinNames.end(), "plan:OnlyHere"), builtinNames.end());
+    EXPECT_NE(errorOf([] { makeController("plan:OnlyHere"); }).find("'plan:OnlyHere'"), std::string::npos);
+
+    ControllerPtr c = makeController("plan:OnlyHere", registry);
+    EXPECT_EQ(c->name(), "plan:OnlyHere");
+    allocations = 0;
+    c->setParameter("planner.resolution", "0.05"); // checked on a planner of the handed registry
+    EXPECT_EQ(allocations, 1);
+    EXPECT_NE(errorOf([&] { c->setParameter("planner.nope", "1"); }).find("nope"), std::string::npos);
+
+    allocations = 0;
+    const Scenario scenario = smallScenario();
+    Simulation sim(scenario, c, 1);
+    const SimulationResult r = sim.run();
+    expectSafe(scenario, r, false);
+    const double plans = c->counters().at("plans");
+    EXPECT_GE(plans, static_cast<double>(scenario.robots.size()));
+    EXPECT_GE(allocations, static_cast<int>(plans)) << "every plan allocates from the handed registry";
+    EXPECT_TRUE(r.allDone);
 }
 
 TEST(ControllerParameters, SetListedAndRefused)
@@ -292,7 +327,7 @@ TEST(Controllers, FifteenRobotsCrossAnOpenWorld)
 
 TEST(Controllers, BfoReachesTheGoalOnAStaticWorld)
 {
-    // [BFO] case 1 (ALGORITHMS.md 9), a point robot at 1 m/s as in the case-3 scenarios.
+    // [BFO] case 1 (docs/algorithms.md 9), a point robot at 1 m/s as in the case-3 scenarios.
     const Scenario scenario = parseScenarioYaml(R"(
 name: bfo_static
 bounds: {xmin: 0, xmax: 10, ymin: 0, ymax: 10}

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Occupancy grids: MovingAI and PGM parsing, and the exact grid collision model against brute force over
    every blocked square (drawings are y-up: row 0 of a file is the top). */
-#include "Collision.h"
-#include "GridCollision.h"
-#include "GridIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/GridCollision.h"
+#include "mhplan/io/GridIO.h"
 
 #include <gtest/gtest.h>
 
@@ -218,7 +219,7 @@ namespace
     std::vector<std::pair<Vec2, Vec2>> randomSegments(const Box &b, double maxLen, int n, unsigned seed)
     {
         std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> ux(b.xmin, b.xmax), uy(b.ymin, b.ymax), ua(0.0, 2.0 * M_PI),
+        std::uniform_real_distribution<double> ux(b.xmin, b.xmax), uy(b.ymin, b.ymax), ua(0.0, 2.0 * kPi),
             ul(0.0, maxLen);
         std::vector<std::pair<Vec2, Vec2>> out;
         while (static_cast<int>(out.size()) < n)

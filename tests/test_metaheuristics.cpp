@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
    and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each). */
-#include "Fitness.h"
-#include "PathEncoding.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "Validity.h"
-#include "WorldIO.h"
+#include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PathEncoding.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/collision/Validity.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -206,8 +207,8 @@ INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA"
 
 namespace
 {
-    /** \brief Exact optimum of a seed world's default query: src/Optimum.h when it is built, else the
-        spec's figures (ALGORITHMS.md 9); NaN when unknown. */
+    /** \brief Exact optimum of a seed world's default query: src/optimum/Optimum.h when it is built, else the
+        spec's figures (docs/algorithms.md 9); NaN when unknown. */
     double optimumLength(const std::string &world)
     {
         const std::map<std::string, double> spec{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};

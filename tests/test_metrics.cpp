@@ -1,4 +1,5 @@
-/* Path metrics (src/Metrics.h) against hand computations.
+// SPDX-License-Identifier: BSD-3-Clause
+/* Path metrics (src/collision/Metrics.h) against hand computations.
 
    The clearance world:            y
                                   10 +----------------------+
@@ -8,8 +9,8 @@
                                    2 |  A ------------- B   |  A = (1, 2), B = (9, 2)
                                    0 +----------------------+ x
                                      0                     10                                      */
-#include "Collision.h"
-#include "Metrics.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,6 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr double kPi = 3.14159265358979323846;
-
     World circleWorld()
     {
         World w;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan's population planners on RealVectorStateSpaces of any dimension, through OMPL's C++ API with the
    user's own validity checker and OMPL's DiscreteMotionValidator (no mhplan world, checker or validator):
 
@@ -6,10 +7,10 @@
 
    Every returned path is checked independently (densely sampled against the sphere, not through the
    planner's motion validator), and setup() refuses unsupported spaces with a clear ompl::Exception. */
-#include "Fitness.h"
-#include "PopulationPlanner.h"
-#include "Registry.h"
-#include "SlimeMould.h"
+#include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PopulationPlanner.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/planners/population/SlimeMould.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/PlannerData.h>

@@ -1,15 +1,16 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The switchable [GMS] operators of PopulationPlanner (gms_repair, gms_revise, gms_simplify, gms_improve,
    gms_scope, gms_replace_fraction): validation, defaults, refusal where they cannot apply, and what the
    improved variants SMA-GMS, LRSMA-GMS and MGO-GMS achieve on bfo_case2 with the papers' budgets. */
-#include "Optimum.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "WorldIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/io/WorldIO.h"
 
-#include "LRSMA.h"
-#include "MountainGazelle.h"
-#include "Operators.h"
-#include "SlimeMould.h"
+#include "mhplan/planners/population/LRSMA.h"
+#include "mhplan/planners/population/MountainGazelle.h"
+#include "mhplan/planners/common/Operators.h"
+#include "mhplan/planners/population/SlimeMould.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/MotionValidator.h>

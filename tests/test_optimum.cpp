@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the exact optimum: closed forms, the shipped seed worlds, random worlds against a dense roadmap
    (and, for point robots among polygons and on grids, against a brute-force visibility graph), and the
    grid octile optimum against a plain Dijkstra. */
-#include "Collision.h"
-#include "Generators.h"
-#include "GridCollision.h"
-#include "Optimum.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/io/Generators.h"
+#include "mhplan/collision/GridCollision.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +22,6 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr double kPi = 3.14159265358979323846;
-
     /** Portable uniform numbers (fixed seeds give the same worlds everywhere). */
     class Rng
     {

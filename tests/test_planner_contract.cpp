@@ -1,12 +1,14 @@
-/* The contract every mhplan planner keeps (OMPL's Planner API as STYLE.md asks): solve / solve continues /
-   clear / solve, a termination condition already true returns at once, tiny budgets, refused parameters
-   named with their range, progress properties, the intermediate-solution callback, approximate solutions
-   when no exact one exists, and foreign (non-mhplan) validity checkers. Lattice searches (isLatticeSearch)
-   and potential-field walks (isWalk) keep it too, with the checks adapted where their nature differs. */
-#include "Problem.h"
-#include "Registry.h"
-#include "Validity.h"
-#include "WorldIO.h"
+// SPDX-License-Identifier: BSD-3-Clause
+/* The contract every mhplan planner keeps (OMPL's Planner API as docs/conventions.md asks): solve / solve
+   continues / clear / solve, a termination condition already true returns at once, tiny budgets, refused
+   parameters named with their range, progress properties, the intermediate-solution callback, approximate
+   solutions when no exact one exists, and foreign (non-mhplan) validity checkers. Lattice searches
+   (isLatticeSearch) and potential-field walks (isWalk) keep it too, with the checks adapted where their
+   nature differs. */
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/collision/Validity.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
    and every registered planner solves a seed world through the shared exact validity checking. */
-#include "Problem.h"
-#include "Registry.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """The report from a small database: every figure is a valid image, every table number equals the SQL
 aggregate computed here independently, and a database with a crashed planner or without progress data
 still gives a report that says what is missing. The database is built the way mhplan bench builds one:

@@ -1,9 +1,10 @@
-/* Drawing simulation runs (src/SimRender.h): the GIF encoder checked by an independent LZW decoder written
-   here, the rasteriser and SVG on a small run, and `mhplan sim` end to end. */
+// SPDX-License-Identifier: BSD-3-Clause
+/* Drawing simulation runs (src/draw/SimRender.h): the GIF encoder checked by an independent LZW decoder
+   written here, the rasteriser and SVG on a small run, and `mhplan sim` end to end. */
 #include "CliSupport.h"
-#include "ScenarioIO.h"
-#include "SimRender.h"
-#include "Simulation.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/draw/SimRender.h"
+#include "mhplan/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 

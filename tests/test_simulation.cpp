@@ -1,7 +1,8 @@
-/* Tests of the simulator core and scenario files (src/Simulation.h, src/ScenarioIO.h), with controllers
-   defined here so that the physics is tested independently of mhplan's controllers. */
-#include "ScenarioIO.h"
-#include "Simulation.h"
+// SPDX-License-Identifier: BSD-3-Clause
+/* Tests of the simulator core and scenario files (src/sim/Simulation.h, src/sim/ScenarioIO.h), with
+   controllers defined here so that the physics is tested independently of mhplan's controllers. */
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +13,6 @@ using namespace mhplan;
 
 namespace
 {
-    const double kPi = std::acos(-1.0);
-
     /** \brief Heads straight for the goal at full speed (optionally with a random perturbation). */
     class StraightController : public Controller
     {

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* World files: every malformed input is refused with the file, the line and the field; shipped worlds load.
  */
-#include "Collision.h"
-#include "Generators.h"
-#include "WorldIO.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/io/Generators.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <gtest/gtest.h>
 

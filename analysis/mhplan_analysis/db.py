@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Reading an OMPL benchmark database (as written by ompl_benchmark_statistics) into plain Python data.
 
 The schema is OMPL's: experiments, plannerConfigs, runs (one column per run property, spaces turned into

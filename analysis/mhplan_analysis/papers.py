@@ -1,4 +1,5 @@
-"""Numbers the seed papers report (../shared/ALGORITHMS.md section 9), set beside ours in the report."""
+# SPDX-License-Identifier: BSD-3-Clause
+"""Numbers the seed papers report (docs/algorithms.md section 9), set beside ours in the report."""
 
 # [LRSMA] Zheng et al. 2023, Table 3: per scenario and algorithm, path length (min, mean, std) and planning
 # time (best run, mean) in seconds. Their scenarios' coordinates are not published: ours are reconstructions.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """One HTML report from an mhplan/OMPL benchmark database: box plots, success bars, convergence, paths,
 the papers' tables and a ranking per problem. Every number in a table is computed here from the database
 (see tables(); the tests recompute them with SQL)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The "Moving worlds" part of the report: simulation experiments of mhplan bench (one experiment per
 scenario, one "planner" sim:NAME per controller, one row per run with makespan, flowtime, collisions, ...).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Small statistics used by the report (numpy only)."""
 
 import math

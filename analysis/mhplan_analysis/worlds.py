@@ -1,5 +1,6 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Just enough of mhplan's world files to draw them: YAML worlds (circles, rectangles, polygons, inline grid
-rows, .map grid files) and bare MovingAI .map files. The C++ loader (src/WorldIO.cpp) is the reference and
+rows, .map grid files) and bare MovingAI .map files. The C++ loader (src/io/WorldIO.cpp) is the reference and
 validates; this one only draws files that already passed it."""
 
 import math

@@ -1,4 +1,5 @@
-#include "Args.h"
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/cli/Args.h"
 
 #include <cerrno>
 #include <cstdlib>

@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan CLI: a small argument parser that refuses what it does not know. */
 #ifndef MHPLAN_CLI_ARGS_H
 #define MHPLAN_CLI_ARGS_H
 
-#include "Optimum.h"
-#include "World.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/base/World.h"
 
 #include <cstdint>
 #include <map>

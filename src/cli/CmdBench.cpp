@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench CAMPAIGN: run a benchmark campaign (benchmarks/README.md) and build its database. */
-#include "Args.h"
-#include "Commands.h"
+#include "mhplan/cli/Args.h"
+#include "mhplan/cli/Commands.h"
 
-#include "Campaign.h"
-#include "CampaignRunner.h"
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/CampaignRunner.h"
 
 #include <filesystem>
 #include <iomanip>

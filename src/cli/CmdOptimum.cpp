@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan optimum WORLD: the exact shortest path of the world's robot, its length and the path itself. */
-#include "Commands.h"
+#include "mhplan/cli/Commands.h"
 
-#include "Args.h"
-#include "Optimum.h"
-#include "Svg.h"
-#include "WorldIO.h"
+#include "mhplan/cli/Args.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/draw/Svg.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <iomanip>
 #include <iostream>

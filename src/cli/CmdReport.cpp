@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan report DB -o DIR: runs analysis/report.py with an interpreter that has matplotlib and numpy. */
-#include "Commands.h"
+#include "mhplan/cli/Commands.h"
 
-#include "World.h"
+#include "mhplan/base/World.h"
 
 #include <cstdlib>
 #include <filesystem>

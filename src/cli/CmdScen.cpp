@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan scen: run every problem of a MovingAI scenario file and compare the lengths with the file's optima.
  */
-#include "Commands.h"
+#include "mhplan/cli/Commands.h"
 
-#include "Args.h"
-#include "Collision.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "WorldIO.h"
+#include "mhplan/cli/Args.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Time.h>

@@ -1,14 +1,15 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan sim SCENARIO: run a moving-world scenario with a controller, print per-robot and run metrics, and
    draw the run (SVG with a replay, animated GIF) or write its trajectories (CSV). */
-#include "Commands.h"
+#include "mhplan/cli/Commands.h"
 
-#include "Args.h"
-#include "Controllers.h"
-#include "Registry.h"
-#include "ScenarioIO.h"
-#include "SimRender.h"
-#include "Simulation.h"
-#include "Svg.h"
+#include "mhplan/cli/Args.h"
+#include "mhplan/sim/Controllers.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+#include "mhplan/draw/SimRender.h"
+#include "mhplan/sim/Simulation.h"
+#include "mhplan/draw/Svg.h"
 
 #include <ompl/util/Time.h>
 

@@ -1,15 +1,16 @@
-#include "Commands.h"
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/cli/Commands.h"
 
-#include "Args.h"
-#include "Collision.h"
-#include "Generators.h"
-#include "GridIO.h"
-#include "Optimum.h"
-#include "Problem.h"
-#include "Registry.h"
-#include "Svg.h"
-#include "Validity.h"
-#include "WorldIO.h"
+#include "mhplan/cli/Args.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/io/Generators.h"
+#include "mhplan/io/GridIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/draw/Svg.h"
+#include "mhplan/collision/Validity.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/RandomNumbers.h>

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan CLI: one function per subcommand, dispatched from main.cpp's command table. */
 #ifndef MHPLAN_CLI_COMMANDS_H
 #define MHPLAN_CLI_COMMANDS_H
 
-#include "World.h"
+#include "mhplan/base/World.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the command-line program. One table of subcommands; each lives in its own function. */
-#include "Commands.h"
-#include "Version.h"
-#include "World.h"
+#include "mhplan/cli/Commands.h"
+#include "mhplan/base/Version.h"
+#include "mhplan/base/World.h"
 
 #include <ompl/util/Console.h>
 

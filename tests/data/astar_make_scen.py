@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes tests/data/astar_random.map and astar_random.scen: a random 48 x 32 MovingAI octile map and a scenario
 of 80 problems whose optimal lengths come from a plain Dijkstra written here (independent of mhplan's A*).
 MovingAI rules: 8-connected, straight moves cost 1, diagonal moves sqrt 2 and need both side cells free.

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/planners/Registration.h"
+
+#include "mhplan/planners/field/ArtificialPotentialField.h"
+#include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/planners/lattice/AStar.h"
+#include "mhplan/planners/lattice/ThetaStar.h"
+#include "mhplan/planners/population/Genetic.h"
+#include "mhplan/planners/population/LRSMA.h"
+#include "mhplan/planners/population/MountainGazelle.h"
+#include "mhplan/planners/population/SlimeMould.h"
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        /** \brief A population planner named \e name with the [GMS] repair, simplification and node
+            improvement on every individual after each iteration, and \e waypoints waypoints. */
+        template <typename P> PlannerAllocator gmsVariant(const std::string &name, unsigned int waypoints)
+        {
+            return [name, waypoints](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+            {
+                auto p = std::make_shared<P>(si, name);
+                p->setGmsRepair(1);
+                p->setGmsSimplify(1);
+                p->setGmsImprove(1);
+                p->setGmsScope("all");
+                p->setWaypoints(waypoints);
+                return p;
+            };
+        }
+    } // namespace
+
+    void registerMhplanPlanners(PlannerRegistry &r)
+    {
+        // One line each.
+        r.add({"AStar", "mhplan",
+               "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
+               allocatorFor<AStar>()});
+        r.add({"ThetaStar", "mhplan", "Theta*, any-angle A* on the same lattice (Nash et al. 2007)",
+               allocatorFor<ThetaStar>()});
+        r.add({"BFO", "mhplan", "Bacterial foraging optimization, online APF walk (Passino 2002; [BFO])",
+               allocatorFor<BacterialForaging>()});
+        r.add({"ATBFO", "mhplan", "Adaptive-tumble bacterial foraging, online APF walk (Abbas & Ali 2016)",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               { return std::make_shared<BacterialForaging>(si, true); }});
+        r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
+               allocatorFor<ArtificialPotentialField>()});
+        r.add({"SMA", "mhplan", "Slime mould algorithm (Li et al. 2020; [GMS], [LRSMA])",
+               allocatorFor<SlimeMould>()});
+        r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
+               allocatorFor<LRSMA>()});
+        r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
+               allocatorFor<MountainGazelle>()});
+        r.add({"SMA-GMS", "mhplan",
+               "SMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
+               gmsVariant<SlimeMould>("SMA-GMS", 3)});
+        r.add(
+            {"LRSMA-GMS", "mhplan",
+             "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
+             "5 waypoints",
+             gmsVariant<LRSMA>("LRSMA-GMS", 5)});
+        r.add({"MGO-GMS", "mhplan",
+               "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
+               gmsVariant<MountainGazelle>("MGO-GMS", 3)});
+        r.add({"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", allocatorFor<Genetic>()});
+        r.add({"GA-WALK", "mhplan",
+               "GA, improved variant (not in the paper): initial and replacement individuals are random "
+               "collision-free lattice walks",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               {
+                   auto p = std::make_shared<Genetic>(si, "GA-WALK");
+                   p->setInitialisation("walk");
+                   return p;
+               }});
+    }
+} // namespace mhplan

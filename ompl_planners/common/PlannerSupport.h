@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: small pieces every mhplan planner shares (planner data of a path, progress formatting). */
+#ifndef MHPLAN_PLANNER_SUPPORT_H
+#define MHPLAN_PLANNER_SUPPORT_H
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/SpaceInformation.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief Add a path of \e count points to \e data as a chain of vertices joined by edges: the first a
+        start vertex, the last a goal vertex when \e lastIsGoal. \e fill(state, i) writes point i into a
+       state. PlannerData keeps the state pointers it is given (and merges vertices by pointer), so one state
+       is allocated per point and appended to \e owned, which the planner frees with freeStates() when it
+        clears or is destroyed (as OMPL's planners own their trees' states). */
+    void addPathToPlannerData(const ompl::base::SpaceInformation &si, std::size_t count,
+                              const std::function<void(ompl::base::State *, std::size_t)> &fill,
+                              bool lastIsGoal, ompl::base::PlannerData &data,
+                              std::vector<ompl::base::State *> &owned);
+
+    /** \brief Free the states of \e owned with \e si and empty it. */
+    void freeStates(const ompl::base::SpaceInformation &si, std::vector<ompl::base::State *> &owned);
+
+    /** \brief A cost as a progress property value (17 significant digits, "inf" when none). */
+    std::string formatCost(double cost);
+} // namespace mhplan
+
+#endif

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the machinery every population-based planner shares (docs/algorithms.md 1.1-1.2): parameters, the
+   waypoint encoding, fitness, evaluation counting, best-so-far tracking, progress properties, termination
+   checks and solution reporting. An algorithm only writes its initialisation and its update rules. */
+#ifndef MHPLAN_POPULATION_PLANNER_H
+#define MHPLAN_POPULATION_PLANNER_H
+
+#include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PathEncoding.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    class PathOperators;
+
+    /** \brief Throws std::invalid_argument "parameter 'name' must be in [lo, hi]; got value" unless
+        lo <= value <= hi (shared by every planner's setters). */
+    void checkParameterRange(const char *param, double value, double lo, double hi);
+
+    /** \brief Defaults a concrete planner passes to PopulationPlanner. */
+    struct PopulationDefaults
+    {
+        unsigned int populationSize{30};
+        /** \brief Length T of the coefficient schedules (the papers' iteration budget). */
+        unsigned int iterations{30};
+        unsigned int waypoints{3};
+        PathDecoding decoding{PathDecoding::Polyline};
+    };
+
+    /** \brief Base class of mhplan's metaheuristic planners.
+
+        Problem: any ompl::base::RealVectorStateSpace of dimension k >= 1 with finite bounds (the planar
+        worlds are k = 2), with the user's own validity checker and motion validator; start and goal from
+        the problem definition (the first start state, one goal sample). A candidate is the waypoint vector
+        of docs/algorithms.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
+        coordinate bounded by the space's bounds on it (see WaypointDecoder; the spline decoding splines
+        each coordinate against t, in any dimension), or any list of points (evaluatePath(), used by the
+        GA); its fitness is a PathFitness ([LRSMA] S or [GMS] f1/f2, parameter \c fitness; \c auto picks
+        [GMS] on grid worlds and [LRSMA] otherwise; see PathFitness for what the penalty measures with a
+        checker that computes no clearance). The base class tracks, independently of the algorithm, the best
+        feasible path ever evaluated by the problem's optimization objective (the reported cost; path length
+        by default) and the best infeasible one by fitness.
+
+        Unsupported problems are refused by setup(), which throws ompl::Exception with a message naming the
+        planner and what it needs (a RealVectorStateSpace with finite bounds; a concrete planner may add its
+        own needs, e.g. the GA's planar encoding) and leaves the planner not set up; solve() calls setup()
+        through checkValidity(), so it throws the same exception. The message is also logged with OMPL_ERROR.
+        (OMPL itself throws ompl::Exception from setup() for missing prerequisites, e.g. a missing projection
+        or validity checker; an exception cannot be overlooked the way a status code can.)
+
+        solve(): a first call draws and evaluates the initial population; each call then runs iterations
+        until the termination condition holds or \c max_iterations further iterations (0 = no limit) are
+        done, so a second call continues the search; clear() forgets everything. The termination condition
+        is tested before every fitness evaluation (stopRequested()); an interrupted iteration is discarded,
+        its evaluations still count. The coefficient schedules use t = 1..T with T = \c iterations; runs
+        longer than T restart the schedule (t cycles; mhplan's choice, the papers stop at T).
+
+        Reports an exact solution when the best path passes the motion validator on every segment, else an
+        approximate one (the path of best fitness; its difference is the collision violation). The
+        intermediate-solution callback fires on each improvement of the best feasible path. Progress
+        properties \c best \c cost (of the best feasible path, infinity before one exists), \c iterations
+        and \c fitness \c evaluations are atomics, safe to read from the benchmark's sampling thread.
+
+        Randomness comes only from the member ompl::RNG (seeded from OMPL's global seed at construction, or
+        from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation.
+
+        Switchable [GMS] operators (docs/algorithms.md 1.5; all off by default, and then no operator code
+        runs and no random number is drawn, so the faithful algorithms are bit-identical to their papers'
+        versions):
+        \c gms_repair (0/1: node repair + line-segment repair), \c gms_revise (0/1), \c gms_simplify (0/1),
+        \c gms_improve (0/1: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
+        ([0, 1], 0 = off). They act on the fixed-length waypoint encoding as follows, after every completed
+        iteration of the algorithm:
+        - for the iteration's best individual (scope "best") or for every individual (scope "all"): decode
+          it (the polyline start, waypoints, goal; with the spline decoding, the polyline through the spline
+          samples), apply the switched-on operators in the GA's order (repair, revision, simplification,
+          node improvement) to that list of points, re-encode it into m waypoints and evaluate it with the
+          normal fitness (one counted evaluation). Re-encoding: when the operated polyline has c <= m interior
+          points they are kept and m - c points are added by halving the longest segment repeatedly (with
+          the polyline decoding this is the same geometric path); when c > m, m points at equal arc length
+          along it. The result replaces the individual only when its fitness is strictly better (greedy),
+          so the algorithm's own dynamics are untouched apart from better individuals;
+        - replacement: the ceil(fraction N) worst individuals (never the best one) are redrawn uniformly in
+          the bounds (node-repaired first when \c gms_repair is on) and evaluated.
+        The algorithm is then told (populationChanged()) so that it refreshes its elite / ranking. The
+        termination condition is tested before every evaluation of this step; when it fires the step stops
+        there (what was already accepted stays; the iteration counts as completed). Only algorithms that
+        expose their population (populationView(): SMA, LRSMA, MGO) support the switches, and only in the
+        plane (the operators are planar, see PathOperators): setup() refuses the switches otherwise, naming
+        the parameter. Buffers: the operated point list, the re-encoded candidate and the ranking are members
+        reserved once; the operators' inserts into the point list may grow it the first time only. */
+    class PopulationPlanner : public ompl::base::Planner
+    {
+      public:
+        PopulationPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
+                          const PopulationDefaults &defaults);
+        ~PopulationPlanner() override;
+
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void clear() override;
+        void setup() override;
+        /** \brief The reported path (best feasible, else best infeasible) as a chain of vertices from a start
+            to a goal vertex; the states belong to the planner until clear() or its destruction. */
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        /** \brief Population size N (2..10000). */
+        void setPopulationSize(unsigned int n);
+        unsigned int getPopulationSize() const { return populationSize_; }
+        /** \brief Schedule length T of the algorithm's coefficients (1..1000000). */
+        void setIterations(unsigned int t);
+        unsigned int getIterations() const { return iterations_; }
+        /** \brief Iterations per solve() call, 0 = until the termination condition (0..1000000). */
+        void setMaxIterations(unsigned int n);
+        unsigned int getMaxIterations() const { return maxIterations_; }
+        /** \brief Number m of intermediate waypoints (1..100). */
+        void setWaypoints(unsigned int m);
+        unsigned int getWaypoints() const { return waypoints_; }
+        /** \brief "polyline" or "spline". */
+        void setDecoding(const std::string &decoding);
+        std::string getDecoding() const { return toString(decoding_); }
+        /** \brief Number n of interpolation points (2..100000). */
+        void setSplineSamples(unsigned int n);
+        unsigned int getSplineSamples() const { return splineSamples_; }
+        /** \brief "auto", "lrsma" or "gms". */
+        void setFitness(const std::string &fitness);
+        std::string getFitness() const { return fitnessName_; }
+        /** \brief eta1 of [LRSMA] (0..1e6). */
+        void setLengthWeight(double w);
+        double getLengthWeight() const { return weights_.lengthWeight; }
+        /** \brief eta2 of [LRSMA] (0..1e9). */
+        void setPenaltyWeight(double w);
+        double getPenaltyWeight() const { return weights_.penaltyWeight; }
+        /** \brief w_d of [GMS] (0..1e6). */
+        void setDistanceWeight(double w);
+        double getDistanceWeight() const { return weights_.distanceWeight; }
+        /** \brief w_s of [GMS] (0..1e6). */
+        void setSafetyWeight(double w);
+        double getSafetyWeight() const { return weights_.safetyWeight; }
+        /** \brief w_sm of [GMS] (0..1e6). */
+        void setSmoothnessWeight(double w);
+        double getSmoothnessWeight() const { return weights_.smoothnessWeight; }
+        /** \brief d_safe of [GMS] (1e-6..1e6). */
+        void setSafeDistance(double d);
+        double getSafeDistance() const { return weights_.safeDistance; }
+        /** \brief w_l of [GMS] (0..1e6). */
+        void setInfeasibleLengthWeight(double w);
+        double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
+        /** \brief w_c of [GMS] (0..1e6). */
+        void setCrossingWeight(double w);
+        double getCrossingWeight() const { return weights_.crossingWeight; }
+        /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
+        void setSeed(unsigned long seed);
+        unsigned long getSeed() const { return seed_; }
+
+        /** \brief [GMS] node repair + line-segment repair on the operated individuals (0 = off, 1 = on). */
+        void setGmsRepair(unsigned int on);
+        unsigned int getGmsRepair() const { return gmsRepair_ ? 1u : 0u; }
+        /** \brief [GMS] revision (removal of repeated nodes and loops) (0 = off, 1 = on). */
+        void setGmsRevise(unsigned int on);
+        unsigned int getGmsRevise() const { return gmsRevise_ ? 1u : 0u; }
+        /** \brief [GMS] simplification (0 = off, 1 = on). */
+        void setGmsSimplify(unsigned int on);
+        unsigned int getGmsSimplify() const { return gmsSimplify_ ? 1u : 0u; }
+        /** \brief [GMS] node improvement (0 = off, 1 = on). */
+        void setGmsImprove(unsigned int on);
+        unsigned int getGmsImprove() const { return gmsImprove_ ? 1u : 0u; }
+        /** \brief Which individuals the path operators act on: "best" (the iteration's best) or "all". */
+        void setGmsScope(const std::string &scope);
+        std::string getGmsScope() const { return gmsScopeAll_ ? "all" : "best"; }
+        /** \brief [GMS] replacement: fraction of the population (the worst) redrawn each iteration (0..1,
+            0 = off). */
+        void setGmsReplaceFraction(double f);
+        double getGmsReplaceFraction() const { return gmsReplaceFraction_; }
+        /** \brief True when any [GMS] operator switch is on. */
+        bool gmsOperatorsEnabled() const
+        {
+            return gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ || gmsReplaceFraction_ > 0.0;
+        }
+
+        /** \brief Objective cost of the best feasible path (infinity before one exists). */
+        double bestCost() const { return bestCostValue_.load(); }
+        /** \brief Completed iterations since the last clear(). */
+        unsigned long iterationCount() const { return iterationCount_.load(); }
+        /** \brief Fitness evaluations since the last clear(). */
+        unsigned long evaluationCount() const { return evaluationCount_.load(); }
+        /** \brief The fitness actually in use (after resolving "auto"); valid after the first solve(). */
+        FitnessKind fitnessKind() const { return fitness_ ? fitness_->kind() : FitnessKind::LengthPenalty; }
+        /** \brief How the [LRSMA] penalty measures a sample point (see PathFitness); valid after the first
+            solve(). */
+        PenaltyMode penaltyMode() const
+        {
+            return fitness_ ? fitness_->penaltyMode() : PenaltyMode::Clearance;
+        }
+
+      protected:
+        /** \brief Draw and evaluate the initial population; false when interrupted (it is redrawn next call).
+         */
+        virtual bool initialisePopulation() = 0;
+        /** \brief One iteration with schedule index t in 1..T; false when interrupted. */
+        virtual bool iterate(unsigned int t) = 0;
+        /** \brief Forget the algorithm's state (called by clear()). */
+        virtual void clearPopulation() = 0;
+
+        /** \brief The population for the [GMS] operators: \e x = N rows of dimension() values, \e fitness =
+            their N fitness values, both writable; false (the default) when the algorithm does not expose
+            one, and then setup() refuses the gms_* switches. Called only after initialisePopulation(). */
+        virtual bool populationView(double *&x, double *&fitness)
+        {
+            x = fitness = nullptr;
+            return false;
+        }
+        /** \brief True when the algorithm implements populationView() (checked by setup()). */
+        virtual bool supportsGmsOperators() const { return false; }
+        /** \brief Called after the [GMS] operators changed individuals of populationView() (refresh the
+           elite, the ranking). */
+        virtual void populationChanged() {}
+
+        /** \brief True when the current solve() must stop (tests the termination condition). */
+        bool stopRequested() const { return ptc_ == nullptr || (*ptc_)(); }
+
+        /** \brief Decode and evaluate a waypoint vector (dimension() values); updates counts and bests. */
+        double evaluate(const double *x);
+        /** \brief Evaluate an explicit planar path (start ... goal; k = 2 only); updates counts and bests. */
+        double evaluatePath(const std::vector<Vec2> &path);
+        /** \brief Evaluate an explicit path of spaceDimension() coordinates per point (start ... goal);
+            updates counts and bests. */
+        double evaluatePoints(const PointsView &path);
+
+        /** \brief Uniform random waypoint vector in the bounds. */
+        void randomPosition(double *x);
+        /** \brief Clamp every coordinate to the bounds (docs/algorithms.md 1.1). */
+        void clampToBounds(double *x) const;
+
+        /** \brief m k: the waypoints times the state space's dimension. */
+        unsigned int dimension() const { return spaceDim_ * waypoints_; }
+        /** \brief k, the dimension of the RealVectorStateSpace (2 until known). */
+        unsigned int spaceDimension() const { return spaceDim_; }
+        /** \brief Lower bound of candidate coordinate j (the space's bound on coordinate j mod k). */
+        double lower(unsigned int j) const { return lower_[j % spaceDim_]; }
+        /** \brief Upper bound of candidate coordinate j. */
+        double upper(unsigned int j) const { return upper_[j % spaceDim_]; }
+        /** \brief First two coordinates of the start (the planar start). */
+        const Vec2 &startPoint() const { return start_; }
+        /** \brief First two coordinates of the goal (the planar goal). */
+        const Vec2 &goalPoint() const { return goal_; }
+        /** \brief The start's k coordinates (valid once solve() has prepared the problem). */
+        const double *startCoordinates() const { return startX_.data(); }
+        /** \brief The goal's k coordinates. */
+        const double *goalCoordinates() const { return goalX_.data(); }
+        PathFitness &fitness() { return *fitness_; }
+
+        /** \brief Leave the planner not set up, log \e message with OMPL_ERROR (prefixed with the planner's
+            name) and throw ompl::Exception with the same text: how setup() refuses a problem. */
+        [[noreturn]] void refuseSetup(const std::string &message);
+
+        /** \brief Mark the structure (population size, dimension, decoding) changed: clear() on next solve.
+         */
+        void invalidate();
+
+        ompl::RNG rng_;
+
+      private:
+        /** \brief Read the space's dimension and bounds; refuseSetup() when they are unsupported. */
+        void checkSpace();
+        bool prepareProblem();
+        void record(const FitnessResult &r, const PointsView &path);
+        /** \brief Write point \e i of \e points into \e state. */
+        void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
+        void reportSolution(bool &exact, bool &approximate);
+        void fireIntermediate();
+        /** \brief The [GMS] operator step after an iteration (see the class doc); false when interrupted. */
+        bool applyGmsOperators();
+        /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */
+        bool operateOn(double *x, double &fx);
+        /** \brief Re-encode gmsPath_ into m waypoints in gmsCandidate_. */
+        void encodePath();
+        /** \brief setup()'s check of the gms_* switches (refuseSetup() naming the parameter). */
+        void checkGmsSwitches();
+
+        unsigned int populationSize_;
+        unsigned int iterations_;
+        unsigned int maxIterations_{0};
+        unsigned int waypoints_;
+        PathDecoding decoding_;
+        unsigned int splineSamples_{100};
+        std::string fitnessName_{"auto"};
+        FitnessWeights weights_;
+        unsigned long seed_{0};
+
+        const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
+        bool problemReady_{false};
+        bool initialised_{false};
+        unsigned int spaceDim_{2};
+        Vec2 start_, goal_;
+        std::vector<double> startX_, goalX_;
+        std::vector<double> lower_{0.0, 0.0};
+        std::vector<double> upper_{0.0, 0.0};
+        WaypointDecoder decoder_;
+        std::unique_ptr<PathFitness> fitness_;
+        /** \brief State buffers for the objective's motion costs. */
+        ompl::base::State *costA_{nullptr};
+        ompl::base::State *costB_{nullptr};
+
+        bool haveFeasible_{false};
+        ompl::base::Cost bestFeasibleCost_;
+        /** \brief Best paths as flat point lists (k values per point). */
+        std::vector<double> bestFeasiblePath_;
+        bool haveInfeasible_{false};
+        double bestInfeasibleFitness_{0.0};
+        double bestInfeasibleViolation_{0.0};
+        std::vector<double> bestInfeasiblePath_;
+        /** \brief Reused buffer of evaluatePath(). */
+        std::vector<double> planarPath_;
+        /** \brief States handed to PlannerData by getPlannerData(), freed by clear(). */
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
+        bool improved_{false};
+
+        bool gmsRepair_{false}, gmsRevise_{false}, gmsSimplify_{false}, gmsImprove_{false};
+        bool gmsScopeAll_{false};
+        double gmsReplaceFraction_{0.0};
+        std::unique_ptr<PathOperators> gmsOps_;
+        std::vector<Vec2> gmsPath_;
+        std::vector<double> gmsCandidate_;
+        std::vector<unsigned int> gmsOrder_;
+
+        std::atomic<double> bestCostValue_;
+        std::atomic<unsigned long> iterationCount_{0};
+        std::atomic<unsigned long> evaluationCount_{0};
+    };
+} // namespace mhplan
+
+#endif

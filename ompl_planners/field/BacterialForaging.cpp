@@ -1,0 +1,647 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/planners/field/BacterialForaging.h"
+
+#include "mhplan/collision/Validity.h"
+
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/String.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+    } // namespace
+
+    BacterialForaging::BacterialForaging(const ob::SpaceInformationPtr &si, bool adaptiveTumble)
+        : PopulationPlanner(si, adaptiveTumble ? "ATBFO" : "BFO",
+                            PopulationDefaults{100, 30, 3, PathDecoding::Polyline}),
+          adaptiveTumble_(adaptiveTumble), onlineBestCost_(kInf)
+    {
+        // BFO has no coefficient schedule: the base's schedule length T does not apply.
+        params().remove("iterations");
+        declareBfoParams();
+        updateSpecs();
+
+        // Replace the base's progress properties by mode-aware ones (same names).
+        addPlannerProgressProperty("best cost REAL", [this]
+                                   { return formatCost((online_ ? onlineBestCost_.load() : bestCost())); });
+        addPlannerProgressProperty(
+            "iterations INTEGER",
+            [this] { return std::to_string(online_ ? onlineSteps_.load() : iterationCount()); });
+        addPlannerProgressProperty(
+            "fitness evaluations INTEGER",
+            [this] { return std::to_string(online_ ? onlineEvaluations_.load() : evaluationCount()); });
+    }
+
+    BacterialForaging::~BacterialForaging()
+    {
+        if (stateA_ != nullptr)
+            si_->freeState(stateA_);
+        if (stateB_ != nullptr)
+            si_->freeState(stateB_);
+        freeStates(*si_, plannerDataStates_);
+    }
+
+    void BacterialForaging::declareBfoParams()
+    {
+        using BF = BacterialForaging;
+        declareParam<std::string>("mode", this, &BF::setMode, &BF::getMode, "online,global");
+        declareParam<unsigned int>("chemotactic_steps", this, &BF::setChemotacticSteps,
+                                   &BF::getChemotacticSteps, "1:1:100000");
+        declareParam<unsigned int>("swim_length", this, &BF::setSwimLength, &BF::getSwimLength, "0:1:100000");
+        declareParam<unsigned int>("reproduction_steps", this, &BF::setReproductionSteps,
+                                   &BF::getReproductionSteps, "1:1:100000");
+        declareParam<unsigned int>("elimination_events", this, &BF::setEliminationEvents,
+                                   &BF::getEliminationEvents, "1:1:100000");
+        declareParam<double>("elimination_probability", this, &BF::setEliminationProbability,
+                             &BF::getEliminationProbability, "0.:0.01:1.");
+        declareParam<double>("step_size", this, &BF::setStepSize, &BF::getStepSize, "0.000001:0.01:1000.");
+        declareParam<bool>("adaptive_tumble", this, &BF::setAdaptiveTumble, &BF::getAdaptiveTumble, "0,1");
+        declareParam<unsigned int>("improvement_threshold", this, &BF::setImprovementThreshold,
+                                   &BF::getImprovementThreshold, "0:1:100000");
+        declareParam<bool>("cell_to_cell", this, &BF::setCellToCell, &BF::getCellToCell, "0,1");
+        declareParam<double>("attract_depth", this, &BF::setAttractDepth, &BF::getAttractDepth,
+                             "0.:0.01:1000000.");
+        declareParam<double>("attract_width", this, &BF::setAttractWidth, &BF::getAttractWidth,
+                             "0.:0.01:1000000.");
+        declareParam<double>("repel_height", this, &BF::setRepelHeight, &BF::getRepelHeight,
+                             "0.:0.01:1000000.");
+        declareParam<double>("repel_width", this, &BF::setRepelWidth, &BF::getRepelWidth, "0.:0.01:1000000.");
+        declareFieldParams(params_);
+        declareParam<double>("robot_step", this, &BF::setRobotStep, &BF::getRobotStep,
+                             "0.000001:0.01:1000000.");
+        declareParam<double>("goal_tolerance", this, &BF::setGoalTolerance, &BF::getGoalTolerance,
+                             "0.:0.01:1000000.");
+        declareParam<double>("sector_angle", this, &BF::setSectorAngle, &BF::getSectorAngle, "0.:1.:180.");
+        declareParam<unsigned int>("max_steps", this, &BF::setMaxSteps, &BF::getMaxSteps, "1:1:10000000");
+    }
+
+    void BacterialForaging::updateSpecs()
+    {
+        specs_.approximateSolutions = true;
+        specs_.optimizingPaths = !online_;
+        specs_.canReportIntermediateSolutions = !online_;
+        specs_.multithreaded = false;
+        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
+    }
+
+    // ---------------------------------------------------------------------------------------------------
+    // Parameters
+
+    void BacterialForaging::setMode(const std::string &mode)
+    {
+        if (mode != "online" && mode != "global")
+            throw std::invalid_argument("parameter 'mode' must be one of {online, global}; got '" + mode +
+                                        "'");
+        const bool online = mode == "online";
+        if (online != online_)
+        {
+            clear();
+            online_ = online;
+            updateSpecs();
+        }
+    }
+
+    void BacterialForaging::setChemotacticSteps(unsigned int n)
+    {
+        checkParameterRange("chemotactic_steps", n, 1, 100000);
+        chemotacticSteps_ = n;
+    }
+
+    void BacterialForaging::setSwimLength(unsigned int n)
+    {
+        checkParameterRange("swim_length", n, 0, 100000);
+        swimLength_ = n;
+    }
+
+    void BacterialForaging::setReproductionSteps(unsigned int n)
+    {
+        checkParameterRange("reproduction_steps", n, 1, 100000);
+        reproductionSteps_ = n;
+    }
+
+    void BacterialForaging::setEliminationEvents(unsigned int n)
+    {
+        checkParameterRange("elimination_events", n, 1, 100000);
+        eliminationEvents_ = n;
+    }
+
+    void BacterialForaging::setEliminationProbability(double p)
+    {
+        checkParameterRange("elimination_probability", p, 0.0, 1.0);
+        eliminationProbability_ = p;
+    }
+
+    void BacterialForaging::setStepSize(double c)
+    {
+        checkParameterRange("step_size", c, 1e-6, 1000.0);
+        stepSize_ = c;
+    }
+
+    void BacterialForaging::setImprovementThreshold(unsigned int f)
+    {
+        checkParameterRange("improvement_threshold", f, 0, 100000);
+        improvementThreshold_ = f;
+    }
+
+    void BacterialForaging::setAttractDepth(double v)
+    {
+        checkParameterRange("attract_depth", v, 0.0, 1e6);
+        attractDepth_ = v;
+    }
+
+    void BacterialForaging::setAttractWidth(double v)
+    {
+        checkParameterRange("attract_width", v, 0.0, 1e6);
+        attractWidth_ = v;
+    }
+
+    void BacterialForaging::setRepelHeight(double v)
+    {
+        checkParameterRange("repel_height", v, 0.0, 1e6);
+        repelHeight_ = v;
+    }
+
+    void BacterialForaging::setRepelWidth(double v)
+    {
+        checkParameterRange("repel_width", v, 0.0, 1e6);
+        repelWidth_ = v;
+    }
+
+    void BacterialForaging::fieldChanged()
+    {
+        if (onlineReady_)
+            clear();
+    }
+
+    void BacterialForaging::setRobotStep(double v)
+    {
+        checkParameterRange("robot_step", v, 1e-6, 1e6);
+        robotStep_ = v;
+    }
+
+    void BacterialForaging::setGoalTolerance(double v)
+    {
+        checkParameterRange("goal_tolerance", v, 0.0, 1e6);
+        goalTolerance_ = v;
+    }
+
+    void BacterialForaging::setSectorAngle(double deg)
+    {
+        checkParameterRange("sector_angle", deg, 0.0, 180.0);
+        sectorAngle_ = deg;
+    }
+
+    void BacterialForaging::setMaxSteps(unsigned int n)
+    {
+        checkParameterRange("max_steps", n, 1, 10000000);
+        maxSteps_ = n;
+    }
+
+    // ---------------------------------------------------------------------------------------------------
+    // Planner interface
+
+    void BacterialForaging::setup()
+    {
+        PopulationPlanner::setup();
+        if (online_)
+            PotentialField::requireClearance(*si_, getName());
+    }
+
+    void BacterialForaging::clear()
+    {
+        PopulationPlanner::clear(); // calls clearPopulation()
+        freeStates(*si_, plannerDataStates_);
+        onlineReady_ = false;
+        runActive_ = false;
+        walk_.clear();
+        walkState_ = WalkState::Walking;
+        runBestKnown_ = false;
+        onlineBestCost_ = kInf;
+        onlineSteps_ = 0;
+        onlineEvaluations_ = 0;
+    }
+
+    ob::PlannerStatus BacterialForaging::solve(const ob::PlannerTerminationCondition &ptc)
+    {
+        if (online_)
+            return solveOnline(ptc);
+        return PopulationPlanner::solve(ptc);
+    }
+
+    void BacterialForaging::getPlannerData(ob::PlannerData &data) const
+    {
+        if (!online_)
+        {
+            PopulationPlanner::getPlannerData(data);
+            return;
+        }
+        ob::Planner::getPlannerData(data);
+        addPathToPlannerData(
+            *si_, walk_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, walk_[i]); },
+            walkState_ == WalkState::ReachedGoal, data, plannerDataStates_);
+    }
+
+    bool BacterialForaging::halt() const
+    {
+        if (online_)
+            return onlinePtc_ == nullptr || (*onlinePtc_)();
+        return stopRequested();
+    }
+
+    // ---------------------------------------------------------------------------------------------------
+    // The colony (6.1, 6.2), shared by both modes
+
+    void BacterialForaging::startColony(unsigned int d)
+    {
+        dim_ = d;
+        colony_ = getPopulationSize();
+        const std::size_t n = std::size_t(colony_) * dim_;
+        x_.assign(n, 0.0);
+        dir_.assign(n, 0.0);
+        scratchX_.assign(n, 0.0);
+        scratchDir_.assign(n, 0.0);
+        trial_.assign(dim_, 0.0);
+        cost_.assign(colony_, kInf);
+        scratchCost_.assign(colony_, kInf);
+        health_.assign(colony_, 0.0);
+        known_.assign(colony_, 0);
+        keep_.assign(colony_, 0);
+        scratchKnown_.assign(colony_, 0);
+        scratchKeep_.assign(colony_, 0);
+        order_.resize(colony_);
+        for (unsigned int i = 0; i < colony_; ++i)
+            randomBacterium(row(x_, i));
+        cursor_ = chemo_ = repro_ = elim_ = 0;
+        colonyReady_ = true;
+    }
+
+    void BacterialForaging::randomDirection(double *phi)
+    {
+        double n2 = 0.0;
+        while (n2 < 1e-24)
+        {
+            n2 = 0.0;
+            for (unsigned int j = 0; j < dim_; ++j)
+            {
+                phi[j] = rng_.uniformReal(-1.0, 1.0);
+                n2 += phi[j] * phi[j];
+            }
+        }
+        const double inv = 1.0 / std::sqrt(n2);
+        for (unsigned int j = 0; j < dim_; ++j)
+            phi[j] *= inv;
+    }
+
+    void BacterialForaging::randomBacterium(double *x)
+    {
+        if (!online_)
+        {
+            randomPosition(x);
+            return;
+        }
+        const Vec2 toGoal = goal_ - robot_;
+        const double heading = squaredNorm(toGoal) > 0.0 ? std::atan2(toGoal.y, toGoal.x) : 0.0;
+        const double half = sectorAngle_ * kPi / 180.0;
+        const double angle = heading + rng_.uniformReal(-half, half);
+        // Uniform by area in the sector.
+        const double r = field_.sensingRange * std::sqrt(rng_.uniform01());
+        x[0] = robot_.x + r * std::cos(angle);
+        x[1] = robot_.y + r * std::sin(angle);
+        constrain(x);
+    }
+
+    void BacterialForaging::constrain(double *x) const
+    {
+        if (!online_)
+        {
+            clampToBounds(x);
+            return;
+        }
+        const double dx = x[0] - robot_.x, dy = x[1] - robot_.y;
+        const double d = std::hypot(dx, dy);
+        if (d > field_.sensingRange)
+        {
+            const double s = field_.sensingRange / d;
+            x[0] = robot_.x + dx * s;
+            x[1] = robot_.y + dy * s;
+        }
+        const auto &b = si_->getStateSpace()->as<ob::RealVectorStateSpace>()->getBounds();
+        x[0] = std::min(std::max(x[0], b.low[0]), b.high[0]);
+        x[1] = std::min(std::max(x[1], b.low[1]), b.high[1]);
+    }
+
+    double BacterialForaging::rawCost(const double *x)
+    {
+        if (!online_)
+            return evaluate(x);
+        const Vec2 p(x[0], x[1]);
+        double j = potential_->cost(p);
+        // What the robot cannot see (behind an obstacle) it does not sense: +infinity.
+        if (j < kInf && !potential_->segmentFree(robot_, p))
+            j = kInf;
+        if (j < kInf && (!runBestKnown_ || j < runBestCost_))
+        {
+            runBestKnown_ = true;
+            runBestCost_ = j;
+            runBest_ = p;
+        }
+        return j;
+    }
+
+    double BacterialForaging::cellToCell(const double *x, unsigned int self) const
+    {
+        if (!cellToCell_)
+            return 0.0;
+        double sum = 0.0;
+        for (unsigned int k = 0; k < colony_; ++k)
+        {
+            if (k == self)
+                continue;
+            const double *y = row(x_, k);
+            double d2 = 0.0;
+            for (unsigned int j = 0; j < dim_; ++j)
+                d2 += (x[j] - y[j]) * (x[j] - y[j]);
+            sum +=
+                -attractDepth_ * std::exp(-attractWidth_ * d2) + repelHeight_ * std::exp(-repelWidth_ * d2);
+        }
+        return sum;
+    }
+
+    bool BacterialForaging::moveBacterium(unsigned int i)
+    {
+        double *xi = row(x_, i);
+        if (!known_[i])
+        {
+            if (halt())
+                return false;
+            cost_[i] = rawCost(xi);
+            known_[i] = 1;
+        }
+        double jLast = cost_[i] + cellToCell(xi, i);
+        double *phi = row(dir_, i);
+        if (!(adaptiveTumble_ && keep_[i]))
+            randomDirection(phi);
+
+        // Tumble: one unconditional step along phi.
+        for (unsigned int j = 0; j < dim_; ++j)
+            trial_[j] = xi[j] + stepSize_ * phi[j];
+        constrain(trial_.data());
+        if (halt())
+            return false;
+        double raw = rawCost(trial_.data());
+        double jNow = raw + cellToCell(trial_.data(), i);
+        std::copy(trial_.begin(), trial_.end(), xi);
+        cost_[i] = raw;
+
+        // Swim while the last move improved J, at most Ns further moves.
+        unsigned int improvements = 0, swims = 0;
+        while (jNow < jLast)
+        {
+            ++improvements;
+            jLast = jNow;
+            if (swims == swimLength_ || halt())
+                break;
+            ++swims;
+            for (unsigned int j = 0; j < dim_; ++j)
+                trial_[j] = xi[j] + stepSize_ * phi[j];
+            constrain(trial_.data());
+            raw = rawCost(trial_.data());
+            jNow = raw + cellToCell(trial_.data(), i);
+            std::copy(trial_.begin(), trial_.end(), xi);
+            cost_[i] = raw;
+        }
+        health_[i] += jNow;
+        keep_[i] = adaptiveTumble_ && improvements > improvementThreshold_ ? 1 : 0;
+        return true;
+    }
+
+    BacterialForaging::StepResult BacterialForaging::chemotacticStep()
+    {
+        while (cursor_ < colony_)
+        {
+            const bool done = moveBacterium(cursor_);
+            if (online_)
+                onlineEvaluations_ = potential_->evaluations();
+            if (!done)
+                return StepResult::Interrupted;
+            ++cursor_;
+        }
+        cursor_ = 0;
+        if (++chemo_ < chemotacticSteps_)
+            return StepResult::StepDone;
+        chemo_ = 0;
+        reproduce();
+        if (++repro_ < reproductionSteps_)
+            return StepResult::StepDone;
+        repro_ = 0;
+        disperse();
+        if (++elim_ < eliminationEvents_)
+            return StepResult::StepDone;
+        elim_ = 0;
+        return StepResult::RunComplete;
+    }
+
+    void BacterialForaging::reproduce()
+    {
+        std::iota(order_.begin(), order_.end(), 0u);
+        std::stable_sort(order_.begin(), order_.end(),
+                         [this](unsigned int a, unsigned int b) { return health_[a] < health_[b]; });
+        // The healthier half splits; for odd S the median bacterium survives without splitting.
+        const unsigned int split = colony_ / 2, survivors = colony_ - split;
+        for (unsigned int s = 0; s < colony_; ++s)
+        {
+            const unsigned int src = s < survivors ? order_[s] : order_[s - survivors];
+            std::copy_n(row(x_, src), dim_, row(scratchX_, s));
+            std::copy_n(row(dir_, src), dim_, row(scratchDir_, s));
+            scratchCost_[s] = cost_[src];
+            scratchKnown_[s] = known_[src];
+            scratchKeep_[s] = keep_[src];
+        }
+        x_.swap(scratchX_);
+        dir_.swap(scratchDir_);
+        cost_.swap(scratchCost_);
+        known_.swap(scratchKnown_);
+        keep_.swap(scratchKeep_);
+        std::fill(health_.begin(), health_.end(), 0.0);
+    }
+
+    void BacterialForaging::disperse()
+    {
+        for (unsigned int i = 0; i < colony_; ++i)
+            if (rng_.uniform01() < eliminationProbability_)
+            {
+                randomBacterium(row(x_, i));
+                known_[i] = 0;
+                keep_[i] = 0;
+            }
+    }
+
+    // ---------------------------------------------------------------------------------------------------
+    // Global mode (6.4): the PopulationPlanner hooks
+
+    bool BacterialForaging::initialisePopulation()
+    {
+        startColony(dimension());
+        for (unsigned int i = 0; i < colony_; ++i)
+        {
+            if (stopRequested())
+                return false;
+            cost_[i] = rawCost(row(x_, i));
+            known_[i] = 1;
+        }
+        return true;
+    }
+
+    bool BacterialForaging::iterate(unsigned int /*t*/)
+    {
+        return chemotacticStep() != StepResult::Interrupted;
+    }
+
+    void BacterialForaging::clearPopulation()
+    {
+        colonyReady_ = false;
+        cursor_ = chemo_ = repro_ = elim_ = 0;
+        colony_ = 0;
+    }
+
+    // ---------------------------------------------------------------------------------------------------
+    // Online mode (6.3)
+
+    bool BacterialForaging::prepareOnline()
+    {
+        if (!walkEndpoints(pis_, getName(), robot_, goal_))
+            return false;
+        seedUsed_ = getSeed();
+        if (seedUsed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seedUsed_));
+        if (!potential_)
+            potential_ = std::make_unique<PotentialField>(si_);
+        potential_->configure(field_, repulsion_, getName());
+        potential_->setGoal(goal_);
+        if (stateA_ == nullptr)
+        {
+            stateA_ = si_->allocState();
+            stateB_ = si_->allocState();
+        }
+        walk_.clear();
+        walk_.reserve(std::min<std::size_t>(maxSteps_, 4096) + 2);
+        walk_.push_back(robot_);
+        walkState_ = WalkState::Walking;
+        runActive_ = false;
+        onlineReady_ = true;
+        OMPL_INFORM(
+            "%s: online, seed %lu, S = %u, Nc = %u, Ns = %u, Nre = %u, Ned = %u, C = %g, lambda = %g, "
+            "%s repulsion%s",
+            getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), getPopulationSize(),
+            chemotacticSteps_, swimLength_, reproductionSteps_, eliminationEvents_, stepSize_, robotStep_,
+            toString(potential_->usedMode()).c_str(), adaptiveTumble_ ? ", adaptive tumble" : "");
+        finishWalkIfAtGoal();
+        return true;
+    }
+
+    void BacterialForaging::finishWalkIfAtGoal()
+    {
+        const double tolerance = goalTolerance_ > 0.0 ? goalTolerance_ : robotStep_;
+        if (!walkReachGoal(*si_, stateA_, stateB_, walk_, goal_, tolerance))
+            return; // keep walking
+        robot_ = walk_.back();
+        walkState_ = WalkState::ReachedGoal;
+    }
+
+    void BacterialForaging::moveRobot()
+    {
+        Vec2 heading = (runBestKnown_ ? runBest_ : goal_) - robot_;
+        if (squaredNorm(heading) < 1e-24)
+            heading = goal_ - robot_;
+        const double phi = std::atan2(heading.y, heading.x);
+        double step = robotStep_;
+        setStatePosition(stateA_, robot_);
+        bool moved = false;
+        for (int attempt = 0; attempt <= 3 && !moved; ++attempt, step *= 0.5)
+        {
+            const Vec2 next(robot_.x + step * std::cos(phi), robot_.y + step * std::sin(phi));
+            setStatePosition(stateB_, next);
+            if (si_->satisfiesBounds(stateB_) && si_->checkMotion(stateA_, stateB_))
+            {
+                robot_ = next;
+                walk_.push_back(next);
+                moved = true;
+            }
+        }
+        ++onlineSteps_;
+        if (!moved)
+        {
+            walkState_ = WalkState::Failed;
+            OMPL_INFORM(
+                "%s: the step toward (%g, %g) stays invalid after 3 halvings: the walk stops at (%g, %g)",
+                getName().c_str(), runBest_.x, runBest_.y, robot_.x, robot_.y);
+            return;
+        }
+        finishWalkIfAtGoal();
+        if (walkState_ == WalkState::Walking && walk_.size() - 1 >= maxSteps_)
+        {
+            walkState_ = WalkState::BudgetSpent;
+            OMPL_INFORM("%s: step budget of %u spent", getName().c_str(), maxSteps_);
+        }
+    }
+
+    ob::PlannerStatus BacterialForaging::solveOnline(const ob::PlannerTerminationCondition &ptc)
+    {
+        checkValidity();
+        if (onlineReady_ && getSeed() != seedUsed_)
+            clear(); // a new seed restarts the walk (PopulationPlanner::setSeed does the same)
+        if (!onlineReady_ && !prepareOnline())
+            return ob::PlannerStatus::INVALID_START;
+
+        onlinePtc_ = &ptc;
+        const unsigned int maxIterations = getMaxIterations();
+        unsigned int done = 0;
+        while (walkState_ == WalkState::Walking && !ptc() && (maxIterations == 0 || done < maxIterations))
+        {
+            if (!runActive_)
+            {
+                runBestKnown_ = false;
+                startColony(2);
+                runActive_ = true;
+            }
+            StepResult r = StepResult::StepDone;
+            while (r == StepResult::StepDone)
+                r = chemotacticStep();
+            if (r == StepResult::Interrupted)
+                break; // the run resumes at the same bacterium next time
+            runActive_ = false;
+            moveRobot();
+            ++done;
+        }
+        onlinePtc_ = nullptr;
+        return reportOnline();
+    }
+
+    ob::PlannerStatus BacterialForaging::reportOnline()
+    {
+        const ob::PlannerStatus status =
+            reportWalk(si_, pdef_, getName(), walk_, walkState_ != WalkState::Walking,
+                       walkState_ == WalkState::ReachedGoal, goal_, onlineBestCost_);
+        if (status == ob::PlannerStatus::TIMEOUT)
+            return status;
+        const bool exact = status == ob::PlannerStatus::EXACT_SOLUTION;
+        OMPL_INFORM("%s: %zu robot positions, %lu J evaluations, %s", getName().c_str(), walk_.size(),
+                    onlineEvaluations_.load(),
+                    exact ? "goal reached"
+                          : (walkState_ == WalkState::Walking ? "walking" : "walk ended before the goal"));
+        return status;
+    }
+} // namespace mhplan

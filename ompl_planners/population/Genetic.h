@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the [GMS] genetic algorithm as an OMPL planner. */
+#ifndef MHPLAN_GENETIC_H
+#define MHPLAN_GENETIC_H
+
+#include "mhplan/planners/common/Operators.h"
+#include "mhplan/planners/common/PopulationPlanner.h"
+
+#include <memory>
+#include <string>
+
+namespace mhplan
+{
+    /** \brief Genetic algorithm of [GMS] ("Using Mountain Gazelle and Slime Mould Algorithms to Solve the
+       Path Planning Problem", Adv. Defence Sci. & Technol., 2024; docs/algorithms.md 1.4, 1.5 and 2).
+
+        An individual is a variable-length list of points from start to goal (the continuous form of the
+        grid-node encoding, 1.4). Initial population: 1..\c waypoints random free points per individual, then
+        node repair, line-segment repair, revision and simplification. Each generation: elitism (the best
+        survives), tournament selection (size 2), with probability \c crossover_rate one-point crossover at
+        an interior node common to both parents, else at random cut points; with probability
+        \c mutation_rate a mutation: insert a random free node (probability \c insert_delete_rate),
+        delete one (same probability), otherwise move a random interior node to a random free location;
+        then node repair, line-segment repair, revision, simplification, node improvement, evaluation with
+        the [GMS] f1/f2 (1.3), and replacement of the worst \c replace_fraction by fresh repaired random
+        individuals.
+
+        Choices where the spec leaves room:
+        - Defaults N = 50, G = 100 (parameter \c iterations, the generations per run with max_iterations),
+          crossover 0.8, mutation 0.1, insert/delete 0.05 each, tournament 2, replacement 10%,
+          \c waypoints = 5 initial random nodes at most; fitness [GMS] (parameter \c fitness may select S).
+        - Operators are the continuous versions of PathOperators (step 1% of the bounds' larger side);
+          node improvement is applied to every offspring that is feasible after repair (parameter
+          \c node_improvement). The validity checks inside the operators are not counted as fitness
+          evaluations; every evaluated individual is.
+        - \c decoding and \c spline_samples do not apply (paths are polylines through the nodes).
+        - Planar only: the [GMS] node encoding comes from grid maps and its operators (ring search for node
+          repair, the 8 compass moves of node improvement, the perpendicular bisector of segment repair) are
+          written for the plane; setup() refuses a RealVectorStateSpace of dimension other than 2 with
+          ompl::Exception (use SMA, LRSMA or MGO in R^k). */
+    class Genetic : public PopulationPlanner
+    {
+      public:
+        /** \brief \e name: "GA" (registry variants pass their own, e.g. "GA-WALK"). */
+        explicit Genetic(const ompl::base::SpaceInformationPtr &si, const std::string &name = "GA");
+        ~Genetic() override;
+
+        /** \brief PopulationPlanner::setup(), then refuse a space that is not 2-dimensional. */
+        void setup() override;
+
+        /** \brief Crossover probability (0..1). */
+        void setCrossoverRate(double r);
+        double getCrossoverRate() const { return crossoverRate_; }
+        /** \brief Mutation probability per offspring (0..1). */
+        void setMutationRate(double r);
+        double getMutationRate() const { return mutationRate_; }
+        /** \brief Probability of an insert (and of a delete) mutation (0..0.5). */
+        void setInsertDeleteRate(double r);
+        double getInsertDeleteRate() const { return insertDeleteRate_; }
+        /** \brief Tournament size (1..100). */
+        void setTournamentSize(unsigned int k);
+        unsigned int getTournamentSize() const { return tournamentSize_; }
+        /** \brief Share of the population replaced by fresh individuals each generation (0..1). */
+        void setReplaceFraction(double f);
+        double getReplaceFraction() const { return replaceFraction_; }
+        /** \brief How new individuals are drawn: "nodes" (the spec's random node sequences: 1..waypoints
+           random free points, then repaired; the default) or "walk" (a random collision-free lattice walk
+           from start to goal, PathOperators::randomLatticePath, simplified; falls back to "nodes" when the
+           walk does not reach the goal within 20000 steps). "walk" is the improved variant GA-WALK: not in
+           [GMS]. */
+        void setInitialisation(const std::string &mode);
+        std::string getInitialisation() const { return walk_ ? "walk" : "nodes"; }
+        /** \brief Apply node improvement to the offspring. */
+        void setNodeImprovement(bool on) { nodeImprovement_ = on; }
+        bool getNodeImprovement() const { return nodeImprovement_; }
+
+      protected:
+        bool initialisePopulation() override;
+        bool iterate(unsigned int t) override;
+        void clearPopulation() override;
+
+      private:
+        using Individual = std::vector<Vec2>;
+        void randomIndividual(Individual &ind);
+        void repair(Individual &ind, bool improve);
+        unsigned int tournament();
+        void crossover(const Individual &a, const Individual &b, Individual &c1, Individual &c2);
+        void mutate(Individual &ind);
+
+        double crossoverRate_{0.8};
+        double mutationRate_{0.1};
+        double insertDeleteRate_{0.05};
+        unsigned int tournamentSize_{2};
+        double replaceFraction_{0.1};
+        bool nodeImprovement_{true};
+        bool walk_{false};
+
+        std::unique_ptr<PathOperators> ops_;
+        std::vector<Individual> pop_, next_;
+        std::vector<double> fit_, nextFit_;
+        std::vector<unsigned int> order_;
+    };
+} // namespace mhplan
+
+#endif

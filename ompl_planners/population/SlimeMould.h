@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the Slime Mould Algorithm as an OMPL planner. */
+#ifndef MHPLAN_SLIME_MOULD_H
+#define MHPLAN_SLIME_MOULD_H
+
+#include "mhplan/planners/common/PopulationPlanner.h"
+
+namespace mhplan
+{
+    /** \brief Slime Mould Algorithm (SMA): Li, Chen, Wang, Heidari, Mirjalili, "Slime mould algorithm: A new
+        method for stochastic optimization", Future Generation Computer Systems 111:300-323, 2020, as used
+        for path planning by [GMS] and [LRSMA] section 3 (docs/algorithms.md section 4).
+
+        Each iteration: sort the population by fitness; weights W = 1 +- r log10((bF - S_i) / (bF - wF + eps)
+        + 1) (plus for the better half by rank, minus for the rest); a = arctanh(1 - t/T), b = 1 - t/T; each
+        slime mould is, with probability z, redrawn uniformly in the bounds, otherwise per coordinate j with
+        p = tanh|S_i - DF|: X_j = X_best_j + vb_j (W_ij X_A_j - X_B_j) when r < p (A, B drawn afresh for every
+        coordinate), else X_j = vc_j X_j; then clamp and evaluate (N evaluations per iteration).
+
+        Choices where the spec leaves room (stated here as docs/conventions.md asks):
+        - Defaults: N = 30, T = 30, z = 0.3 ([LRSMA] Table 2; the original paper's 0.03 is a parameter value),
+          m = 3 waypoints, polyline decoding (docs/algorithms.md 1.1), [LRSMA] fitness S on geometric
+          worlds and [GMS] f1/f2 on grid worlds (parameter \c fitness).
+        - The population is updated in place, as in the original code (later individuals read already
+          updated ones through X_A, X_B); DF / X_best are updated right after each evaluation round (the
+          original does it at the start of the next iteration from the same values: same result).
+        - t runs 1..T, so a = arctanh(1 - 1/T) is finite at the first iteration; at t = T, a = b = 0 and the
+          non-elite coordinates collapse to 0 as in the original (the best-ever archive is unaffected).
+        - Out-of-bounds coordinates are clamped. */
+    class SlimeMould : public PopulationPlanner
+    {
+      public:
+        explicit SlimeMould(const ompl::base::SpaceInformationPtr &si);
+        /** \brief The same algorithm under another name (e.g. "SMA-GMS", so benchmark logs tell variants
+            apart). */
+        SlimeMould(const ompl::base::SpaceInformationPtr &si, const std::string &name);
+
+        /** \brief Probability z of a random restart of one slime mould (0..1). */
+        void setZ(double z);
+        double getZ() const { return z_; }
+
+      protected:
+        SlimeMould(const ompl::base::SpaceInformationPtr &si, const std::string &name,
+                   const PopulationDefaults &defaults);
+
+        bool initialisePopulation() override;
+        bool iterate(unsigned int t) override;
+        void clearPopulation() override;
+        bool populationView(double *&x, double *&fitness) override;
+        bool supportsGmsOperators() const override { return true; }
+        /** \brief Takes an improved individual into DF / X_best. */
+        void populationChanged() override;
+
+        /** \brief One SMA update and its evaluation round (commits only when not interrupted). */
+        bool slimeMouldStep(unsigned int t);
+        /** \brief Take the population's best into DF / X_best when it improves on DF. */
+        void updateBest();
+
+        double *row(std::vector<double> &pop, unsigned int i)
+        {
+            return pop.data() + std::size_t(i) * dimension();
+        }
+        const double *row(const std::vector<double> &pop, unsigned int i) const
+        {
+            return pop.data() + std::size_t(i) * dimension();
+        }
+
+        double z_{0.3};
+        std::vector<double> x_, next_, weights_;
+        std::vector<double> fit_, nextFit_;
+        std::vector<unsigned int> order_;
+        std::vector<double> bestX_, vb_, vc_;
+        /** \brief DF: the best fitness the algorithm steers by (LRSMA's annealing may make it worse). */
+        double bestF_{0.0};
+
+      private:
+        void declareSlimeMouldParams();
+    };
+} // namespace mhplan
+
+#endif

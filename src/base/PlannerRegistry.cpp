@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/base/PlannerRegistry.h"
+
+#include "mhplan/base/World.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        bool parseDouble(const std::string &s, double &out)
+        {
+            if (s.empty())
+                return false;
+            char *end = nullptr;
+            errno = 0;
+            out = std::strtod(s.c_str(), &end);
+            return errno == 0 && end == s.c_str() + s.size();
+        }
+
+        std::vector<std::string> split(const std::string &s, char sep)
+        {
+            std::vector<std::string> out;
+            std::stringstream ss(s);
+            std::string item;
+            while (std::getline(ss, item, sep))
+                out.push_back(item);
+            return out;
+        }
+    } // namespace
+
+    void PlannerRegistry::add(PlannerEntry entry)
+    {
+        if (entry.name.empty() || !entry.allocate)
+            throw std::invalid_argument("planner registry: an entry needs a name and an allocator");
+        const std::string name = entry.name;
+        if (!entries_.emplace(name, std::move(entry)).second)
+            throw std::invalid_argument("planner registry: '" + name + "' is registered twice");
+    }
+
+    const PlannerEntry &PlannerRegistry::get(const std::string &name) const
+    {
+        const auto it = entries_.find(name);
+        if (it != entries_.end())
+            return it->second;
+        std::ostringstream msg;
+        msg << "unknown planner '" << name << "'; registered planners:";
+        for (const auto &n : names())
+            msg << " " << n;
+        throw InputError(msg.str());
+    }
+
+    std::vector<std::string> PlannerRegistry::names() const
+    {
+        std::vector<std::string> out;
+        for (const auto &kv : entries_)
+            out.push_back(kv.first);
+        return out;
+    }
+
+    ob::PlannerPtr PlannerRegistry::create(const std::string &name, const ob::SpaceInformationPtr &si,
+                                           const std::map<std::string, std::string> &params) const
+    {
+        ob::PlannerPtr planner = get(name).allocate(si);
+        applyPlannerParameters(*planner, params);
+        return planner;
+    }
+
+    std::string checkAgainstRange(const std::string &value, const std::string &range)
+    {
+        if (range.empty())
+            return "";
+        if (range.find(':') != std::string::npos)
+        {
+            const std::vector<std::string> parts = split(range, ':');
+            double lo = 0.0, hi = 0.0, v = 0.0;
+            if ((parts.size() != 2 && parts.size() != 3) || !parseDouble(parts.front(), lo) ||
+                !parseDouble(parts.back(), hi))
+                return ""; // not a numeric range: nothing to enforce
+            if (!parseDouble(value, v))
+                return "a number in [" + parts.front() + ", " + parts.back() + "]";
+            if (v < lo || v > hi)
+                return "a number in [" + parts.front() + ", " + parts.back() + "]";
+            return "";
+        }
+        const std::vector<std::string> options = split(range, ',');
+        for (const auto &o : options)
+            if (o == value)
+                return "";
+        // Booleans are declared as "0,1"; accept the usual spellings too.
+        if (range == "0,1" && (value == "true" || value == "false"))
+            return "";
+        return "one of {" + range + "}";
+    }
+
+    void applyPlannerParameters(ob::Planner &planner, const std::map<std::string, std::string> &params)
+    {
+        ob::ParamSet &ps = planner.params();
+        for (const auto &kv : params)
+        {
+            if (!ps.hasParam(kv.first))
+            {
+                std::ostringstream msg;
+                msg << "planner '" << planner.getName() << "' has no parameter '" << kv.first
+                    << "'; its parameters:";
+                std::vector<std::string> names;
+                ps.getParamNames(names);
+                if (names.empty())
+                    msg << " (none)";
+                for (const auto &n : names)
+                    msg << " " << n;
+                throw InputError(msg.str());
+            }
+            const std::string range = ps[kv.first].getRangeSuggestion();
+            // The planner's own current value is always accepted (some OMPL defaults sit outside their
+            // declared range suggestion, e.g. PRM's max_nearest_neighbors).
+            const std::string problem =
+                kv.second == ps[kv.first].getValue() ? std::string() : checkAgainstRange(kv.second, range);
+            if (!problem.empty())
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
+                                 kv.second + "' is out of range; expected " + problem);
+            std::string value = kv.second;
+            if (range == "0,1" && (value == "true" || value == "false"))
+                value = value == "true" ? "1" : "0";
+            bool ok = false;
+            try
+            {
+                ok = ps.setParam(kv.first, value);
+            }
+            catch (const std::invalid_argument &e)
+            {
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
+                                 "': " + e.what());
+            }
+            if (!ok)
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
+                                 "': cannot set value '" + kv.second + "'" +
+                                 (range.empty() ? "" : " (expected " + range + ")"));
+        }
+    }
+
+    void parseKeyValue(const std::string &item, std::map<std::string, std::string> &out)
+    {
+        const auto eq = item.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError("expected key=value, got '" + item + "'");
+        out[item.substr(0, eq)] = item.substr(eq + 1);
+    }
+
+} // namespace mhplan

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/collision/Problem.h"
+
+#include "mhplan/collision/Validity.h"
+
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
+#include <sstream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan
+{
+    namespace
+    {
+        void checkEndpoint(const World &world, const Query &query, const CollisionModel &model, const Vec2 &p,
+                           const char *field)
+        {
+            std::ostringstream where;
+            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                  << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
+            if (!model.inBounds(p))
+                throw InputError(where.str() + " is out of bounds: the robot disc (radius " +
+                                 std::to_string(world.robotRadius) + ") must lie inside the world's bounds");
+            if (!model.isValid(p))
+                throw InputError(where.str() + " is in collision (clearance " +
+                                 std::to_string(model.clearance(p)) + ")");
+        }
+    } // namespace
+
+    void validateQuery(const World &world, const Query &query, const CollisionModel &model)
+    {
+        checkEndpoint(world, query, model, query.start, "start");
+        checkEndpoint(world, query, model, query.goal, "goal");
+    }
+
+    namespace
+    {
+        /** Identity projection of the 2D position with cells of 1/20 of the bounds. Registered as the default
+            projection because OMPL 1.5.2's own RealVector projections trip an Eigen 3.4 assertion when
+            KPIECE1 or SBL call them (they assign into an Eigen::Ref of another size). */
+        class PositionProjection : public ob::ProjectionEvaluator
+        {
+          public:
+            PositionProjection(const ob::StateSpace *space, const Box &bounds)
+                : ob::ProjectionEvaluator(space)
+            {
+                cellSizes_ = {bounds.width() / 20.0, bounds.height() / 20.0};
+            }
+            unsigned int getDimension() const override { return 2; }
+            void defaultCellSizes() override {}
+            void project(const ob::State *state, Eigen::Ref<Eigen::VectorXd> projection) const override
+            {
+                const auto *s = state->as<ob::RealVectorStateSpace::StateType>();
+                projection[0] = s->values[0];
+                projection[1] = s->values[1];
+            }
+        };
+
+        /** RealVectorStateSpace whose default projection is PositionProjection. */
+        class PlaneStateSpace : public ob::RealVectorStateSpace
+        {
+          public:
+            explicit PlaneStateSpace(const Box &bounds) : ob::RealVectorStateSpace(2), box_(bounds) {}
+            void registerProjections() override
+            {
+                registerDefaultProjection(std::make_shared<PositionProjection>(this, box_));
+            }
+
+          private:
+            Box box_;
+        };
+    } // namespace
+
+    ob::StateSpacePtr makeStateSpace(const World &world)
+    {
+        auto space = std::make_shared<PlaneStateSpace>(world.bounds);
+        ob::RealVectorBounds b(2);
+        b.setLow(0, world.bounds.xmin);
+        b.setHigh(0, world.bounds.xmax);
+        b.setLow(1, world.bounds.ymin);
+        b.setHigh(1, world.bounds.ymax);
+        space->setBounds(b);
+        return space;
+    }
+
+    og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
+    {
+        validateQuery(world, query, *model);
+        auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+        const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+        si->setStateValidityChecker(std::make_shared<WorldValidityChecker>(si, model));
+        si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, model));
+        ob::ScopedState<> start(ss->getStateSpace());
+        ob::ScopedState<> goal(ss->getStateSpace());
+        start[0] = query.start.x;
+        start[1] = query.start.y;
+        goal[0] = query.goal.x;
+        goal[1] = query.goal.y;
+        const double diag = std::hypot(world.bounds.width(), world.bounds.height());
+        ss->setStartAndGoalStates(start, goal, 1e-9 * diag);
+        ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+        return ss;
+    }
+
+    double polylineLength(const std::vector<Vec2> &points)
+    {
+        double len = 0.0;
+        for (std::size_t i = 1; i < points.size(); ++i)
+            len += distance(points[i - 1], points[i]);
+        return len;
+    }
+
+    std::vector<Vec2> pathPoints(const og::PathGeometric &path)
+    {
+        std::vector<Vec2> out;
+        out.reserve(path.getStateCount());
+        for (std::size_t i = 0; i < path.getStateCount(); ++i)
+            out.push_back(statePosition(path.getState(i)));
+        return out;
+    }
+} // namespace mhplan

@@ -1,0 +1,418 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/io/WorldIO.h"
+
+#include "mhplan/collision/Collision.h"
+#include "mhplan/io/GridIO.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/io/YamlReader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace mhplan
+{
+    namespace
+    {
+        std::string directoryOf(const std::string &path)
+        {
+            const auto slash = path.find_last_of('/');
+            return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+        }
+
+        std::string extensionOf(const std::string &path)
+        {
+            const auto dot = path.find_last_of('.');
+            const auto slash = path.find_last_of('/');
+            if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+                return "";
+            std::string ext = path.substr(dot + 1);
+            for (auto &c : ext)
+                c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            return ext;
+        }
+
+        Box readBounds(const YamlReader &r, const YAML::Node &n)
+        {
+            Box b;
+            if (n.IsSequence())
+            {
+                if (n.size() != 4)
+                    r.fail(n, "bounds", "expected [xmin, xmax, ymin, ymax]");
+                b = {r.number(n[0], "bounds[0]"), r.number(n[1], "bounds[1]"), r.number(n[2], "bounds[2]"),
+                     r.number(n[3], "bounds[3]")};
+            }
+            else
+            {
+                r.allowKeys(n, "bounds", {"xmin", "xmax", "ymin", "ymax"});
+                b = {r.number(r.require(n, "xmin", "bounds"), "bounds.xmin"),
+                     r.number(r.require(n, "xmax", "bounds"), "bounds.xmax"),
+                     r.number(r.require(n, "ymin", "bounds"), "bounds.ymin"),
+                     r.number(r.require(n, "ymax", "bounds"), "bounds.ymax")};
+            }
+            if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
+                r.fail(n, "bounds", "needs xmin < xmax and ymin < ymax");
+            return b;
+        }
+
+        void readObstacle(const YamlReader &r, const YAML::Node &item, std::size_t index, World &world)
+        {
+            const std::string base = "obstacles[" + std::to_string(index) + "]";
+            if (!item.IsMap() || item.size() != 1)
+                r.fail(item, base, "expected one of {circle: ...}, {rectangle: ...}, {polygon: ...}");
+            const std::string kind = item.begin()->first.as<std::string>();
+            const YAML::Node n = item.begin()->second;
+            const std::string field = base + "." + kind;
+            if (kind == "circle")
+            {
+                r.allowKeys(n, field, {"center", "radius"});
+                Circle c;
+                c.center = r.point(r.require(n, "center", field), field + ".center");
+                c.radius = r.number(r.require(n, "radius", field), field + ".radius");
+                if (!(c.radius > 0.0))
+                    r.fail(n["radius"], field + ".radius", "must be > 0 (got " + n["radius"].Scalar() + ")");
+                world.circles.push_back(c);
+            }
+            else if (kind == "rectangle")
+            {
+                r.allowKeys(n, field, {"center", "size", "angle", "min", "max"});
+                std::vector<Vec2> corners;
+                if (n["min"].IsDefined() || n["max"].IsDefined())
+                {
+                    if (n["center"].IsDefined() || n["size"].IsDefined() || n["angle"].IsDefined())
+                        r.fail(n, field, "give either min/max or center/size/angle, not both");
+                    const Vec2 lo = r.point(r.require(n, "min", field), field + ".min");
+                    const Vec2 hi = r.point(r.require(n, "max", field), field + ".max");
+                    if (!(lo.x < hi.x) || !(lo.y < hi.y))
+                        r.fail(n, field, "needs min < max in both coordinates");
+                    corners = {{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}};
+                }
+                else
+                {
+                    const Vec2 c = r.point(r.require(n, "center", field), field + ".center");
+                    const Vec2 size = r.point(r.require(n, "size", field), field + ".size");
+                    if (!(size.x > 0.0) || !(size.y > 0.0))
+                        r.fail(n["size"], field + ".size", "width and height must be > 0");
+                    const double angle =
+                        n["angle"].IsDefined() ? r.number(n["angle"], field + ".angle") : 0.0;
+                    corners = rectangleCorners(c, size.x, size.y, angle * kPi / 180.0);
+                }
+                world.polygons.push_back(makePolygon(std::move(corners), "rectangle"));
+            }
+            else if (kind == "polygon")
+            {
+                r.allowKeys(n, field, {"points"});
+                const YAML::Node pts = r.require(n, "points", field);
+                if (!pts.IsSequence() || pts.size() < 3)
+                    r.fail(pts, field + ".points", "expected a list of at least 3 points");
+                std::vector<Vec2> v;
+                for (std::size_t i = 0; i < pts.size(); ++i)
+                    v.push_back(r.point(pts[i], field + ".points[" + std::to_string(i) + "]"));
+                if (!polygonIsSimple(v))
+                    r.fail(pts, field + ".points",
+                           "the polygon is not simple (self-intersecting, repeated vertex or zero area)");
+                world.polygons.push_back(makePolygon(std::move(v), "polygon"));
+            }
+            else
+                r.fail(item, base,
+                       "unknown obstacle type '" + kind + "'; accepted: circle, rectangle, polygon");
+        }
+
+        std::shared_ptr<const OccupancyGrid> readGrid(const YamlReader &r, const YAML::Node &n)
+        {
+            r.allowKeys(n, "grid", {"file", "rows", "cell_size", "origin", "threshold", "negate"});
+            const double cell = n["cell_size"].IsDefined() ? r.number(n["cell_size"], "grid.cell_size") : 1.0;
+            if (!(cell > 0.0))
+                r.fail(n["cell_size"], "grid.cell_size", "must be > 0");
+            const Vec2 origin =
+                n["origin"].IsDefined() ? r.point(n["origin"], "grid.origin") : Vec2{0.0, 0.0};
+            const bool hasFile = n["file"].IsDefined();
+            const bool hasRows = n["rows"].IsDefined();
+            if (hasFile == hasRows)
+                r.fail(n, "grid", "give exactly one of 'file' (a .map or .pgm) and 'rows'");
+            OccupancyGrid grid;
+            if (hasRows)
+            {
+                const YAML::Node rows = n["rows"];
+                if (!rows.IsSequence() || rows.size() == 0)
+                    r.fail(rows, "grid.rows", "expected a non-empty list of strings");
+                std::ostringstream text;
+                const std::string first = r.text(rows[0], "grid.rows[0]");
+                text << "type octile\nheight " << rows.size() << "\nwidth " << first.size() << "\nmap\n";
+                for (std::size_t i = 0; i < rows.size(); ++i)
+                    text << r.text(rows[i], "grid.rows[" + std::to_string(i) + "]") << "\n";
+                std::istringstream in(text.str());
+                try
+                {
+                    grid = parseMovingAIMap(in, r.file() + " (grid.rows)", cell);
+                }
+                catch (const InputError &e)
+                {
+                    r.fail(rows, "grid.rows", e.what());
+                }
+            }
+            else
+            {
+                std::string path = r.text(n["file"], "grid.file");
+                if (!path.empty() && path[0] != '/')
+                    path = directoryOf(r.file()) + "/" + path;
+                const std::string ext = extensionOf(path);
+                try
+                {
+                    if (ext == "map")
+                        grid = loadMovingAIMap(path, cell);
+                    else if (ext == "pgm")
+                    {
+                        const double threshold =
+                            n["threshold"].IsDefined() ? r.number(n["threshold"], "grid.threshold") : 0.5;
+                        if (!(threshold > 0.0 && threshold < 1.0))
+                            r.fail(n["threshold"], "grid.threshold", "must be in (0, 1)");
+                        const bool negate = n["negate"].IsDefined() && r.boolean(n["negate"], "grid.negate");
+                        grid = loadPgm(path, cell, threshold, negate);
+                    }
+                    else
+                        r.fail(n["file"], "grid.file", "expected a .map or .pgm file, got '" + path + "'");
+                }
+                catch (const InputError &e)
+                {
+                    // The grid file's own error names its line; add where it was referenced.
+                    r.fail(n["file"], "grid.file", e.what());
+                }
+            }
+            if (origin != Vec2{0.0, 0.0})
+            {
+                OccupancyGrid moved(grid.width(), grid.height(), grid.cellSize(), origin);
+                for (int iy = 0; iy < grid.height(); ++iy)
+                    for (int ix = 0; ix < grid.width(); ++ix)
+                        moved.setBlocked(ix, iy, grid.blocked(ix, iy));
+                grid = std::move(moved);
+            }
+            return std::make_shared<const OccupancyGrid>(std::move(grid));
+        }
+
+        void readQueries(const YamlReader &r, const YAML::Node &n, World &world,
+                         std::vector<YAML::Node> &nodes)
+        {
+            if (!n.IsSequence())
+                r.fail(n, "queries", "expected a list of {name, start, goal}");
+            std::set<std::string> names;
+            for (std::size_t i = 0; i < n.size(); ++i)
+            {
+                const std::string field = "queries[" + std::to_string(i) + "]";
+                r.allowKeys(n[i], field, {"name", "start", "goal"});
+                Query q;
+                q.name = n[i]["name"].IsDefined()
+                             ? r.text(n[i]["name"], field + ".name")
+                             : (i == 0 ? std::string("default") : "q" + std::to_string(i));
+                if (!names.insert(q.name).second)
+                    r.fail(n[i], field + ".name", "duplicate query name '" + q.name + "'");
+                q.start = r.point(r.require(n[i], "start", field), field + ".start");
+                q.goal = r.point(r.require(n[i], "goal", field), field + ".goal");
+                world.queries.push_back(q);
+                nodes.push_back(n[i]);
+            }
+        }
+    } // namespace
+
+    World parseWorldYaml(const std::string &textIn, const std::string &fileName)
+    {
+        const YAML::Node root = loadYamlMapping(textIn, fileName, "world file", "environments/README.md");
+        return readWorldNode(YamlReader(fileName), root);
+    }
+
+    World readWorldNode(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys)
+    {
+        const std::string &fileName = r.file();
+        std::set<std::string> keys{"name",  "description", "source", "assumptions", "bounds",
+                                   "robot", "obstacles",   "grid",   "queries"};
+        keys.insert(extraKeys.begin(), extraKeys.end());
+        r.allowKeys(root, "", keys);
+
+        World world;
+        world.file = fileName;
+        world.name = root["name"].IsDefined() ? r.text(root["name"], "name") : fileName;
+        if (root["description"].IsDefined())
+            world.description = r.text(root["description"], "description");
+        if (root["source"].IsDefined())
+            world.source = r.text(root["source"], "source");
+        if (root["assumptions"].IsDefined())
+            world.assumptions = r.text(root["assumptions"], "assumptions");
+        if (root["robot"].IsDefined())
+        {
+            r.allowKeys(root["robot"], "robot", {"radius"});
+            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius");
+            if (world.robotRadius < 0.0)
+                r.fail(root["robot"]["radius"], "robot.radius",
+                       "must be >= 0 (got " + root["robot"]["radius"].Scalar() + ")");
+        }
+
+        if (root["grid"].IsDefined())
+        {
+            if (root["obstacles"].IsDefined())
+                r.fail(root["obstacles"], "obstacles", "a grid world cannot also list geometric obstacles");
+            if (root["bounds"].IsDefined())
+                r.fail(root["bounds"], "bounds", "a grid world's bounds come from its grid; remove 'bounds'");
+            world.grid = readGrid(r, root["grid"]);
+            world.bounds = world.grid->bounds();
+        }
+        else
+        {
+            world.bounds = readBounds(r, r.require(root, "bounds", ""));
+            if (root["obstacles"].IsDefined() && !root["obstacles"].IsNull())
+            {
+                const YAML::Node obs = root["obstacles"];
+                if (!obs.IsSequence())
+                    r.fail(obs, "obstacles", "expected a list");
+                for (std::size_t i = 0; i < obs.size(); ++i)
+                    readObstacle(r, obs[i], i, world);
+            }
+        }
+        if (2.0 * world.robotRadius >= std::min(world.bounds.width(), world.bounds.height()))
+            r.fail(root["robot"], "robot.radius", "the robot does not fit inside the bounds");
+
+        std::vector<YAML::Node> queryNodes;
+        if (root["queries"].IsDefined())
+            readQueries(r, root["queries"], world, queryNodes);
+
+        // Start and goal must be valid for the world's own collision model.
+        const CollisionModelPtr model = makeCollisionModel(world);
+        for (std::size_t i = 0; i < world.queries.size(); ++i)
+        {
+            const Query &q = world.queries[i];
+            for (const char *key : {"start", "goal"})
+            {
+                const Vec2 p = std::string(key) == "start" ? q.start : q.goal;
+                const std::string field = "queries[" + std::to_string(i) + "]." + key;
+                std::ostringstream at;
+                at << "(" << p.x << ", " << p.y << ")";
+                if (!model->inBounds(p))
+                    r.fail(queryNodes[i][key], field,
+                           at.str() + " is out of bounds (the robot disc must lie inside the bounds)");
+                if (!model->isValid(p))
+                {
+                    std::ostringstream c;
+                    c << std::setprecision(6) << model->clearance(p);
+                    r.fail(queryNodes[i][key], field,
+                           at.str() + " is in collision (clearance " + c.str() + ")");
+                }
+            }
+        }
+        return world;
+    }
+
+    World loadWorld(const std::string &path)
+    {
+        std::ifstream in(path);
+        if (!in)
+            throw InputError(path + ": cannot open world file");
+        const std::string ext = extensionOf(path);
+        std::string stem =
+            path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+        stem = stem.substr(0, stem.find_last_of('.'));
+        if (ext == "map")
+        {
+            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parseMovingAIMap(in, path)));
+            w.file = path;
+            return w;
+        }
+        if (ext == "pgm")
+        {
+            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parsePgm(in, path)));
+            w.file = path;
+            return w;
+        }
+        if (ext != "yaml" && ext != "yml")
+            throw InputError(path + ": unknown world file type '." + ext +
+                             "'; accepted: .yaml, .yml, .map, .pgm");
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        return parseWorldYaml(buffer.str(), path);
+    }
+
+    namespace
+    {
+        std::string yamlString(const std::string &s)
+        {
+            std::string out = "\"";
+            for (char c : s)
+            {
+                if (c == '"' || c == '\\')
+                    out += '\\';
+                if (c == '\n')
+                {
+                    out += "\\n";
+                    continue;
+                }
+                out += c;
+            }
+            return out + "\"";
+        }
+    } // namespace
+
+    std::string worldToYaml(const World &world)
+    {
+        std::ostringstream out;
+        out << std::setprecision(17);
+        out << "name: " << yamlString(world.name) << "\n";
+        if (!world.description.empty())
+            out << "description: " << yamlString(world.description) << "\n";
+        if (!world.source.empty())
+            out << "source: " << yamlString(world.source) << "\n";
+        if (!world.assumptions.empty())
+            out << "assumptions: " << yamlString(world.assumptions) << "\n";
+        out << "robot: {radius: " << world.robotRadius << "}\n";
+        if (world.isGrid())
+        {
+            const OccupancyGrid &g = *world.grid;
+            out << "grid:\n  cell_size: " << g.cellSize() << "\n";
+            if (g.origin() != Vec2{0.0, 0.0})
+                out << "  origin: [" << g.origin().x << ", " << g.origin().y << "]\n";
+            out << "  rows:\n";
+            for (int row = 0; row < g.height(); ++row)
+            {
+                out << "    - \"";
+                const int iy = g.rowToIy(row);
+                for (int ix = 0; ix < g.width(); ++ix)
+                    out << (g.blocked(ix, iy) ? '@' : '.');
+                out << "\"\n";
+            }
+        }
+        else
+        {
+            out << "bounds: {xmin: " << world.bounds.xmin << ", xmax: " << world.bounds.xmax
+                << ", ymin: " << world.bounds.ymin << ", ymax: " << world.bounds.ymax << "}\n";
+            out << "obstacles:\n";
+            if (world.circles.empty() && world.polygons.empty())
+                out << "  []\n";
+            for (const auto &c : world.circles)
+                out << "  - circle: {center: [" << c.center.x << ", " << c.center.y
+                    << "], radius: " << c.radius << "}\n";
+            for (const auto &p : world.polygons)
+            {
+                out << "  - polygon: {points: [";
+                for (std::size_t i = 0; i < p.vertices.size(); ++i)
+                    out << (i ? ", " : "") << "[" << p.vertices[i].x << ", " << p.vertices[i].y << "]";
+                out << "]}\n";
+            }
+        }
+        if (!world.queries.empty())
+        {
+            out << "queries:\n";
+            for (const auto &q : world.queries)
+                out << "  - {name: " << yamlString(q.name) << ", start: [" << q.start.x << ", " << q.start.y
+                    << "], goal: [" << q.goal.x << ", " << q.goal.y << "]}\n";
+        }
+        return out.str();
+    }
+
+    void validateWorldQueries(const World &world)
+    {
+        const CollisionModelPtr model = makeCollisionModel(world);
+        for (const auto &q : world.queries)
+            validateQuery(world, q, *model);
+    }
+} // namespace mhplan

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: reading and writing world files. */
+#ifndef MHPLAN_WORLD_IO_H
+#define MHPLAN_WORLD_IO_H
+
+#include "mhplan/base/World.h"
+#include "mhplan/io/YamlReader.h"
+
+#include <set>
+
+#include <string>
+
+namespace mhplan
+{
+    /** \brief Load a world: a YAML world file (.yaml/.yml, see environments/README.md), a MovingAI map
+        (.map) or a PGM image (.pgm, threshold 0.5 of the maximum grey value, dark = blocked). Throws
+        InputError naming the file, line and field on any problem (malformed YAML, unknown keys, negative
+        radii, self-intersecting polygons, start or goal out of bounds or in collision). */
+    World loadWorld(const std::string &path);
+
+    /** \brief Parse a YAML world from text; \e fileName is used in error messages and to resolve relative
+        grid file paths (relative to its directory). */
+    World parseWorldYaml(const std::string &text, const std::string &fileName);
+
+    /** \brief Read the world keys of a YAML mapping (the world file format); \e extraKeys are further
+        top-level keys the caller reads itself (a scenario file extends the world format this way). Errors
+        as parseWorldYaml, with \e r's file name. */
+    World readWorldNode(const YamlReader &r, const YAML::Node &root,
+                        const std::set<std::string> &extraKeys = {});
+
+    /** \brief Write a geometric or grid world as YAML (grids inline as rows of '.' and '@'). */
+    std::string worldToYaml(const World &world);
+
+    /** \brief Validate a world's queries against its own collision model (throws InputError). */
+    void validateWorldQueries(const World &world);
+} // namespace mhplan
+
+#endif

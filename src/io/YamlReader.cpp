@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/io/YamlReader.h"
+
+#include "mhplan/base/World.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace mhplan
+{
+    YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
+                               const std::string &help)
+    {
+        YAML::Node root;
+        try
+        {
+            root = YAML::Load(text);
+        }
+        catch (const YAML::ParserException &e)
+        {
+            std::ostringstream msg;
+            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                << ": malformed YAML: " << e.msg;
+            throw InputError(msg.str());
+        }
+        if (!root.IsMap())
+            throw InputError(fileName + ":1: a " + what + " must be a YAML mapping (see " + help + ")");
+        return root;
+    }
+
+    void YamlReader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
+    {
+        std::ostringstream msg;
+        msg << file_;
+        if (node.IsDefined() && node.Mark().line >= 0)
+            msg << ":" << node.Mark().line + 1;
+        msg << ": field '" << field << "': " << what;
+        throw InputError(msg.str());
+    }
+
+    void YamlReader::allowKeys(const YAML::Node &map, const std::string &field,
+                               const std::set<std::string> &keys) const
+    {
+        if (!map.IsMap())
+            fail(map, field, "expected a mapping");
+        for (const auto &kv : map)
+        {
+            const std::string key = kv.first.as<std::string>();
+            if (keys.count(key) != 0)
+                continue;
+            std::string accepted;
+            for (const auto &k : keys)
+                accepted += (accepted.empty() ? "" : ", ") + k;
+            fail(kv.first, field.empty() ? key : field + "." + key,
+                 "unknown key '" + key + "'; accepted: " + accepted);
+        }
+    }
+
+    YAML::Node YamlReader::require(const YAML::Node &map, const std::string &key,
+                                   const std::string &field) const
+    {
+        const YAML::Node n = map[key];
+        if (!n.IsDefined() || n.IsNull())
+            fail(map, field.empty() ? key : field + "." + key, "missing");
+        return n;
+    }
+
+    double YamlReader::number(const YAML::Node &n, const std::string &field) const
+    {
+        if (!n.IsScalar())
+            fail(n, field, "expected a number");
+        double v = 0.0;
+        try
+        {
+            v = n.as<double>();
+        }
+        catch (const YAML::Exception &)
+        {
+            fail(n, field, "expected a number, got '" + n.Scalar() + "'");
+        }
+        if (!std::isfinite(v))
+            fail(n, field, "must be finite");
+        return v;
+    }
+
+    double YamlReader::number(const YAML::Node &n, const std::string &field, double lo, double hi) const
+    {
+        const double v = number(n, field);
+        if (v < lo || v > hi)
+        {
+            std::ostringstream range;
+            range << "must be in [" << lo << ", " << hi << "] (got " << n.Scalar() << ")";
+            fail(n, field, range.str());
+        }
+        return v;
+    }
+
+    long long YamlReader::integer(const YAML::Node &n, const std::string &field, long long lo,
+                                  long long hi) const
+    {
+        const double v = number(n, field, static_cast<double>(lo), static_cast<double>(hi));
+        if (v != std::floor(v))
+            fail(n, field, "expected an integer (got " + n.Scalar() + ")");
+        return static_cast<long long>(v);
+    }
+
+    std::string YamlReader::text(const YAML::Node &n, const std::string &field) const
+    {
+        if (!n.IsScalar())
+            fail(n, field, "expected a string");
+        return n.Scalar();
+    }
+
+    std::string YamlReader::nonEmptyText(const YAML::Node &n, const std::string &field) const
+    {
+        if (!n.IsScalar() || n.Scalar().empty())
+            fail(n, field, "expected a non-empty string");
+        return n.Scalar();
+    }
+
+    bool YamlReader::boolean(const YAML::Node &n, const std::string &field) const
+    {
+        try
+        {
+            return n.as<bool>();
+        }
+        catch (const YAML::Exception &)
+        {
+            fail(n, field, "expected true or false");
+        }
+    }
+
+    Vec2 YamlReader::point(const YAML::Node &n, const std::string &field) const
+    {
+        if (!n.IsSequence() || n.size() != 2)
+            fail(n, field, "expected a point [x, y]");
+        return {number(n[0], field + "[0]"), number(n[1], field + "[1]")};
+    }
+} // namespace mhplan

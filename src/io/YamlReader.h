@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: reading YAML input files (worlds, campaigns) with errors that name the file, line and field. */
+#ifndef MHPLAN_YAML_READER_H
+#define MHPLAN_YAML_READER_H
+
+#include "mhplan/base/Geometry.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+#include <string>
+
+namespace mhplan
+{
+    /** \brief Parse one YAML document that must be a mapping; InputError "FILE:LINE:COL: malformed YAML: ..."
+        or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
+    YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
+                               const std::string &help);
+
+    /** \brief Typed access to the nodes of one YAML document. Every problem throws InputError as
+        "FILE:LINE: field 'a.b[2].c': what is wrong" (the line is 1-based, from the node's mark). */
+    class YamlReader
+    {
+      public:
+        explicit YamlReader(std::string file) : file_(std::move(file)) {}
+
+        [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
+                               const std::string &what) const;
+        /** \brief \e map must be a mapping whose keys are all in \e keys (the message lists them). */
+        void allowKeys(const YAML::Node &map, const std::string &field,
+                       const std::set<std::string> &keys) const;
+        /** \brief map[key], which must be present and not null. */
+        YAML::Node require(const YAML::Node &map, const std::string &key, const std::string &field) const;
+        /** \brief A finite number. */
+        double number(const YAML::Node &n, const std::string &field) const;
+        /** \brief A finite number in [lo, hi]. */
+        double number(const YAML::Node &n, const std::string &field, double lo, double hi) const;
+        /** \brief An integer in [lo, hi]. */
+        long long integer(const YAML::Node &n, const std::string &field, long long lo, long long hi) const;
+        /** \brief A scalar as text (may be empty). */
+        std::string text(const YAML::Node &n, const std::string &field) const;
+        /** \brief A non-empty scalar. */
+        std::string nonEmptyText(const YAML::Node &n, const std::string &field) const;
+        bool boolean(const YAML::Node &n, const std::string &field) const;
+        /** \brief A point [x, y]. */
+        Vec2 point(const YAML::Node &n, const std::string &field) const;
+
+        const std::string &file() const { return file_; }
+
+      private:
+        std::string file_;
+    };
+} // namespace mhplan
+
+#endif

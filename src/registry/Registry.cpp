@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/registry/Registry.h"
+
+#include "mhplan/planners/Registration.h"
+
+#include <ompl/geometric/planners/est/EST.h>
+#include <ompl/geometric/planners/fmt/BFMT.h>
+#include <ompl/geometric/planners/fmt/FMT.h>
+#include <ompl/geometric/planners/informedtrees/ABITstar.h>
+#include <ompl/geometric/planners/informedtrees/AITstar.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/geometric/planners/rrt/SORRTstar.h>
+#include <ompl/geometric/planners/sbl/SBL.h>
+#include <ompl/geometric/planners/stride/STRIDE.h>
+
+#include <ompl/tools/benchmark/Benchmark.h>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan
+{
+    void registerOmplPlanners(PlannerRegistry &r)
+    {
+        // OMPL's geometric planners that make sense in 2D.
+        r.add({"RRT", "ompl", "Rapidly-exploring random tree (LaValle 1998)", allocatorFor<og::RRT>()});
+        r.add({"RRTConnect", "ompl", "Bidirectional RRT (Kuffner & LaValle 2000)",
+               allocatorFor<og::RRTConnect>()});
+        r.add({"RRTstar", "ompl", "Asymptotically optimal RRT* (Karaman & Frazzoli 2011)",
+               allocatorFor<og::RRTstar>()});
+        r.add({"InformedRRTstar", "ompl", "Informed RRT* (Gammell et al. 2014)",
+               allocatorFor<og::InformedRRTstar>()});
+        r.add({"SORRTstar", "ompl", "Sorted informed RRT* (Gammell et al. 2018)",
+               allocatorFor<og::SORRTstar>()});
+        r.add({"PRM", "ompl", "Probabilistic roadmap (Kavraki et al. 1996)", allocatorFor<og::PRM>()});
+        r.add({"PRMstar", "ompl", "Asymptotically optimal PRM* (Karaman & Frazzoli 2011)",
+               allocatorFor<og::PRMstar>()});
+        r.add({"LazyPRMstar", "ompl", "Lazy PRM* (Bohlin & Kavraki 2000)", allocatorFor<og::LazyPRMstar>()});
+        // OMPL reserves the name "BITstar" for the r-disc variant and renames its default k-nearest one.
+        r.add({"BITstar", "ompl", "Batch informed trees, k-nearest (Gammell et al. 2015)",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               { return std::make_shared<og::BITstar>(si, "kBITstar"); }});
+        r.add({"ABITstar", "ompl", "Advanced BIT* (Strub & Gammell 2020)", allocatorFor<og::ABITstar>()});
+        r.add({"AITstar", "ompl", "Adaptively informed trees (Strub & Gammell 2020)",
+               allocatorFor<og::AITstar>()});
+        r.add({"FMTstar", "ompl", "Fast marching tree (Janson et al. 2015)", allocatorFor<og::FMT>()});
+        r.add({"BFMTstar", "ompl", "Bidirectional FMT* (Starek et al. 2015)", allocatorFor<og::BFMT>()});
+        r.add({"KPIECE1", "ompl",
+               "Kinodynamic planning by interior-exterior cell exploration (Sucan & Kavraki)",
+               allocatorFor<og::KPIECE1>()});
+        r.add({"EST", "ompl", "Expansive space trees (Hsu et al. 1997)", allocatorFor<og::EST>()});
+        r.add({"SBL", "ompl", "Single-query bidirectional lazy planner (Sanchez & Latombe 2003)",
+               allocatorFor<og::SBL>()});
+        r.add({"STRIDE", "ompl",
+               "Search tree with resolution independent density estimation (Gipson et al. 2013)",
+               allocatorFor<og::STRIDE>()});
+    }
+
+    void registerBuiltinPlanners(PlannerRegistry &r)
+    {
+        registerOmplPlanners(r);
+        registerMhplanPlanners(r);
+    }
+
+    const PlannerRegistry &PlannerRegistry::builtin()
+    {
+        static const PlannerRegistry registry = []
+        {
+            PlannerRegistry r;
+            registerBuiltinPlanners(r);
+            return r;
+        }();
+        return registry;
+    }
+
+    ob::PlannerPtr allocatePlanner(const std::string &name, const ob::SpaceInformationPtr &si,
+                                   const std::map<std::string, std::string> &params)
+    {
+        return PlannerRegistry::builtin().create(name, si, params);
+    }
+
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<std::string> &names)
+    {
+        const PlannerRegistry &reg = PlannerRegistry::builtin();
+        std::vector<std::string> chosen = names;
+        if (chosen.empty())
+            for (const auto &n : reg.names())
+                if (reg.get(n).origin == "mhplan")
+                    chosen.push_back(n);
+        for (const auto &n : chosen)
+            reg.get(n); // refuse unknown names before adding anything
+        for (const auto &n : chosen)
+            benchmark.addPlannerAllocator(reg.get(n).allocate);
+    }
+} // namespace mhplan

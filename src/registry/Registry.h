@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the built-in planner registry (OMPL's planners and mhplan's) and the helpers that draw from it. */
+#ifndef MHPLAN_REGISTRY_REGISTRY_H
+#define MHPLAN_REGISTRY_REGISTRY_H
+
+#include "mhplan/base/PlannerRegistry.h"
+
+namespace ompl::tools
+{
+    class Benchmark;
+}
+
+namespace mhplan
+{
+    /** \brief Add OMPL's geometric planners that make sense in 2D to \e registry (origin "ompl"). */
+    void registerOmplPlanners(PlannerRegistry &registry);
+
+    /** \brief Add every built-in planner to \e registry: OMPL's (registerOmplPlanners) and mhplan's
+        (registerMhplanPlanners). PlannerRegistry::builtin() is a registry filled by this. */
+    void registerBuiltinPlanners(PlannerRegistry &registry);
+
+    /** \brief SelfConfig-style factory: planner \e name from the built-in registry on \e si, with \e params
+        applied (InputError for an unknown name, parameter or out-of-range value). */
+    ompl::base::PlannerPtr allocatePlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
+                                           const std::map<std::string, std::string> &params = {});
+
+    /** \brief Add planners to an existing OMPL benchmark in one call: by default every mhplan planner
+        (origin "mhplan"); \e names may list any registered planner. Names are checked before anything is
+        added. */
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark,
+                                const std::vector<std::string> &names = {});
+} // namespace mhplan
+
+#endif
