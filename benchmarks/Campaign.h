@@ -97,7 +97,7 @@ namespace mhplan::bench
         /** \brief Export each run's planner data ("graph states", "graph motions") as OMPL's benchmark does;
             off saves the time (a PRM* roadmap takes about as long to export as to build). */
         bool plannerData{true};
-        /** \brief Collision back end: auto, analytic, fcl or grid. */
+        /** \brief Collision back end: auto, analytic, fcl, grid or hash. */
         std::string collision{"auto"};
         /** \brief The SQLite database (relative paths are relative to the working directory). */
         std::string database;

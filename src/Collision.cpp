@@ -2,6 +2,7 @@
 
 #include "FclCollision.h"
 #include "GridCollision.h"
+#include "SpatialHash.h"
 
 #include <algorithm>
 #include <limits>
@@ -105,7 +106,10 @@ namespace mhplan
             return CollisionBackend::FCL;
         if (name == "grid")
             return CollisionBackend::Grid;
-        throw InputError("unknown collision back end '" + name + "'; accepted: auto, analytic, fcl, grid");
+        if (name == "hash")
+            return CollisionBackend::Hash;
+        throw InputError("unknown collision back end '" + name +
+                         "'; accepted: auto, analytic, fcl, grid, hash");
     }
 
     std::string toString(CollisionBackend backend)
@@ -120,6 +124,8 @@ namespace mhplan
             return "fcl";
         case CollisionBackend::Grid:
             return "grid";
+        case CollisionBackend::Hash:
+            return "hash";
         }
         return "auto";
     }
@@ -132,7 +138,7 @@ namespace mhplan
                 backend = CollisionBackend::Grid;
             else
                 backend = world.obstacleCount() <= kAutoAnalyticMaxObstacles ? CollisionBackend::Analytic
-                                                                             : CollisionBackend::FCL;
+                                                                             : CollisionBackend::Hash;
         }
         switch (backend)
         {
@@ -142,6 +148,8 @@ namespace mhplan
             return std::make_shared<FclCollisionModel>(world);
         case CollisionBackend::Grid:
             return std::make_shared<GridCollisionModel>(world);
+        case CollisionBackend::Hash:
+            return std::make_shared<SpatialHashCollisionModel>(world);
         case CollisionBackend::Auto:
             break;
         }

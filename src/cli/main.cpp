@@ -26,7 +26,7 @@ namespace
             {"plan",
              {cmdPlan,
               "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
-              "        [--set key=value]... [--backend auto|analytic|fcl|grid] [--svg FILE]"}},
+              "        [--set key=value]... [--backend auto|analytic|fcl|grid|hash] [--svg FILE]"}},
             {"generate",
              {cmdGenerate,
               "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
