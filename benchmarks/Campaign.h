@@ -4,6 +4,8 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_H
 #define MHPLAN_BENCH_CAMPAIGN_H
 
+#include "GeneratedWorlds.h"
+
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -36,6 +38,8 @@ namespace mhplan::bench
         std::string world;
         /** \brief Query names; empty means every query of the world. */
         std::vector<std::string> queries;
+        /** \brief A world generated at campaign time (GeneratedWorlds.h; then \c world is empty). */
+        GeneratedWorldSpec generated;
     };
 
     /** \brief One controller configuration of a simulation experiment (Controllers.h). */
