@@ -761,6 +761,9 @@ namespace mhplan::bench
             x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
             x.parameters["world_type TEXT"] = xs.world.type();
             x.parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
+            if (xs.world.isGrid())
+                x.parameters["grid_cells INTEGER"] =
+                    std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
             x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
             x.parameters["query TEXT"] = xs.query.name;
             std::ostringstream q;
