@@ -129,7 +129,7 @@ def figure(label, fam, outdir, colors):
         lo = [100.0 * c["success_ci"][0] for c in cells]
         hi = [100.0 * c["success_ci"][1] for c in cells]
         axes[0].plot(xs, succ, marker="o", color=color, label=planner)
-        axes[0].fill_between(xs, lo, hi, color=color, alpha=0.12)
+        axes[0].fill_between(xs, lo, hi, color=color, alpha=0.05)
         for ax, key in ((axes[1], "gap"), (axes[2], "t1")):
             med = [_finite(c[key]["median"]) if c[key] else np.nan for c in cells]
             blo = [_finite(c[key]["lo"]) if c[key] else np.nan for c in cells]
