@@ -206,7 +206,18 @@ namespace mhplan::bench
                     w.world = r.nonEmptyText(n[i], field);
                 else
                 {
-                    r.allowKeys(n[i], field, {"world", "queries"});
+                    r.allowKeys(n[i], field, {"world", "queries", "generate", "name"});
+                    if (n[i]["generate"].IsDefined())
+                    {
+                        if (n[i]["world"].IsDefined())
+                            r.fail(n[i]["world"], field + ".world",
+                                   "a world entry has either world or generate");
+                        w.generated = readGeneratedWorld(r, n[i], field);
+                        c.worlds.push_back(std::move(w));
+                        continue;
+                    }
+                    if (n[i]["name"].IsDefined())
+                        r.fail(n[i]["name"], field + ".name", "only generated worlds take a name");
                     if (!n[i]["world"].IsDefined())
                         r.fail(n[i], field + ".world", "missing");
                     w.world = r.nonEmptyText(n[i]["world"], field + ".world");
@@ -374,11 +385,16 @@ namespace mhplan::bench
             std::string file;
             try
             {
-                file = locate(spec.world);
+                file = spec.generated.present
+                           ? materializeGeneratedWorld(spec.generated,
+                                                       (fs::path(campaign.logDir) / "worlds").string())
+                           : locate(spec.world);
             }
             catch (const InputError &e)
             {
-                throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: " + e.what());
+                const std::string line =
+                    spec.generated.present ? ":" + std::to_string(spec.generated.line) : "";
+                throw InputError(campaign.file + line + ": worlds[" + std::to_string(wi) + "]: " + e.what());
             }
             World world;
             try

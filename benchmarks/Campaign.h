@@ -6,6 +6,7 @@
 #define MHPLAN_BENCH_CAMPAIGN_H
 
 #include "mhplan/base/PlannerRegistry.h"
+#include "mhplan/bench/GeneratedWorlds.h"
 
 #include <cstdint>
 #include <functional>
@@ -39,6 +40,8 @@ namespace mhplan::bench
         std::string world;
         /** \brief Query names; empty means every query of the world. */
         std::vector<std::string> queries;
+        /** \brief A world generated at campaign time (GeneratedWorlds.h; then \c world is empty). */
+        GeneratedWorldSpec generated;
     };
 
     /** \brief One controller configuration of a simulation experiment (Controllers.h). */
@@ -100,7 +103,7 @@ namespace mhplan::bench
         /** \brief Export each run's planner data ("graph states", "graph motions") as OMPL's benchmark does;
             off saves the time (a PRM* roadmap takes about as long to export as to build). */
         bool plannerData{true};
-        /** \brief Collision back end: auto, analytic, fcl or grid. */
+        /** \brief Collision back end: auto, analytic, fcl, grid or hash. */
         std::string collision{"auto"};
         /** \brief The SQLite database (relative paths are relative to the working directory). */
         std::string database;

@@ -11,6 +11,7 @@
 #include "mhplan/base/Version.h"
 #include "mhplan/base/World.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/bench/Improvements.h"
 
 #include "mhplan/optimum/Optimum.h"
 
@@ -299,8 +300,15 @@ namespace mhplan::bench
             }
             ob::PlannerStatus solve(const ob::PlannerTerminationCondition &ptc) override
             {
-                return inner_->solve(ptc);
+                if (recorder_)
+                    recorder_->begin();
+                const ob::PlannerStatus status = inner_->solve(ptc);
+                if (recorder_)
+                    recorder_->end();
+                return status;
             }
+            /** Times solve() for \e recorder (Improvements.h). */
+            void setRecorder(ImprovementRecorder *recorder) { recorder_ = recorder; }
             void clear() override
             {
                 ob::Planner::clear();
@@ -323,6 +331,7 @@ namespace mhplan::bench
           private:
             ob::PlannerPtr inner_;
             bool plannerData_;
+            ImprovementRecorder *recorder_{nullptr};
         };
 
         /** The end of a run process: run \e body; an exception is reported on \e fd as an 'X' message
@@ -372,6 +381,8 @@ namespace mhplan::bench
                     inner->setName(spec.displayName);
                     auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
                     ss->setPlanner(planner);
+                    ImprovementRecorder improvements;
+                    planner->setRecorder(&improvements);
 
                     ot::Benchmark benchmark(*ss, xs.experiment->name);
                     benchmark.addPlanner(planner);
@@ -391,6 +402,11 @@ namespace mhplan::bench
                             std::string names = "time REAL";
                             for (const auto &kv : p->getPlannerProgressProperties())
                                 names += std::string(1, kGroupSep) + kv.first;
+                            const auto &fns = inner->getPlannerProgressProperties();
+                            const auto best = fns.find("best cost REAL");
+                            improvements.attach(p->getProblemDefinition(),
+                                                best == fns.end() ? nullptr : best->second,
+                                                kImprovementPollInterval);
                             sendMessage(fd, 'C', 0, encodeMap(common));
                             sendMessage(fd, 'S', 0,
                                         encodeMap({{"host", data.host},
@@ -451,8 +467,13 @@ namespace mhplan::bench
                                         num(optimalityGapPercent(m.length, xs.optimum));
                                 path = encodePath(pts);
                             }
+                            const std::vector<Improvement> better = run["status ENUM"] == crash
+                                                                        ? std::vector<Improvement>{}
+                                                                        : improvements.finish(*pdef);
+                            run["improvements INTEGER"] = std::to_string(better.size());
                             std::map<std::string, std::string> payload = run;
                             payload["\x01path"] = path;
+                            payload["\x01improvements"] = encodeImprovements(better);
                             sendMessage(fd, 'R', runIndex, encodeMap(payload));
                         });
                     const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
@@ -488,6 +509,7 @@ namespace mhplan::bench
             std::vector<ot::Benchmark::RunProperties> runs;
             std::vector<ot::Benchmark::RunProgressData> progress;
             std::vector<std::string> paths;
+            std::vector<std::string> improvements;
             std::vector<bool> have;
         };
 
@@ -602,7 +624,7 @@ namespace mhplan::bench
         /** Write an experiment's path sidecar and then (atomically, last: a log on disk means a finished
             experiment) its log with OMPL's writer and the real version line. */
         void writeExperimentFiles(const Campaign &c, const Experiment &e, const AssembledBenchmark &bench,
-                                  const std::string &paths)
+                                  const std::string &paths, const std::string &improvements = "")
         {
             std::ostringstream log;
             bench.saveResultsToStream(log);
@@ -627,6 +649,8 @@ namespace mhplan::bench
                 fs::rename(tmp, file);
             };
             atomicWrite(pathsFile(c, e), paths);
+            if (!improvements.empty())
+                atomicWrite(improvementsFile(c, e), improvements);
             atomicWrite(logFile(c, e), text);
         }
 
@@ -651,6 +675,7 @@ namespace mhplan::bench
                 rec.runs.resize(c.runs);
                 rec.progress.resize(c.runs);
                 rec.paths.resize(c.runs);
+                rec.improvements.resize(c.runs);
                 rec.have.assign(c.runs, false);
                 for (std::size_t next = 0; next < c.runs; ++next)
                 {
@@ -677,6 +702,8 @@ namespace mhplan::bench
                                 auto props = decodeMap(m.payload);
                                 rec.paths[m.index] = props["\x01path"];
                                 props.erase("\x01path");
+                                rec.improvements[m.index] = props["\x01improvements"];
+                                props.erase("\x01improvements");
                                 rec.runs[m.index] = props;
                                 rec.have[m.index] = true;
                                 const auto t = props.find("time REAL");
@@ -735,6 +762,9 @@ namespace mhplan::bench
             x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
             x.parameters["world_type TEXT"] = xs.world.type();
             x.parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
+            if (xs.world.isGrid())
+                x.parameters["grid_cells INTEGER"] =
+                    std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
             x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
             x.parameters["query TEXT"] = xs.query.name;
             std::ostringstream q;
@@ -773,7 +803,14 @@ namespace mhplan::bench
                     if (!records[pi].paths[k].empty())
                         paths << "geometric_" << c.planners[pi].displayName << "\t" << k << "\t"
                               << records[pi].paths[k] << "\n";
-            writeExperimentFiles(c, e, bench, paths.str());
+            std::vector<std::string> plannerNames;
+            std::vector<std::vector<std::string>> improvements;
+            for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+            {
+                plannerNames.push_back("geometric_" + c.planners[pi].displayName);
+                improvements.push_back(records[pi].improvements);
+            }
+            writeExperimentFiles(c, e, bench, paths.str(), improvementsFileText(plannerNames, improvements));
             return 0;
         }
 
@@ -1600,6 +1637,7 @@ namespace mhplan::bench
                 exec("PRAGMA foreign_keys = ON");
             }
             ~Database() { sqlite3_close(db_); }
+            sqlite3 *handle() { return db_; }
             Database(const Database &) = delete;
             Database &operator=(const Database &) = delete;
 
@@ -1830,6 +1868,7 @@ namespace mhplan::bench
                 insertPath.step();
                 insertPath.reset();
             }
+            insertImprovements(db.handle(), ids[i], improvementsFile(campaign, e));
         }
         db.exec("COMMIT");
         return pending.size();

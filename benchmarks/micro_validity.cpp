@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* mhplan micro-benchmarks of the collision back ends: state validity, clearance and exact motion checks, on
-   the 12-circle world of [BFO] case 2 and on a generated world of 10,000 circles. Query points and segments
+/* mhplan micro-benchmarks of the collision back ends (analytic, FCL, spatial hash): state validity, clearance
+   and exact motion checks, on the 12-circle world of [BFO] case 2 and on generated worlds of 1,000 and
+   10,000 circles. Query points and segments
    are drawn before the timed loops. Run: mhplan_microbench --benchmark_min_time=0.2 */
 #include "mhplan/collision/Collision.h"
 #include "mhplan/collision/FclCollision.h"
@@ -38,18 +39,19 @@ namespace
         return w;
     }
 
-    /** 10,000 circles of radius 0.5..3 in [0, 1000]^2 (fixed seed), none covering the query's endpoints. */
-    World manyCirclesWorld()
+    /** \e count circles of radius 0.5..3 in [0, side]^2 (fixed seed), none covering the query's endpoints:
+        10,000 in [0, 1000]^2, 1,000 in [0, 316]^2 (the same density, about 11 % covered). */
+    World manyCirclesWorld(std::size_t count = 10000, double side = 1000.0, const char *name = "circles10k")
     {
         World w;
-        w.name = "circles10k";
-        w.bounds = {0.0, 1000.0, 0.0, 1000.0};
+        w.name = name;
+        w.bounds = {0.0, side, 0.0, side};
         w.robotRadius = 0.0;
-        w.queries.push_back({"default", {1.0, 1.0}, {999.0, 999.0}});
+        w.queries.push_back({"default", {1.0, 1.0}, {side - 1.0, side - 1.0}});
         std::mt19937_64 rng(20240611);
-        std::uniform_real_distribution<double> pos(0.0, 1000.0);
+        std::uniform_real_distribution<double> pos(0.0, side);
         std::uniform_real_distribution<double> rad(0.5, 3.0);
-        while (w.circles.size() < 10000)
+        while (w.circles.size() < count)
         {
             const Circle c{{pos(rng), pos(rng)}, rad(rng)};
             if (distance(c.center, w.queries[0].start) > c.radius &&
@@ -193,10 +195,11 @@ int main(int argc, char **argv)
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
         return 1;
-    for (const World &w : {bfoCase2World(), manyCirclesWorld()})
+    for (const World &w :
+         {bfoCase2World(), manyCirclesWorld(1000, 316.22776601683796, "circles1k"), manyCirclesWorld()})
     {
         auto queries = std::make_shared<Queries>(w);
-        for (CollisionBackend b : {CollisionBackend::Analytic, CollisionBackend::FCL})
+        for (CollisionBackend b : {CollisionBackend::Analytic, CollisionBackend::FCL, CollisionBackend::Hash})
             registerCase(std::make_shared<Case>(w, b, queries));
     }
     benchmark::RunSpecifiedBenchmarks();

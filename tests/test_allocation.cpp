@@ -77,5 +77,7 @@ TEST(Allocation, CollisionQueriesDoNotAllocate)
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(rects, CollisionBackend::Analytic), rects.bounds), none);
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(rects, CollisionBackend::FCL), rects.bounds), none);
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(many, CollisionBackend::FCL), many.bounds), none);
+    EXPECT_EQ(allocationsDuring(*makeCollisionModel(many, CollisionBackend::Hash), many.bounds), none);
+    EXPECT_EQ(allocationsDuring(*makeCollisionModel(rects, CollisionBackend::Hash), rects.bounds), none);
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(grid, CollisionBackend::Grid), grid.bounds), none);
 }

@@ -15,6 +15,7 @@
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/sim/Simulation.h"
 #include "mhplan/base/World.h"
+#include "mhplan/bench/Improvements.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Exception.h>
@@ -411,6 +412,49 @@ TEST_F(TinyCampaign, SolutionPathsAreSavedPerRun)
     EXPECT_EQ(last.size(), 6u);
     for (const auto &r : last)
         EXPECT_NEAR(std::atof(r[1].c_str()), std::atof(r[0].c_str()), 1e-9 * std::atof(r[0].c_str()));
+}
+
+TEST_F(TinyCampaign, EveryImprovementIsStoredPerRunAndEndsAtTheSolution)
+{
+    const Sql sql(campaign_->database);
+    ASSERT_EQ(sql.columns("improvements"), (std::set<std::string>{"runid", "time", "cost", "source"}));
+    // Every exact run has rows; the last row's cost is the returned path's length (path-length objective),
+    // no row is later than the run's time, and costs strictly decrease.
+    const auto runs =
+        sql.rows("SELECT runs.id, runs.path_length, runs.time, plannerConfigs.name, runs.improvements "
+                 "FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                 "WHERE runs.status = 6");
+    ASSERT_FALSE(runs.empty());
+    std::set<std::string> sources;
+    for (const auto &r : runs)
+    {
+        const auto rows = sql.rows("SELECT time, cost, source FROM improvements WHERE runid = " + r[0] +
+                                   " ORDER BY time, cost DESC");
+        ASSERT_FALSE(rows.empty()) << r[3];
+        EXPECT_EQ(std::to_string(rows.size()), r[4]) << "run property 'improvements' counts the rows";
+        for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+            sources.insert(r[3] + ":" + rows[i][2]);
+            EXPECT_LE(std::atof(rows[i][0].c_str()), std::atof(r[2].c_str()) + 1e-3);
+            if (i > 0)
+            {
+                EXPECT_LT(std::atof(rows[i][1].c_str()), std::atof(rows[i - 1][1].c_str()));
+            }
+        }
+        const double length = std::atof(r[1].c_str());
+        EXPECT_NEAR(std::atof(rows.back()[1].c_str()), length, 1e-9 * length) << r[3];
+    }
+    // RRT* reports through the callback.
+    EXPECT_TRUE(sources.count("geometric_RRTstar:callback"));
+    // The side file next to each log holds the same rows.
+    const auto all = enumerateExperiments(*campaign_, resolveShipped);
+    for (const auto &e : all)
+        EXPECT_TRUE(fs::exists(improvementsFile(*campaign_, e))) << e.name;
+    // No rows for runs that do not exist (crashed runs have none either).
+    EXPECT_EQ(sql.count("SELECT count(*) FROM improvements WHERE runid NOT IN (SELECT id FROM runs)"), 0);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM improvements JOIN runs ON improvements.runid = runs.id "
+                        "WHERE runs.status = 7"),
+              0);
 }
 
 TEST_F(TinyCampaign, ShardedRunsMergeToTheSameRows)

@@ -467,7 +467,7 @@ TEST(CollisionModels, FclRejectsGridWorlds)
     EXPECT_THROW(FclCollisionModel{w}, InputError);
 }
 
-TEST(CollisionModels, AutoPicksAnalyticUpTo64ObstaclesAndFclAbove)
+TEST(CollisionModels, AutoPicksAnalyticUpTo64ObstaclesAndTheSpatialHashAbove)
 {
     World w = baseWorld("many", 0.0);
     std::mt19937_64 rng(3);
@@ -475,7 +475,7 @@ TEST(CollisionModels, AutoPicksAnalyticUpTo64ObstaclesAndFclAbove)
         w.circles.push_back({{uniform(rng, 1, 9), uniform(rng, 1, 9)}, 0.05});
     EXPECT_EQ(makeCollisionModel(w, CollisionBackend::Auto)->name(), "analytic");
     w.polygons.push_back(makePolygon({{1, 1}, {1.1, 1}, {1.1, 1.1}}));
-    EXPECT_EQ(makeCollisionModel(w, CollisionBackend::Auto)->name(), "fcl");
+    EXPECT_EQ(makeCollisionModel(w, CollisionBackend::Auto)->name(), "hash");
     EXPECT_EQ(makeCollisionModel(w, CollisionBackend::Analytic)->name(), "analytic");
     EXPECT_EQ(makeCollisionModel(w, CollisionBackend::FCL)->name(), "fcl");
 }

@@ -65,6 +65,9 @@ class Database:
     run_columns: list
     progress_columns: list
     progress: dict = field(default_factory=dict)  # runid -> list of (time, {column: value})
+    # runid -> [(time, cost, source), ...] by time: every improvement of the solution (mhplan's table
+    # improvements; None when the database has no such table, e.g. older campaigns).
+    improvements: dict = None
     notes: list = field(default_factory=list)  # plain-language gaps found while reading
 
     def runs_of(self, experiment_id, planner=None):
@@ -150,7 +153,16 @@ def load(path):
                 progress.setdefault(values["runid"], []).append((to_float(values["time"]), values))
         else:
             notes.append("The database has no progress table: no convergence plots.")
-        return Database(path, experiments, planners, runs, run_cols, progress_cols, progress, notes)
+        improvements = None
+        if "improvements" in tables:
+            improvements = {}
+            cur.execute("SELECT runid, time, cost, source FROM improvements ORDER BY runid, time, cost DESC")
+            for runid, t, c, source in cur.fetchall():
+                improvements.setdefault(runid, []).append((to_float(t), to_float(c), source))
+        else:
+            notes.append("The database has no improvements table: times to quality come from the progress samples "
+                         "(a sampling interval late at most).")
+        return Database(path, experiments, planners, runs, run_cols, progress_cols, progress, improvements, notes)
     finally:
         conn.close()
 

@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import papers, simulations, stats, worlds  # noqa: E402
+from . import papers, quality, scaling, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -63,7 +63,8 @@ def _run_length(database, run):
 # ---------------------------------------------------------------------------------------------- tables
 def table_rows(database, exp):
     """Per planner of one experiment: runs, outcome counts, length min/mean/std/median, time of the best run,
-    mean time, median gap, median time to within 1% of the optimum. Lengths only over exact runs."""
+    mean time, median gap, median time to within 1% of the optimum (quality.summary: every improvement, censored
+    runs at +inf, with its CI). Lengths only over exact runs."""
     opt = _optimum(exp)
     gap_col = _column(database, ["optimality_gap"])
     rows = []
@@ -89,35 +90,10 @@ def table_rows(database, exp):
                 "best_time": dbmod.run_value(best[1], "time") if best else None,
                 "mean_time": stats.mean(times),
                 "median_gap": stats.median(gaps),
-                "t1pct": _median_time_to_within(database, runs, opt, 0.01),
+                "t1": quality.summary(database, runs, opt, 0.01),
             }
         )
     return rows
-
-
-def _time_to_within(database, run, opt, tol):
-    """First time the run's cost was within tol of the optimum (progress 'best cost', else the final exact
-    path and the run's time); None when it never was."""
-    target = opt * (1.0 + tol)
-    samples = database.progress.get(run.id)
-    if samples and "best_cost" in database.progress_columns:
-        for t, values in samples:
-            c = dbmod.to_float(values.get("best_cost"))
-            if c is not None and t is not None and c <= target:
-                return t
-    if run.outcome == "exact":
-        length = _run_length(database, run)
-        if length is not None and length <= target:
-            return dbmod.run_value(run, "time")
-    return None
-
-
-def _median_time_to_within(database, runs, opt, tol):
-    if not opt or not runs:
-        return None
-    ts = sorted(math.inf if t is None else t for t in (_time_to_within(database, r, opt, tol) for r in runs))
-    m = float(np.median(ts))
-    return m  # may be inf: more than half of the runs never got there
 
 
 def _fmt(v, digits=3, suffix=""):
@@ -483,13 +459,13 @@ def write_report(database_path, outdir, world_dir=None):
         parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), _fmt(opt, 4) if opt else "not recorded (no gaps)"))
         parts.append(
             _table(
-                ["planner", "success rate", "median gap", "median time to within 1% [s]", "runs"],
+                ["planner", "success rate", "median gap", "median time to within 1% [s] [95% CI] (reached/runs)", "runs"],
                 [
                     (
                         html.escape(r["planner"]),
                         "%.0f%%" % (100.0 * r["counts"]["exact"] / max(r["runs"], 1)),
                         _fmt(r["median_gap"], 2, "%"),
-                        _fmt(r["t1pct"], 4),
+                        quality.fmt(r["t1"], 4),
                         r["runs"],
                     )
                     for r in rows
@@ -519,6 +495,9 @@ def write_report(database_path, outdir, world_dir=None):
             rows += [("%s (paper)" % html.escape(n), "%.5g" % l, "%.2f" % t if t else "&ndash;") for n, l, t in papers.BFO_REPORTED[_world_name(exp)]]
             parts.append("<h3>%s</h3>" % html.escape(exp.name))
             parts.append(_table(["algorithm", "best length", "time of best run [s]"], rows))
+
+    if planning:
+        parts.extend(scaling.scaling_section(database, planning, outdir, colors, notes, _table))
 
     if moving:
         parts.extend(moving_worlds_section(database, moving, outdir, notes))
@@ -553,6 +532,16 @@ def write_report(database_path, outdir, world_dir=None):
                     (html.escape(r["planner"]), r["runs"], r["counts"]["exact"], r["counts"]["approximate"], r["counts"]["failed"], r["counts"]["crashed"], _fmt(r["min"], 4), _fmt(r["median"], 4), _fmt(r["mean"], 4), _fmt(r["std"], 4), _fmt(r["mean_time"], 4))
                     for r in rows
                 ],
+            )
+        )
+        parts.append("<p>Time to quality [s]: median [95%% CI] (runs that got there / runs); a run that never got "
+                     "there counts as +&infin;%s.</p>" % ("" if database.improvements is not None else
+                                                         " (no improvements table: from the progress samples)"))
+        parts.append(
+            _table(
+                ["planner"] + [label for _, _, label in quality.LEVELS],
+                [(html.escape(q["planner"]),) + tuple(quality.fmt(q[key], 4) for key, _, _ in quality.LEVELS)
+                 for q in quality.rows(database, exp, _optimum(exp))],
             )
         )
     if notes:

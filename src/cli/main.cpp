@@ -27,7 +27,7 @@ namespace
             {"plan",
              {cmdPlan,
               "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
-              "        [--set key=value]... [--backend auto|analytic|fcl|grid] [--svg FILE]"}},
+              "        [--set key=value]... [--backend auto|analytic|fcl|grid|hash] [--svg FILE]"}},
             {"generate",
              {cmdGenerate,
               "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
@@ -40,22 +40,26 @@ namespace
               "compare [WORLD...] [--planners A,B,...] [--time S] [--runs N] [--seed N]\n"
               "        (plan every shipped world, or the given ones, with each planner; print a table)"}},
             {"optimum",
-             {cmdOptimum, "optimum WORLD [--query NAME | --start X,Y --goal X,Y] [--octile] [--svg FILE]\n"
-                          "        (the exact shortest path: tangent graph, any-angle or 8-connected on grids)"}},
+             {cmdOptimum,
+              "optimum WORLD [--query NAME | --start X,Y --goal X,Y] [--octile] [--svg FILE]\n"
+              "        (the exact shortest path: tangent graph, any-angle or 8-connected on grids)"}},
             {"report",
              {cmdReport,
               "report DATABASE [-o DIR]   (HTML report: figures and tables from a benchmark database)"}},
             {"bench",
-             {cmdBench, "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
-                        "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
+             {cmdBench,
+              "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
+              "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
             {"scen",
-             {cmdScen, "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
-                       "        (run every problem of a MovingAI scenario file; compare lengths with its optima)"}},
+             {cmdScen,
+              "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
+              "        (run every problem of a MovingAI scenario file; compare lengths with its optima)"}},
             {"sim",
-             {cmdSim, "sim SCENARIO --controller NAME [--seed N] [--set key=value]... [--time-limit S]\n"
-                      "        [--svg FILE] [--no-replay] [--gif FILE] [--gif-width PX] [--fps F] [--max-frames N]\n"
-                      "        [--csv FILE]   (run a moving-world scenario, e.g. mapf_15robots; exit 0: all robots\n"
-                      "        done, 3: some stuck or unfinished, 1: bad input)"}},
+             {cmdSim,
+              "sim SCENARIO --controller NAME [--seed N] [--set key=value]... [--time-limit S]\n"
+              "        [--svg FILE] [--no-replay] [--gif FILE] [--gif-width PX] [--fps F] [--max-frames N]\n"
+              "        [--csv FILE]   (run a moving-world scenario, e.g. mapf_15robots; exit 0: all robots\n"
+              "        done, 3: some stuck or unfinished, 1: bad input)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
         };

@@ -3,6 +3,7 @@
 
 #include "mhplan/collision/FclCollision.h"
 #include "mhplan/collision/GridCollision.h"
+#include "mhplan/collision/SpatialHash.h"
 
 #include <algorithm>
 #include <limits>
@@ -106,7 +107,10 @@ namespace mhplan
             return CollisionBackend::FCL;
         if (name == "grid")
             return CollisionBackend::Grid;
-        throw InputError("unknown collision back end '" + name + "'; accepted: auto, analytic, fcl, grid");
+        if (name == "hash")
+            return CollisionBackend::Hash;
+        throw InputError("unknown collision back end '" + name +
+                         "'; accepted: auto, analytic, fcl, grid, hash");
     }
 
     std::string toString(CollisionBackend backend)
@@ -121,6 +125,8 @@ namespace mhplan
             return "fcl";
         case CollisionBackend::Grid:
             return "grid";
+        case CollisionBackend::Hash:
+            return "hash";
         }
         return "auto";
     }
@@ -133,7 +139,7 @@ namespace mhplan
                 backend = CollisionBackend::Grid;
             else
                 backend = world.obstacleCount() <= kAutoAnalyticMaxObstacles ? CollisionBackend::Analytic
-                                                                             : CollisionBackend::FCL;
+                                                                             : CollisionBackend::Hash;
         }
         switch (backend)
         {
@@ -143,6 +149,8 @@ namespace mhplan
             return std::make_shared<FclCollisionModel>(world);
         case CollisionBackend::Grid:
             return std::make_shared<GridCollisionModel>(world);
+        case CollisionBackend::Hash:
+            return std::make_shared<SpatialHashCollisionModel>(world);
         case CollisionBackend::Auto:
             break;
         }

@@ -10,22 +10,6 @@ namespace mhplan
 {
     namespace
     {
-        /** Portable uniform numbers (std distributions differ between standard libraries). */
-        class PortableRandom
-        {
-          public:
-            explicit PortableRandom(std::uint64_t seed) : engine_(seed) {}
-            double uniform01() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-            double uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
-            std::size_t index(std::size_t n)
-            {
-                return static_cast<std::size_t>(uniform01() * static_cast<double>(n));
-            }
-
-          private:
-            std::mt19937_64 engine_;
-        };
-
         void checkCommon(const GeneratorOptions &o, bool geometric)
         {
             if (!(o.bounds.xmin < o.bounds.xmax) || !(o.bounds.ymin < o.bounds.ymax))

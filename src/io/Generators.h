@@ -6,9 +6,27 @@
 #include "mhplan/base/World.h"
 
 #include <cstdint>
+#include <random>
 
 namespace mhplan
 {
+    /** \brief Portable uniform numbers for the world generators (std distributions differ between standard
+        libraries): a 64-bit Mersenne twister mapped to [0, 1) with 53 bits. */
+    class PortableRandom
+    {
+      public:
+        explicit PortableRandom(std::uint64_t seed) : engine_(seed) {}
+        double uniform01() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+        double uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+        std::size_t index(std::size_t n)
+        {
+            return static_cast<std::size_t>(uniform01() * static_cast<double>(n));
+        }
+
+      private:
+        std::mt19937_64 engine_;
+    };
+
     /** \brief Options shared by the generators. Sizes are in metres (grid: cells). */
     struct GeneratorOptions
     {
