@@ -5,6 +5,7 @@
 #include "LRSMA.h"
 #include "MountainGazelle.h"
 #include "Genetic.h"
+#include "MemeticGenetic.h"
 #include "BacterialForaging.h"
 #include "ArtificialPotentialField.h"
 #include "AStar.h"
@@ -160,6 +161,10 @@ namespace mhplan
                    p->setInitialisation("walk");
                    return p;
                }});
+        r.add({"GA-MEM", "mhplan",
+               "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
+               "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
+               omplAllocator<MemeticGenetic>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()
