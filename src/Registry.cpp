@@ -6,6 +6,7 @@
 #include "MountainGazelle.h"
 #include "Genetic.h"
 #include "MemeticGenetic.h"
+#include "MemeticOffsetPlanners.h"
 #include "BacterialForaging.h"
 #include "ArtificialPotentialField.h"
 #include "AStar.h"
@@ -165,6 +166,18 @@ namespace mhplan
                "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
                "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
                omplAllocator<MemeticGenetic>()});
+        r.add({"SMA-MEM", "mhplan",
+               "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
+               "along the best path, feasible decoding, local search, restarts",
+               omplAllocator<MemeticSlimeMould>()});
+        r.add({"LRSMA-MEM", "mhplan",
+               "LRSMA, improved memetic variant (not in the paper): SMA-MEM with LRSMA's Levy flight and "
+               "rotation perturbation on station offsets",
+               omplAllocator<MemeticLRSMA>()});
+        r.add({"MGO-MEM", "mhplan",
+               "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
+               "stations along the best path, feasible decoding, local search, restarts",
+               omplAllocator<MemeticGazelle>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()
