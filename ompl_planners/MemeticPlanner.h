@@ -31,8 +31,9 @@ namespace mhplan
           walk checked by the motion validator, and every operator keeps feasibility (moves are accepted
           only when the motion validator accepts the changed segments).
         - Feasible initial population: \c population_size randomised lattice walks (MemeticToolkit::
-          randomWalk, a new random cost field per walk of strength drawn in [0, \c walk_noise), the first
-          walk noiseless; every other later walk passes a random valid via point, uniformly along the start-goal
+          randomWalk, a new random cost field per walk of strength drawn in [0, \c walk_noise), heuristic
+          weight \c walk_weight; the first walk is noiseless with weight 1 (A* on the lattice: the shortest
+          lattice path, often in the optimum's homotopy class); every other later walk passes a random valid via point, uniformly along the start-goal
           line between 15 % and 85 % and off it by up to 0.3 of its length), each shortened by the local search. Multi-resolution: the lattice step starts at 1/16 of the bounds'
           larger side and halves whenever a walk exhausts its lattice (no path at that resolution), at most
           \c lattice_levels times; the level reached is kept for later walks. A walk stops after
@@ -84,6 +85,9 @@ namespace mhplan
         /** \brief Largest priority noise of the walks (0..10). */
         void setWalkNoise(double noise);
         double getWalkNoise() const { return walkNoise_; }
+        /** \brief Heuristic weight of the walks after the first (1..10). */
+        void setWalkWeight(double w);
+        double getWalkWeight() const { return walkWeight_; }
         /** \brief Node budget of one walk (1000..100000000). */
         void setWalkExpansions(unsigned int n);
         unsigned int getWalkExpansions() const { return walkExpansions_; }
@@ -167,7 +171,8 @@ namespace mhplan
       private:
         bool prepareProblem();
         /** \brief A walk from \e from to \e to, halving the lattice step on exhaustion (level_ persists). */
-        MemeticToolkit::WalkResult walk(MemeticPath &path, const Vec2 &from, const Vec2 &to, double noise);
+        MemeticToolkit::WalkResult walk(MemeticPath &path, const Vec2 &from, const Vec2 &to, double noise,
+                                        double weight);
         /** \brief Fill pop_ with walks up to N; false when interrupted. */
         bool fillPopulation();
         void polishElite();
@@ -181,6 +186,7 @@ namespace mhplan
         unsigned int maxIterations_{0};
         unsigned long seed_{0};
         double walkNoise_{3.0};
+        double walkWeight_{1.5};
         unsigned int walkExpansions_{400000};
         unsigned int latticeLevels_{8};
         double coarseTurn_{0.35};

@@ -38,7 +38,7 @@ namespace mhplan
 
         Feasible paths (randomWalk()): a randomised weighted best-first search on the lattice start + h (i, j)
         over the 8 compass moves (edge checks by the motion validator, lazily when a node is taken from the
-        queue), priority g + 2 d(goal) with every edge's cost multiplied by 1 + noise (1 + f(m)) / 2 at the
+        queue), priority g + w d(goal) (\e weight w: 1 is A*, larger is greedier) with every edge's cost multiplied by 1 + noise (1 + f(m)) / 2 at the
         edge's midpoint m, f a random smooth field in [-1, 1] (six plane waves of random direction, phase and
         wavelength between 1/24 and 1/3 of the bounds' diagonal, drawn by randomiseField()): spatially
         correlated noise, so that walks take different homotopy classes (independent noise per edge averages
@@ -78,7 +78,7 @@ namespace mhplan
             so far (for approximate solutions) when it is closer than \e closestDistance. */
         WalkResult randomWalk(MemeticPath &path, const Vec2 &start, const Vec2 &goal, double h, double noise,
                               unsigned int maxExpansions, const std::function<bool()> &stop,
-                              MemeticPath &closest, double &closestDistance);
+                              MemeticPath &closest, double &closestDistance, double weight = 2.0);
 
         /** \brief Draw a new random field for the following walks, wavelengths between \e size / 24 and
             \e size / 3 (the bounds' diagonal for whole walks, the span of a re-walk). */
@@ -101,6 +101,12 @@ namespace mhplan
             the length, heavier for larger \e scale) by two segments through a random point off the chord;
             false when no valid detour was found in a few tries. */
         bool detour(MemeticPath &path, double scale);
+
+        /** \brief Flip mutation: move a random turning waypoint to the other side of the chord of its
+            neighbours (its mirror image, then 1.5 and 2.5 times as far), so that the path passes the obstacle
+            that held it on the other side; false when no mirrored point gave valid segments (4 waypoints
+            tried). */
+        bool flip(MemeticPath &path);
 
         /** \brief Re-walk mutation: replace the piece between arc positions s1 < s2 (span a random share of
             the length, heavier for larger \e scale) by a new randomised lattice walk between its ends (step

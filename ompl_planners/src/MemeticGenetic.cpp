@@ -79,8 +79,11 @@ namespace mhplan
                 child.path = pop_[a].path;
             if (!changed || rng_.uniform01() < mutationRate_)
             {
-                if (rng_.uniform01() < 0.5)
+                const double u = rng_.uniform01();
+                if (u < 0.25)
                     changed = toolkit().detour(child.path, 0.3) || changed;
+                else if (u < 0.35)
+                    changed = toolkit().flip(child.path) || changed;
                 else
                     changed = toolkit().rewalk(child.path, 0.3, getWalkNoise(), 4000, stopFunction()) || changed;
             }

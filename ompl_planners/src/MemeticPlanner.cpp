@@ -42,6 +42,8 @@ namespace mhplan
                                     "0:1:4294967295");
         declareParam<double>("walk_noise", this, &MemeticPlanner::setWalkNoise, &MemeticPlanner::getWalkNoise,
                              "0.:0.1:10.");
+        declareParam<double>("walk_weight", this, &MemeticPlanner::setWalkWeight,
+                             &MemeticPlanner::getWalkWeight, "1.:0.1:10.");
         declareParam<unsigned int>("walk_expansions", this, &MemeticPlanner::setWalkExpansions,
                                    &MemeticPlanner::getWalkExpansions, "1000:1000:100000000");
         declareParam<unsigned int>("lattice_levels", this, &MemeticPlanner::setLatticeLevels,
@@ -98,6 +100,12 @@ namespace mhplan
     {
         checkParameterRange("walk_noise", noise, 0.0, 10.0);
         walkNoise_ = noise;
+    }
+
+    void MemeticPlanner::setWalkWeight(double w)
+    {
+        checkParameterRange("walk_weight", w, 1.0, 10.0);
+        walkWeight_ = w;
     }
 
     void MemeticPlanner::setWalkExpansions(unsigned int n)
@@ -287,13 +295,14 @@ namespace mhplan
     }
 
     MemeticToolkit::WalkResult MemeticPlanner::walk(MemeticPath &path, const Vec2 &from, const Vec2 &to,
-                                                    double noise)
+                                                    double noise, double weight)
     {
         while (true)
         {
             const double h = scale_ / 16.0 / std::pow(2.0, double(level_));
             const MemeticToolkit::WalkResult r =
-                toolkit_->randomWalk(path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_);
+                toolkit_->randomWalk(path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_,
+                                     weight);
             if (r != MemeticToolkit::WalkResult::Exhausted)
                 return r;
             if (level_ + 1 >= latticeLevels_)
@@ -332,11 +341,11 @@ namespace mhplan
         {
             MemeticPath second;
             const double keepDistance = closestDistance_;
-            r = walk(out.path, start_, via, noise);
+            r = walk(out.path, start_, via, noise, walkWeight_);
             closestDistance_ = keepDistance; // the approximate solution is about the goal, not the via point
             if (r == MemeticToolkit::WalkResult::Found)
             {
-                r = walk(second, via, goal_, noise);
+                r = walk(second, via, goal_, noise, walkWeight_);
                 if (r == MemeticToolkit::WalkResult::Found)
                     out.path.insert(out.path.end(), second.begin() + 1, second.end());
             }
@@ -345,7 +354,7 @@ namespace mhplan
         }
         else
         {
-            r = walk(out.path, start_, goal_, noise);
+            r = walk(out.path, start_, goal_, noise, walks_ == 1 ? 1.0 : walkWeight_);
             if (r == MemeticToolkit::WalkResult::Exhausted)
             {
                 noPath_ = true;

@@ -126,7 +126,8 @@ namespace mhplan
                                                           const Vec2 &goal, double h, double noise,
                                                           unsigned int maxExpansions,
                                                           const std::function<bool()> &stop,
-                                                          MemeticPath &closest, double &closestDistance)
+                                                          MemeticPath &closest, double &closestDistance,
+                                                          double weight)
     {
         static const int kMoves[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
                                          {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
@@ -149,7 +150,7 @@ namespace mhplan
         std::priority_queue<Entry> open;
         nodes_.push_back({0, 0, none, std::numeric_limits<double>::infinity(), false});
         index_.emplace(key(0, 0), 0u);
-        open.push({2.0 * distance(start, goal), 0.0, 0u, none});
+        open.push({weight * distance(start, goal), 0.0, 0u, none});
         const double reach = 2.0 * h;
         unsigned int expansions = 0;
         auto chain = [&](std::uint32_t n, MemeticPath &out)
@@ -220,7 +221,7 @@ namespace mhplan
                 if (nb.closed || g >= nb.g)
                     continue;
                 nb.g = g;
-                open.push({g + 2.0 * distance(q, goal), g, id, e.node});
+                open.push({g + weight * distance(q, goal), g, id, e.node});
             }
         }
         return WalkResult::Exhausted;
@@ -504,6 +505,30 @@ namespace mhplan
         return false;
     }
 
+    bool MemeticToolkit::flip(MemeticPath &path)
+    {
+        if (path.size() < 3)
+            return false;
+        for (int attempt = 0; attempt < 4; ++attempt)
+        {
+            const auto i = static_cast<std::size_t>(rng_.uniformInt(1, int(path.size()) - 2));
+            const Vec2 a = path[i - 1], v = path[i], b = path[i + 1];
+            if (turnAngle(a, v, b) < 1e-3)
+                continue;
+            const Vec2 proj = closestPointOnSegment(v, a, b);
+            for (const double lambda : {1.0, 1.5, 2.5})
+            {
+                const Vec2 w = proj + (proj - v) * lambda;
+                if (inBounds(w) && pointValid(w) && motionValid(a, w) && motionValid(w, b))
+                {
+                    path[i] = w;
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     bool MemeticToolkit::rewalk(MemeticPath &path, double scale, double noise, unsigned int maxExpansions,
                                 const std::function<bool()> &stop)
     {
@@ -520,7 +545,7 @@ namespace mhplan
         randomiseField(3.0 * span);
         MemeticPath piece, closest;
         double closestDistance = std::numeric_limits<double>::infinity();
-        if (randomWalk(piece, p1, p2, span / 24.0, noise, maxExpansions, stop, closest, closestDistance) !=
+        if (randomWalk(piece, p1, p2, span / rng_.uniformReal(24.0, 96.0), noise, maxExpansions, stop, closest, closestDistance) !=
             WalkResult::Found)
             return false;
         MemeticPath out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(seg1 + 1));
