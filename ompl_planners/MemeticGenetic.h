@@ -14,18 +14,20 @@ namespace mhplan
         close to each other (MemeticToolkit::splice: one or two joints with equal probability, joint radius
         2.5 resampling steps of the first parent, the joints checked by the motion validator); with
         probability \c mutation_rate (and always when the crossover found no joint) one of three mutations
-        (probabilities 0.25, 0.1, 0.65: the re-walk was measured to find most class changes), each of which moves a piece of the path to the other side of nearby obstacles
-        (another homotopy class): a detour through a random point (MemeticToolkit::detour, span scale 0.3),
-        a flip of a waypoint across the chord of its neighbours (MemeticToolkit::flip) or a re-walk of a
-        piece (MemeticToolkit::rewalk, span scale 0.3, at most 4000 lattice nodes). The offspring is tightened and evaluated and enters by
-        deterministic crowding (it replaces the most similar individual, by the signature distance, when it
-        is cheaper), so paths in different homotopy classes survive side by side and the best is never lost.
-        With probability \c immigrant_rate per generation one fresh walk enters the same way. Offspring
-        identical to their parent (no operator applied) are not evaluated. */
+        (probabilities 0.25, 0.1, 0.65: the re-walk was measured to find most class changes), each of which
+       moves a piece of the path to the other side of nearby obstacles (another homotopy class): a detour
+       through a random point (MemeticToolkit::detour, span scale 0.3), a flip of a waypoint across the chord
+       of its neighbours (MemeticToolkit::flip) or a re-walk of a piece (MemeticToolkit::rewalk, span scale
+       0.3, at most 4000 lattice nodes). The offspring is tightened and evaluated and enters by deterministic
+       crowding (it replaces the most similar individual, by the signature distance, when it is cheaper), so
+       paths in different homotopy classes survive side by side and the best is never lost. With probability
+       \c immigrant_rate per generation one fresh walk enters the same way. Offspring identical to their
+       parent (no operator applied) are not evaluated. */
     class MemeticGenetic : public MemeticPlanner
     {
       public:
-        explicit MemeticGenetic(const ompl::base::SpaceInformationPtr &si, const std::string &name = "GA-MEM");
+        explicit MemeticGenetic(const ompl::base::SpaceInformationPtr &si,
+                                const std::string &name = "GA-MEM");
 
         void setCrossoverRate(double r);
         double getCrossoverRate() const { return crossoverRate_; }

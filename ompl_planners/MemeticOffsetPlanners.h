@@ -86,16 +86,17 @@ namespace mhplan
         std::vector<std::size_t> seg_;
     };
 
-    /** \brief SMA-MEM: the slime mould algorithm's update (Li et al. 2020) on station offsets. Each generation:
-        rank by cost; weights W = 1 +- r log10((bF - S_i) / (bF - wF - eps) + 1) (better half plus); a =
-        arctanh(1 - t/T), b = 1 - t/T; each slime mould is redrawn uniformly with probability \c z, else per
-        offset X_j = X_best_j + vb_j (W_ij X_A_j - X_B_j) when r < tanh|S_i - DF|, else vc_j X_j (X_best = 0,
-        the reference; DF its cost); every new position is decoded, improved, evaluated and replaces the old
-        one (as in SMA; the best is archived as the reference). */
+    /** \brief SMA-MEM: the slime mould algorithm's update (Li et al. 2020) on station offsets. Each
+       generation: rank by cost; weights W = 1 +- r log10((bF - S_i) / (bF - wF - eps) + 1) (better half
+       plus); a = arctanh(1 - t/T), b = 1 - t/T; each slime mould is redrawn uniformly with probability \c z,
+       else per offset X_j = X_best_j + vb_j (W_ij X_A_j - X_B_j) when r < tanh|S_i - DF|, else vc_j X_j
+       (X_best = 0, the reference; DF its cost); every new position is decoded, improved, evaluated and
+       replaces the old one (as in SMA; the best is archived as the reference). */
     class MemeticSlimeMould : public OffsetMemeticPlanner
     {
       public:
-        explicit MemeticSlimeMould(const ompl::base::SpaceInformationPtr &si, const std::string &name = "SMA-MEM");
+        explicit MemeticSlimeMould(const ompl::base::SpaceInformationPtr &si,
+                                   const std::string &name = "SMA-MEM");
         void setZ(double z);
         double getZ() const { return z_; }
 

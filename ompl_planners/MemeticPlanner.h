@@ -33,11 +33,12 @@ namespace mhplan
         - Feasible initial population: \c population_size randomised lattice walks (MemeticToolkit::
           randomWalk, a new random cost field per walk of strength drawn in [0, \c walk_noise), heuristic
           weight \c walk_weight; the first walk is noiseless with weight 1 (A* on the lattice: the shortest
-          lattice path, often in the optimum's homotopy class); every other later walk passes a random valid via point, uniformly along the start-goal
-          line between 15 % and 85 % and off it by up to 0.3 of its length), each shortened by the local search. Multi-resolution: the lattice step starts at 1/16 of the bounds'
-          larger side and halves whenever a walk exhausts its lattice (no path at that resolution), at most
-          \c lattice_levels times; the level reached is kept for later walks. A walk stops after
-          \c walk_expansions nodes (then it is retried later with other noise).
+          lattice path, often in the optimum's homotopy class); every other later walk passes a random valid
+       via point, uniformly along the start-goal line between 15 % and 85 % and off it by up to 0.3 of its
+       length), each shortened by the local search. Multi-resolution: the lattice step starts at 1/16 of the
+       bounds' larger side and halves whenever a walk exhausts its lattice (no path at that resolution), at
+       most \c lattice_levels times; the level reached is kept for later walks. A walk stops after \c
+       walk_expansions nodes (then it is retried later with other noise).
         - Memetic local search: every new individual is tightened with the coarse turn limit
           \c coarse_turn (MemeticToolkit::tighten, relative tolerance 1e-4, at most 30 passes); the best
           individual is polished after every generation with the fine limit \c fine_turn (tolerance 1e-10,

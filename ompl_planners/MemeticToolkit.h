@@ -32,19 +32,21 @@ namespace mhplan
           the path (the chord move and the slides cannot, by the triangle inequality);
         - adaptive subdivision: a waypoint whose turn exceeds \e maxTurn gets the midpoints of its two
           segments inserted (a polyline wrapped round a circle with per-vertex turn x is longer than the arc
-          by about x^2 / 12: maxTurn 0.1 bounds that excess to 0.08 % of the arcs);
+          by about x^2 / 12: maxTurn 0.1 bounds that excess to 0.08 % of the arcs); an inserted point is kept
+          only when both halves of its segment pass the motion validator (a sampling validator may refuse a
+          piece of a segment it accepted);
         until a pass shortens the path by less than \e relTol of its length, or \e maxPasses passes. Only
         waypoints whose neighbourhood changed in the previous pass are moved again.
 
         Feasible paths (randomWalk()): a randomised weighted best-first search on the lattice start + h (i, j)
         over the 8 compass moves (edge checks by the motion validator, lazily when a node is taken from the
-        queue), priority g + w d(goal) (\e weight w: 1 is A*, larger is greedier) with every edge's cost multiplied by 1 + noise (1 + f(m)) / 2 at the
-        edge's midpoint m, f a random smooth field in [-1, 1] (six plane waves of random direction, phase and
-        wavelength between 1/24 and 1/3 of the bounds' diagonal, drawn by randomiseField()): spatially
-        correlated noise, so that walks take different homotopy classes (independent noise per edge averages
-        out along a path and sends every walk the same way). A walk ends when a
-        node sees the goal within 2 h, when the queue is exhausted (no path at this resolution: the caller
-        halves h) or after \e maxExpansions nodes. */
+        queue), priority g + w d(goal) (\e weight w: 1 is A*, larger is greedier) with every edge's cost
+       multiplied by 1 + noise (1 + f(m)) / 2 at the edge's midpoint m, f a random smooth field in [-1, 1]
+       (six plane waves of random direction, phase and wavelength between 1/24 and 1/3 of the bounds'
+       diagonal, drawn by randomiseField()): spatially correlated noise, so that walks take different homotopy
+       classes (independent noise per edge averages out along a path and sends every walk the same way). A
+       walk ends when a node sees the goal within 2 h, when the queue is exhausted (no path at this
+       resolution: the caller halves h) or after \e maxExpansions nodes. */
     class MemeticToolkit
     {
       public:
@@ -61,6 +63,8 @@ namespace mhplan
 
         /** \brief The motion validator's verdict on a segment (both ends inside the bounds). Counted. */
         bool motionValid(const Vec2 &a, const Vec2 &b);
+        /** \brief Every segment of \e path passes motionValid(). */
+        bool pathValid(const MemeticPath &path);
         /** \brief The validity checker's verdict on a point inside the bounds. */
         bool pointValid(const Vec2 &p);
         unsigned long motionChecks() const { return motionChecks_; }
@@ -110,8 +114,8 @@ namespace mhplan
 
         /** \brief Re-walk mutation: replace the piece between arc positions s1 < s2 (span a random share of
             the length, heavier for larger \e scale) by a new randomised lattice walk between its ends (step
-            span / 24, field wavelengths from span / 8 to span, at most \e maxExpansions nodes, a fresh random field of strength \e noise); false when
-            the walk did not connect them. */
+            span / 24, field wavelengths from span / 8 to span, at most \e maxExpansions nodes, a fresh random
+           field of strength \e noise); false when the walk did not connect them. */
         bool rewalk(MemeticPath &path, double scale, double noise, unsigned int maxExpansions,
                     const std::function<bool()> &stop);
 

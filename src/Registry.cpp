@@ -44,6 +44,10 @@ namespace mhplan
 {
     namespace
     {
+        /** \brief Iterations without improvement before the improved variants restart (anytime mode only:
+            max_iterations = 0; see PopulationPlanner::setStagnationRestart). */
+        constexpr unsigned int kAnytimeRestart = 30;
+
         template <typename P> PlannerAllocator omplAllocator()
         {
             return [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
@@ -62,6 +66,7 @@ namespace mhplan
                 p->setGmsImprove(1);
                 p->setGmsScope("all");
                 p->setWaypoints(waypoints);
+                p->setStagnationRestart(kAnytimeRestart);
                 return p;
             };
         }
@@ -160,24 +165,27 @@ namespace mhplan
                {
                    auto p = std::make_shared<Genetic>(si, "GA-WALK");
                    p->setInitialisation("walk");
+                   p->setStagnationRestart(kAnytimeRestart);
                    return p;
                }});
         r.add({"GA-MEM", "mhplan",
                "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
                "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
                omplAllocator<MemeticGenetic>()});
-        r.add({"SMA-MEM", "mhplan",
-               "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
-               "along the best path, feasible decoding, local search, restarts",
-               omplAllocator<MemeticSlimeMould>()});
+        r.add(
+            {"SMA-MEM", "mhplan",
+             "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
+             "along the best path, feasible decoding, local search, restarts",
+             omplAllocator<MemeticSlimeMould>()});
         r.add({"LRSMA-MEM", "mhplan",
                "LRSMA, improved memetic variant (not in the paper): SMA-MEM with LRSMA's Levy flight and "
                "rotation perturbation on station offsets",
                omplAllocator<MemeticLRSMA>()});
-        r.add({"MGO-MEM", "mhplan",
-               "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
-               "stations along the best path, feasible decoding, local search, restarts",
-               omplAllocator<MemeticGazelle>()});
+        r.add(
+            {"MGO-MEM", "mhplan",
+             "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
+             "stations along the best path, feasible decoding, local search, restarts",
+             omplAllocator<MemeticGazelle>()});
     }
 
     const PlannerRegistry &PlannerRegistry::builtin()

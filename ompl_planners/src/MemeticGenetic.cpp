@@ -72,8 +72,8 @@ namespace mhplan
                 if (b == a)
                     b = (a + 1 + static_cast<std::size_t>(rng_.uniformInt(0, int(n) - 2))) % n;
                 const double radius = 2.5 * MemeticToolkit::length(pop_[a].path) / 47.0;
-                changed = toolkit().splice(pop_[a].path, pop_[b].path, radius, rng_.uniform01() < 0.5,
-                                           child.path);
+                changed =
+                    toolkit().splice(pop_[a].path, pop_[b].path, radius, rng_.uniform01() < 0.5, child.path);
             }
             if (!changed)
                 child.path = pop_[a].path;
@@ -85,7 +85,8 @@ namespace mhplan
                 else if (u < 0.35)
                     changed = toolkit().flip(child.path) || changed;
                 else
-                    changed = toolkit().rewalk(child.path, 0.3, getWalkNoise(), 4000, stopFunction()) || changed;
+                    changed =
+                        toolkit().rewalk(child.path, 0.3, getWalkNoise(), 4000, stopFunction()) || changed;
             }
             if (!changed)
                 continue;

@@ -70,8 +70,8 @@ namespace mhplan
             const Vec2 u = ref[i] - ref[i - 1], w = ref[i + 1] - ref[i];
             turn += std::atan2(std::abs(cross(u, w)), dot(u, w));
         }
-        const auto k = static_cast<unsigned int>(
-            std::min<double>(maxStations_, 8.0 + std::ceil(turn / 0.25)));
+        const auto k =
+            static_cast<unsigned int>(std::min<double>(maxStations_, 8.0 + std::ceil(turn / 0.25)));
         const double total = MemeticToolkit::length(ref);
         r_.clear();
         n_.clear();
@@ -182,8 +182,12 @@ namespace mhplan
             }
             q[s + 1] = p;
         }
-        auto station = [&](unsigned int s) { return s == 0 ? ref.front() : s == k + 1 ? ref.back() : r_[s - 1]; };
-        auto segment = [&](unsigned int s) { return s == 0 ? std::size_t(0) : s == k + 1 ? ref.size() - 2 : seg_[s - 1]; };
+        auto station = [&](unsigned int s) {
+            return s == 0 ? ref.front() : s == k + 1 ? ref.back() : r_[s - 1];
+        };
+        auto segment = [&](unsigned int s) {
+            return s == 0 ? std::size_t(0) : s == k + 1 ? ref.size() - 2 : seg_[s - 1];
+        };
         MemeticPath &path = out.path;
         path.clear();
         path.push_back(q[0]);
@@ -270,7 +274,8 @@ namespace mhplan
                 const double vb = rng_.uniformReal(-a, a), vc = rng_.uniformReal(-b, b);
                 const auto A = static_cast<std::size_t>(rng_.uniformInt(0, int(n) - 1));
                 const auto B = static_cast<std::size_t>(rng_.uniformInt(0, int(n) - 1));
-                const double xa = j < next[A].size() ? next[A][j] : 0.0, xb = j < next[B].size() ? next[B][j] : 0.0;
+                const double xa = j < next[A].size() ? next[A][j] : 0.0,
+                             xb = j < next[B].size() ? next[B][j] : 0.0;
                 // X_best = 0: the reference is the best individual.
                 xi[j] = rng_.uniform01() < p ? vb * (w[i][j] * xa - xb) : vc * xi[j];
             }
@@ -410,7 +415,8 @@ namespace mhplan
 
     // ---------------------------------------------------------------- MGO-MEM
 
-    MemeticGazelle::MemeticGazelle(const ob::SpaceInformationPtr &si) : OffsetMemeticPlanner(si, "MGO-MEM", 12)
+    MemeticGazelle::MemeticGazelle(const ob::SpaceInformationPtr &si)
+        : OffsetMemeticPlanner(si, "MGO-MEM", 12)
     {
     }
 
@@ -444,7 +450,8 @@ namespace mhplan
                 cof[3 * d + j] = n3 * n4 * n4 * std::cos(2.0 * r5 * n3);
             }
             auto cofR = [&]() { return cof.data() + std::size_t(rng_.uniformInt(0, 3)) * d; };
-            const std::size_t ra = order[static_cast<std::size_t>(rng_.uniformInt(int(third) - 1, int(n) - 1))];
+            const std::size_t ra =
+                order[static_cast<std::size_t>(rng_.uniformInt(int(third) - 1, int(n) - 1))];
             for (std::size_t k = 0; k < third; ++k)
                 std::swap(perm[k], perm[static_cast<std::size_t>(rng_.uniformInt(int(k), int(n) - 1))]);
             const double r1 = rng_.uniform01(), r2 = rng_.uniform01();

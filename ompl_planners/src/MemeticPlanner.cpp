@@ -48,8 +48,8 @@ namespace mhplan
                                    &MemeticPlanner::getWalkExpansions, "1000:1000:100000000");
         declareParam<unsigned int>("lattice_levels", this, &MemeticPlanner::setLatticeLevels,
                                    &MemeticPlanner::getLatticeLevels, "1:1:16");
-        declareParam<double>("coarse_turn", this, &MemeticPlanner::setCoarseTurn, &MemeticPlanner::getCoarseTurn,
-                             "0.01:0.01:3.");
+        declareParam<double>("coarse_turn", this, &MemeticPlanner::setCoarseTurn,
+                             &MemeticPlanner::getCoarseTurn, "0.01:0.01:3.");
         declareParam<double>("fine_turn", this, &MemeticPlanner::setFineTurn, &MemeticPlanner::getFineTurn,
                              "0.001:0.001:1.");
         declareParam<unsigned int>("polish_passes", this, &MemeticPlanner::setPolishPasses,
@@ -164,11 +164,12 @@ namespace mhplan
         const ob::StateSpacePtr &ss = si_->getStateSpace();
         const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(ss.get());
         if (space == nullptr || space->getDimension() != 2)
-            refuseSetup("needs a 2-dimensional ompl::base::RealVectorStateSpace (the lattice walks, pull moves "
-                        "and crossover joints are planar); got the state space '" +
-                        ss->getName() + "'" +
-                        (space != nullptr ? " of dimension " + std::to_string(space->getDimension()) : "") +
-                        ". Use SMA, LRSMA or MGO in R^k.");
+            refuseSetup(
+                "needs a 2-dimensional ompl::base::RealVectorStateSpace (the lattice walks, pull moves "
+                "and crossover joints are planar); got the state space '" +
+                ss->getName() + "'" +
+                (space != nullptr ? " of dimension " + std::to_string(space->getDimension()) : "") +
+                ". Use SMA, LRSMA or MGO in R^k.");
         const ob::RealVectorBounds &b = space->getBounds();
         for (unsigned int j = 0; j < 2; ++j)
             if (!std::isfinite(b.low[j]) || !std::isfinite(b.high[j]) || b.low[j] >= b.high[j])
@@ -234,8 +235,8 @@ namespace mhplan
             rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
         closestDistance_ = std::numeric_limits<double>::infinity();
         closest_ = {start_};
-        OMPL_INFORM("%s: seed %lu, N = %u", getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()),
-                    populationSize_);
+        OMPL_INFORM("%s: seed %lu, N = %u", getName().c_str(),
+                    static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_);
         problemReady_ = true;
         return true;
     }
@@ -289,6 +290,14 @@ namespace mhplan
         if (stopRequested())
             return false;
         ind.path.swap(p);
+        // Every operator checks the segments it makes; this pass guards the joints on split segments under a
+        // sampling motion validator (which may refuse a piece of a segment it accepted).
+        if (!toolkit_->pathValid(ind.path))
+        {
+            ind.cost = std::numeric_limits<double>::infinity();
+            MemeticToolkit::resample(ind.path, 16, ind.signature);
+            return true;
+        }
         ind.cost = evaluate(ind.path);
         MemeticToolkit::resample(ind.path, 16, ind.signature);
         return true;
@@ -300,9 +309,8 @@ namespace mhplan
         while (true)
         {
             const double h = scale_ / 16.0 / std::pow(2.0, double(level_));
-            const MemeticToolkit::WalkResult r =
-                toolkit_->randomWalk(path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_,
-                                     weight);
+            const MemeticToolkit::WalkResult r = toolkit_->randomWalk(
+                path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_, weight);
             if (r != MemeticToolkit::WalkResult::Exhausted)
                 return r;
             if (level_ + 1 >= latticeLevels_)
@@ -332,7 +340,8 @@ namespace mhplan
             const Vec2 normal = d > 0.0 ? Vec2(-line.y / d, line.x / d) : Vec2(0.0, 1.0);
             for (int k = 0; k < 20 && !viaWalk; ++k)
             {
-                via = start_ + line * rng_.uniformReal(0.15, 0.85) + normal * (d * rng_.uniformReal(-0.3, 0.3));
+                via =
+                    start_ + line * rng_.uniformReal(0.15, 0.85) + normal * (d * rng_.uniformReal(-0.3, 0.3));
                 viaWalk = toolkit_->pointValid(via);
             }
         }
@@ -362,7 +371,7 @@ namespace mhplan
             }
         }
         if (r == MemeticToolkit::WalkResult::Found)
-            return improveAndEvaluate(out);
+            return improveAndEvaluate(out) && std::isfinite(out.cost);
         return false;
     }
 
@@ -434,9 +443,11 @@ namespace mhplan
             polished_ = pop_[b].path;
             polishedSource_ = pop_[b].cost;
         }
-        toolkit_->tighten(polished_, fineTurn_, 1e-10, polishPasses_, stop_, 20000);
-        if (stopRequested())
+        MemeticPath p = polished_;
+        toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000);
+        if (stopRequested() || !toolkit_->pathValid(p))
             return;
+        polished_.swap(p);
         evaluate(polished_);
     }
 
@@ -472,7 +483,8 @@ namespace mhplan
         while (!ptc() && !satisfied() && (maxIterations_ == 0 || done < maxIterations_))
         {
             bool completed = true;
-            const double before = haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+            const double before =
+                haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
             if (!started_)
             {
                 // The population is not complete yet (no path found so far, or interrupted): walk on.
@@ -501,7 +513,8 @@ namespace mhplan
                 break;
             ++iterationCount_;
             ++done;
-            const double after = haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+            const double after =
+                haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
             if (std::isfinite(before) && after < before - 1e-9 * before)
                 sinceImprovement_ = 0;
             else

@@ -74,6 +74,14 @@ namespace mhplan
         return si_->checkMotion(a_, b_);
     }
 
+    bool MemeticToolkit::pathValid(const MemeticPath &path)
+    {
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!motionValid(path[i - 1], path[i]))
+                return false;
+        return true;
+    }
+
     bool MemeticToolkit::pointValid(const Vec2 &p)
     {
         if (!inBounds(p))
@@ -122,12 +130,10 @@ namespace mhplan
         return m;
     }
 
-    MemeticToolkit::WalkResult MemeticToolkit::randomWalk(MemeticPath &path, const Vec2 &start,
-                                                          const Vec2 &goal, double h, double noise,
-                                                          unsigned int maxExpansions,
-                                                          const std::function<bool()> &stop,
-                                                          MemeticPath &closest, double &closestDistance,
-                                                          double weight)
+    MemeticToolkit::WalkResult
+    MemeticToolkit::randomWalk(MemeticPath &path, const Vec2 &start, const Vec2 &goal, double h, double noise,
+                               unsigned int maxExpansions, const std::function<bool()> &stop,
+                               MemeticPath &closest, double &closestDistance, double weight)
     {
         static const int kMoves[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
                                          {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
@@ -312,7 +318,8 @@ namespace mhplan
         return lo;
     }
 
-    bool MemeticToolkit::pullPass(MemeticPath &path, std::vector<char> &dirty, const std::function<bool()> &stop)
+    bool MemeticToolkit::pullPass(MemeticPath &path, std::vector<char> &dirty,
+                                  const std::function<bool()> &stop)
     {
         bool changed = false;
         const double scale = std::max(bounds_.width(), bounds_.height());
@@ -395,15 +402,22 @@ namespace mhplan
                 // v: on a finely wrapped arc these are the tangent points).
                 const double delta = 0.5 * std::min(la, lb);
                 const Vec2 pa = v + (a - v) * (delta / la), pb = v + (b - v) * (delta / lb);
-                if (out.back() != pa)
+                const bool keepA = motionValid(out.back(), pa) && motionValid(pa, v);
+                if (keepA && out.back() != pa)
                 {
                     out.push_back(pa);
                     outDirty.push_back(1);
                 }
-                out.push_back(v);
-                outDirty.push_back(1);
-                out.push_back(pb);
-                outDirty.push_back(1);
+                if (out.back() != v)
+                {
+                    out.push_back(v);
+                    outDirty.push_back(1);
+                }
+                if (motionValid(v, pb) && motionValid(pb, b))
+                {
+                    out.push_back(pb);
+                    outDirty.push_back(1);
+                }
                 any = true;
             }
             else
@@ -479,7 +493,8 @@ namespace mhplan
             {
                 prefixA(p1.first, child);
                 child.push_back(sb_[p1.second]);
-                child.insert(child.end(), b.begin() + static_cast<std::ptrdiff_t>(segB[p1.second] + 1), b.end());
+                child.insert(child.end(), b.begin() + static_cast<std::ptrdiff_t>(segB[p1.second] + 1),
+                             b.end());
                 return true;
             }
             // Second joint back from b to a, later on both.
@@ -545,8 +560,8 @@ namespace mhplan
         randomiseField(3.0 * span);
         MemeticPath piece, closest;
         double closestDistance = std::numeric_limits<double>::infinity();
-        if (randomWalk(piece, p1, p2, span / rng_.uniformReal(24.0, 96.0), noise, maxExpansions, stop, closest, closestDistance) !=
-            WalkResult::Found)
+        if (randomWalk(piece, p1, p2, span / rng_.uniformReal(24.0, 96.0), noise, maxExpansions, stop,
+                       closest, closestDistance) != WalkResult::Found)
             return false;
         MemeticPath out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(seg1 + 1));
         if (out.back() != p1)

@@ -1,4 +1,5 @@
 #include "PotentialField.h"
+#include "PlannerSupport.h"
 
 #include "PopulationPlanner.h" // checkParameterRange
 #include "Validity.h"
@@ -263,7 +264,8 @@ namespace mhplan
 
     ob::PlannerStatus reportWalk(const ob::SpaceInformationPtr &si, const ob::ProblemDefinitionPtr &pdef,
                                  const std::string &who, const std::vector<Vec2> &walk, bool finished,
-                                 bool reachedGoal, const Vec2 &goal, std::atomic<double> &bestCost)
+                                 bool reachedGoal, const Vec2 &goal, std::atomic<double> &bestCost,
+                                 const ob::Planner *planner)
     {
         if (walk.size() < 2 && !finished)
             return ob::PlannerStatus::TIMEOUT;
@@ -285,7 +287,12 @@ namespace mhplan
         if (exact)
         {
             const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
+            const bool improved = cost.value() < bestCost.load();
             bestCost = cost.value();
+            if (planner != nullptr && improved)
+                reportImprovement(
+                    planner, pdef, *si, walk.size(),
+                    [&walk](ob::State *st, std::size_t i) { setStatePosition(st, walk[i]); }, cost);
             if (opt)
                 solution.setOptimized(opt, cost, opt->isSatisfied(cost));
         }
