@@ -52,6 +52,7 @@ namespace mhplan
         void startAlgorithm() override;
         void restartAlgorithm() override;
         void clearAlgorithm() override;
+        void populationChanged() override;
 
         /** \brief Decode \e x into \e out, improve and evaluate it and re-encode the result into \e x; false
             when interrupted. */

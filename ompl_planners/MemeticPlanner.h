@@ -32,13 +32,18 @@ namespace mhplan
           only when the motion validator accepts the changed segments).
         - Feasible initial population: \c population_size randomised lattice walks (MemeticToolkit::
           randomWalk, a new random cost field per walk of strength drawn in [0, \c walk_noise), heuristic
-          weight \c walk_weight; the first walk is noiseless with weight 1 (A* on the lattice: the shortest
-          lattice path, often in the optimum's homotopy class); every other later walk passes a random valid
+          weight \c walk_weight (weight 1, A*, was measured slower: on mazes it expands most of the lattice);
+          the first walk is noiseless; every other later walk passes a random valid
        via point, uniformly along the start-goal line between 15 % and 85 % and off it by up to 0.3 of its
-       length), each shortened by the local search. Multi-resolution: the lattice step starts at 1/16 of the
-       bounds' larger side and halves whenever a walk exhausts its lattice (no path at that resolution), at
-       most \c lattice_levels times; the level reached is kept for later walks. A walk stops after \c
-       walk_expansions nodes (then it is retried later with other noise).
+       length), each shortened by the local search. Multi-resolution: the lattice step starts at the largest
+       power of two (in the space's units) not above 1/16 of the bounds' larger side (powers of two nest, and
+       align with grid maps of power-of-two cells when the start is at a cell centre) and halves whenever a
+       walk exhausts its lattice (no path at that resolution), at most \c lattice_levels times; the level
+       reached is kept for later walks. A walk stops after \c walk_expansions nodes (then it is retried later
+       with other noise).
+        - Huge worlds: once the walks of a (re)start have cost 3e6 motion checks and there are at least 2
+          individuals, the generations start and the rest of the population joins one walk per generation
+          (a deterministic budget, so runs stay reproducible). The elite polish runs before each generation.
         - Memetic local search: every new individual is tightened with the coarse turn limit
           \c coarse_turn (MemeticToolkit::tighten, relative tolerance 1e-4, at most 30 passes); the best
           individual is polished after every generation with the fine limit \c fine_turn (tolerance 1e-10,
@@ -135,6 +140,8 @@ namespace mhplan
         /** \brief A restart with elitism happened (pop_ refilled): restart schedules (double T). */
         virtual void restartAlgorithm() {}
         virtual void clearAlgorithm() {}
+        /** \brief An individual joined pop_ outside generation() (a late walk): refresh the encoding. */
+        virtual void populationChanged() {}
 
         bool stopRequested() const { return ptc_ == nullptr || (*ptc_)(); }
         const std::function<bool()> &stopFunction() const { return stop_; }
@@ -174,8 +181,12 @@ namespace mhplan
         /** \brief A walk from \e from to \e to, halving the lattice step on exhaustion (level_ persists). */
         MemeticToolkit::WalkResult walk(MemeticPath &path, const Vec2 &from, const Vec2 &to, double noise,
                                         double weight);
-        /** \brief Fill pop_ with walks up to N; false when interrupted. */
+        /** \brief Fill pop_ with walks up to N (or, with at least 2 individuals, until the walks have cost
+            kFillBudget motion checks); false when interrupted or no walk succeeded. */
         bool fillPopulation();
+        /** \brief The population is complete, or cut short by the fill budget, or all the lattice offers. */
+        bool readyToStart() const;
+        static constexpr unsigned long kFillBudget = 3000000;
         void polishElite();
         void restart();
         void reportSolution(bool &exact, bool &approximate);
@@ -187,7 +198,7 @@ namespace mhplan
         unsigned int maxIterations_{0};
         unsigned long seed_{0};
         double walkNoise_{3.0};
-        double walkWeight_{1.5};
+        double walkWeight_{2.0};
         unsigned int walkExpansions_{400000};
         unsigned int latticeLevels_{8};
         double coarseTurn_{0.35};
@@ -207,6 +218,7 @@ namespace mhplan
         ompl::base::State *costB_{nullptr};
         unsigned int level_{0};
         bool noPath_{false};
+        bool fillCut_{false};
         unsigned long walks_{0};
         unsigned long sinceImprovement_{0};
         unsigned long generationInEpoch_{0};

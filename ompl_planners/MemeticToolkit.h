@@ -29,7 +29,12 @@ namespace mhplan
           each neighbour along the segment to that neighbour (so that a waypoint held by an obstacle corner
           or circle slides into the corner or along the arc); each move is the largest fraction found by
           bisection (\c bisections steps) that keeps both adjacent segments valid; a move never lengthens
-          the path (the chord move and the slides cannot, by the triangle inequality);
+          the path (the chord move and the slides cannot, by the triangle inequality); a waypoint none of
+          whose moves is possible is held by a contact inside one of its segments (a long segment in a
+          narrow corridor touching a corner): in the precise mode (the elite polish) the bisection goes on
+          halving down to 1e-9 of the bounds, and the motion validator's last valid point toward the chord
+          (checkMotion with lastValid) locates the contact, and a waypoint is inserted there, around which
+          the held waypoint can then turn (without this, string pulling stalls in mazes);
         - adaptive subdivision: a waypoint whose turn exceeds \e maxTurn gets the midpoints of its two
           segments inserted (a polyline wrapped round a circle with per-vertex turn x is longer than the arc
           by about x^2 / 12: maxTurn 0.1 bounds that excess to 0.08 % of the arcs); an inserted point is kept
@@ -63,6 +68,9 @@ namespace mhplan
 
         /** \brief The motion validator's verdict on a segment (both ends inside the bounds). Counted. */
         bool motionValid(const Vec2 &a, const Vec2 &b);
+        /** \brief motionValid(); when invalid, \e fraction is the motion validator's last valid fraction
+            of the segment (checkMotion with lastValid). Counted. */
+        bool motionValid(const Vec2 &a, const Vec2 &b, double &fraction);
         /** \brief Every segment of \e path passes motionValid(). */
         bool pathValid(const MemeticPath &path);
         /** \brief The validity checker's verdict on a point inside the bounds. */
@@ -94,7 +102,7 @@ namespace mhplan
         /** \brief Local search (class doc); returns false when \e stop() interrupted it (the path is valid
             and no longer than before either way). */
         bool tighten(MemeticPath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                     const std::function<bool()> &stop, unsigned int maxPoints = 4000);
+                     const std::function<bool()> &stop, unsigned int maxPoints = 4000, bool precise = false);
 
         /** \brief Crossover: child = a[..p] -> b[q..] (one point) or a[..p1] -> b[q1..q2] -> a[p2..] (two
             points), joined where the parents pass within \e radius of each other (resampled at 48 points
@@ -139,8 +147,11 @@ namespace mhplan
         ompl::RNG &rng_;
         Box bounds_;
         unsigned int bisections_{10};
+        /** \brief tighten(precise): tiny moves and contact splits (the elite polish). */
+        bool precise_{false};
         ompl::base::State *a_{nullptr};
         ompl::base::State *b_{nullptr};
+        ompl::base::State *c_{nullptr};
         unsigned long motionChecks_{0};
 
         // Walk buffers (reused).

@@ -140,6 +140,14 @@ namespace mhplan
             encode(pop_[i].path, x_[i]);
     }
 
+    void OffsetMemeticPlanner::populationChanged()
+    {
+        x_.resize(pop_.size());
+        for (std::size_t i = 0; i < pop_.size(); ++i)
+            encode(pop_[i].path, x_[i]);
+        updateReference();
+    }
+
     void OffsetMemeticPlanner::startAlgorithm()
     {
         epochLength_ = iterations_;

@@ -190,6 +190,7 @@ namespace mhplan
         polished_.clear();
         level_ = 0;
         noPath_ = false;
+        fillCut_ = false;
         walks_ = 0;
         sinceImprovement_ = 0;
         generationInEpoch_ = 0;
@@ -308,7 +309,9 @@ namespace mhplan
     {
         while (true)
         {
-            const double h = scale_ / 16.0 / std::pow(2.0, double(level_));
+            // Powers of two (in the space's units): the levels nest, and they align with grid maps whose
+            // cells are a power of two wide (1 m, 0.5 m, ...) when the start is at a cell centre.
+            const double h = std::pow(2.0, std::floor(std::log2(scale_ / 16.0)) - double(level_));
             const MemeticToolkit::WalkResult r = toolkit_->randomWalk(
                 path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_, weight);
             if (r != MemeticToolkit::WalkResult::Exhausted)
@@ -363,16 +366,23 @@ namespace mhplan
         }
         else
         {
-            r = walk(out.path, start_, goal_, noise, walks_ == 1 ? 1.0 : walkWeight_);
+            r = walk(out.path, start_, goal_, noise, walkWeight_);
             if (r == MemeticToolkit::WalkResult::Exhausted)
             {
                 noPath_ = true;
                 OMPL_INFORM("%s: no walk reaches the goal at the finest lattice step", getName().c_str());
             }
         }
-        if (r == MemeticToolkit::WalkResult::Found)
-            return improveAndEvaluate(out) && std::isfinite(out.cost);
-        return false;
+        if (r != MemeticToolkit::WalkResult::Found)
+            return false;
+        if (!haveSolution_ && toolkit_->pathValid(out.path))
+        {
+            // The first path is reported at once: on huge worlds its local search takes a while.
+            if (stopRequested())
+                return false;
+            evaluate(out.path);
+        }
+        return improveAndEvaluate(out) && std::isfinite(out.cost);
     }
 
     std::size_t MemeticPlanner::bestIndex() const
@@ -417,10 +427,18 @@ namespace mhplan
 
     bool MemeticPlanner::fillPopulation()
     {
+        const unsigned long startChecks = toolkit_->motionChecks();
         while (pop_.size() < populationSize_ && !noPath_)
         {
             if (stopRequested())
                 return false;
+            // Huge worlds: start with what there is once the walks have cost kFillBudget motion checks
+            // (deterministic, unlike a clock); the rest joins one per generation.
+            if (pop_.size() >= 2 && toolkit_->motionChecks() - startChecks > kFillBudget)
+            {
+                fillCut_ = true;
+                return true;
+            }
             Individual ind;
             if (walkIndividual(ind))
                 pop_.push_back(std::move(ind));
@@ -430,6 +448,11 @@ namespace mhplan
                 return !noPath_ && !pop_.empty(); // try again next generation
         }
         return !pop_.empty();
+    }
+
+    bool MemeticPlanner::readyToStart() const
+    {
+        return pop_.size() == populationSize_ || (pop_.size() >= 2 && fillCut_) || (!pop_.empty() && noPath_);
     }
 
     void MemeticPlanner::polishElite()
@@ -444,7 +467,7 @@ namespace mhplan
             polishedSource_ = pop_[b].cost;
         }
         MemeticPath p = polished_;
-        toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000);
+        toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000, true);
         if (stopRequested() || !toolkit_->pathValid(p))
             return;
         polished_.swap(p);
@@ -473,8 +496,8 @@ namespace mhplan
         auto satisfied = [&] { return haveSolution_ && opt && opt->isSatisfied(bestCostObj_); };
         if (!ptc())
         {
-            const bool full = fillPopulation();
-            if (full && !started_ && pop_.size() == populationSize_)
+            fillPopulation();
+            if (!started_ && readyToStart())
             {
                 started_ = true;
                 startAlgorithm();
@@ -487,25 +510,30 @@ namespace mhplan
                 haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
             if (!started_)
             {
-                // The population is not complete yet (no path found so far, or interrupted): walk on.
+                // The population is not ready yet (no path found so far, or interrupted): walk on.
                 fillPopulation();
-                if (pop_.size() == populationSize_)
+                polishElite();
+                if (readyToStart())
                 {
                     started_ = true;
-                    startAlgorithm();
-                }
-                else if (!pop_.empty() && noPath_)
-                {
-                    started_ = true; // a smaller population: the lattice has no more paths to offer
                     startAlgorithm();
                 }
             }
             else
             {
                 ++generationInEpoch_;
-                completed = generation(generationInEpoch_);
-                if (completed)
-                    polishElite();
+                // The polish first: on huge worlds a generation may take long, the incumbent still improves.
+                polishElite();
+                if (pop_.size() < populationSize_ && !noPath_ && !stopRequested())
+                {
+                    Individual ind;
+                    if (walkIndividual(ind))
+                    {
+                        pop_.push_back(std::move(ind));
+                        populationChanged();
+                    }
+                }
+                completed = !stopRequested() && generation(generationInEpoch_);
             }
             if (stopRequested())
                 completed = false;
@@ -522,7 +550,8 @@ namespace mhplan
             if (started_ && sinceImprovement_ >= stagnation_ && !noPath_)
             {
                 restart();
-                if (!fillPopulation())
+                fillCut_ = false;
+                if (!fillPopulation() || !readyToStart())
                     started_ = false;
                 else
                     restartAlgorithm();

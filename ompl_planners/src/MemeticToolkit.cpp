@@ -56,12 +56,14 @@ namespace mhplan
     {
         a_ = si_->allocState();
         b_ = si_->allocState();
+        c_ = si_->allocState();
     }
 
     MemeticToolkit::~MemeticToolkit()
     {
         si_->freeState(a_);
         si_->freeState(b_);
+        si_->freeState(c_);
     }
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
@@ -72,6 +74,24 @@ namespace mhplan
         setStatePosition(a_, a);
         setStatePosition(b_, b);
         return si_->checkMotion(a_, b_);
+    }
+
+    bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b, double &fraction)
+    {
+        fraction = 0.0;
+        if (!inBounds(a) || !inBounds(b))
+            return false;
+        ++motionChecks_;
+        setStatePosition(a_, a);
+        setStatePosition(b_, b);
+        std::pair<ob::State *, double> last(c_, 0.0);
+        if (si_->getMotionValidator()->checkMotion(a_, b_, last))
+        {
+            fraction = 1.0;
+            return true;
+        }
+        fraction = last.second;
+        return false;
     }
 
     bool MemeticToolkit::pathValid(const MemeticPath &path)
@@ -167,12 +187,24 @@ namespace mhplan
             std::reverse(out.begin(), out.end());
             out.front() = start;
         };
+        // The node closest to the goal (for approximate solutions), chained once when the walk ends.
+        double closestHere = std::numeric_limits<double>::infinity();
+        std::uint32_t closestNode = none;
+        auto finish = [&](WalkResult r)
+        {
+            if (closestNode != none && closestHere < closestDistance)
+            {
+                closestDistance = closestHere;
+                chain(closestNode, closest);
+            }
+            return r;
+        };
         while (!open.empty())
         {
             if ((expansions & 63u) == 0 && stop())
-                return WalkResult::Stopped;
+                return finish(WalkResult::Stopped);
             if (expansions >= maxExpansions)
-                return WalkResult::Budget;
+                return finish(WalkResult::Budget);
             const Entry e = open.top();
             open.pop();
             Node &n = nodes_[e.node];
@@ -190,10 +222,10 @@ namespace mhplan
             nodes_[e.node].parent = e.parent;
             nodes_[e.node].g = e.g;
             const double dGoal = distance(p, goal);
-            if (dGoal < closestDistance)
+            if (dGoal < closestHere)
             {
-                closestDistance = dGoal;
-                chain(e.node, closest);
+                closestHere = dGoal;
+                closestNode = e.node;
             }
             if (dGoal <= reach && motionValid(p, goal))
             {
@@ -202,7 +234,7 @@ namespace mhplan
                     path.push_back(goal);
                 if (path.size() == 1)
                     path.push_back(goal);
-                return WalkResult::Found;
+                return finish(WalkResult::Found);
             }
             const long ix = nodes_[e.node].ix, iy = nodes_[e.node].iy;
             for (const auto &m : kMoves)
@@ -230,7 +262,7 @@ namespace mhplan
                 open.push({g + weight * distance(q, goal), g, id, e.node});
             }
         }
-        return WalkResult::Exhausted;
+        return finish(WalkResult::Exhausted);
     }
 
     void MemeticToolkit::randomiseField(double diag)
@@ -305,17 +337,29 @@ namespace mhplan
 
     double MemeticToolkit::bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b)
     {
+        auto valid = [&](double t)
+        {
+            const Vec2 q = v + d * t;
+            return inBounds(q) && motionValid(a, q) && motionValid(q, b);
+        };
         double lo = 0.0, hi = 1.0;
         for (unsigned int k = 0; k < bisections_; ++k)
         {
             const double mid = 0.5 * (lo + hi);
-            const Vec2 q = v + d * mid;
-            if (inBounds(q) && motionValid(a, q) && motionValid(q, b))
+            if (valid(mid))
                 lo = mid;
             else
                 hi = mid;
         }
-        return lo;
+        if (lo > 0.0 || !precise_)
+            return lo;
+        // Nothing at the relative resolution: keep halving down to 1e-9 of the bounds (a long move direction
+        // may allow only a tiny step, e.g. a waypoint sliding along a long corridor).
+        const double floor = 1e-9 * std::max(bounds_.width(), bounds_.height());
+        for (double t = hi * 0.5; norm(d) * t > floor; t *= 0.5)
+            if (valid(t))
+                return t;
+        return 0.0;
     }
 
     bool MemeticToolkit::pullPass(MemeticPath &path, std::vector<char> &dirty,
@@ -362,6 +406,35 @@ namespace mhplan
                         v = w;
                         moved = true;
                     }
+                }
+            }
+            if (!moved && precise_ && norm(target - v) > eps)
+            {
+                // Held by a contact inside a segment: split that segment at the contact.
+                const Vec2 probe = v + (target - v) * 1e-3;
+                for (int side = 0; side < 2 && !moved; ++side)
+                {
+                    const Vec2 end = side == 0 ? a : b;
+                    double f = 0.0;
+                    if (motionValid(end, probe, f) || f <= 0.02 || f >= 0.98)
+                        continue;
+                    const Vec2 c = end + (v - end) * f;
+                    if (distance(c, end) <= eps || distance(c, v) <= eps || !motionValid(end, c) ||
+                        !motionValid(c, v))
+                        continue;
+                    const std::size_t at = side == 0 ? i : i + 1;
+                    path.insert(path.begin() + static_cast<std::ptrdiff_t>(at), c);
+                    dirty.insert(dirty.begin() + static_cast<std::ptrdiff_t>(at), 1);
+                    if (side == 0)
+                        ++i; // v moved one place on
+                    dirty[i] = 1;
+                    changed = true;
+                    moved = true;
+                }
+                if (moved)
+                {
+                    ++i;
+                    continue;
                 }
             }
             if (moved)
@@ -442,8 +515,9 @@ namespace mhplan
     }
 
     bool MemeticToolkit::tighten(MemeticPath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                                 const std::function<bool()> &stop, unsigned int maxPoints)
+                                 const std::function<bool()> &stop, unsigned int maxPoints, bool precise)
     {
+        precise_ = precise;
         shortcut(path, stop);
         std::vector<char> dirty(path.size(), 1);
         double len = length(path);
