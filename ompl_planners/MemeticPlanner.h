@@ -41,6 +41,11 @@ namespace mhplan
        walk exhausts its lattice (no path at that resolution), at most \c lattice_levels times; the level
        reached is kept for later walks. A walk stops after \c walk_expansions nodes (then it is retried later
        with other noise).
+        - Elite neighbourhood search: \c elite_rewalks times per generation a piece of the best individual
+          is re-walked (MemeticToolkit::rewalk: another homotopy class nearby), tightened, and kept when
+          shorter (a class-changing local improvement, like 2-opt in memetic TSP solvers). 0 for GA-MEM,
+          whose mutation does this; 4 for the offset variants, whose update rules move within the
+          neighbourhood of the reference.
         - Huge worlds: once the walks of a (re)start have cost 3e6 motion checks and there are at least 2
           individuals, the generations start and the rest of the population joins one walk per generation
           (a deterministic budget, so runs stay reproducible). The elite polish runs before each generation.
@@ -109,6 +114,9 @@ namespace mhplan
         /** \brief Local-search passes of the elite polish per generation (1..100000). */
         void setPolishPasses(unsigned int n);
         unsigned int getPolishPasses() const { return polishPasses_; }
+        /** \brief Re-walk trials on the best individual per generation (0..1000). */
+        void setEliteRewalks(unsigned int n);
+        unsigned int getEliteRewalks() const { return eliteRewalks_; }
         /** \brief Generations without improvement before a restart with elitism (1..1000000). */
         void setStagnation(unsigned int n);
         unsigned int getStagnation() const { return stagnation_; }
@@ -188,6 +196,8 @@ namespace mhplan
         bool readyToStart() const;
         static constexpr unsigned long kFillBudget = 3000000;
         void polishElite();
+        /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
+        void eliteRewalks();
         void restart();
         void reportSolution(bool &exact, bool &approximate);
         void record(const MemeticPath &path, double cost);
@@ -205,6 +215,7 @@ namespace mhplan
         double fineTurn_{0.05};
         unsigned int polishPasses_{8};
         unsigned int stagnation_{40};
+        unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};

@@ -19,6 +19,7 @@ namespace mhplan
                                                unsigned int populationSize)
         : MemeticPlanner(si, name, populationSize)
     {
+        setEliteRewalks(4);
         declareParam<unsigned int>("iterations", this, &OffsetMemeticPlanner::setIterations,
                                    &OffsetMemeticPlanner::getIterations, "1:1:1000000");
         declareParam<unsigned int>("max_stations", this, &OffsetMemeticPlanner::setMaxStations,

@@ -54,6 +54,8 @@ namespace mhplan
                              "0.001:0.001:1.");
         declareParam<unsigned int>("polish_passes", this, &MemeticPlanner::setPolishPasses,
                                    &MemeticPlanner::getPolishPasses, "1:1:100000");
+        declareParam<unsigned int>("elite_rewalks", this, &MemeticPlanner::setEliteRewalks,
+                                   &MemeticPlanner::getEliteRewalks, "0:1:1000");
         declareParam<unsigned int>("stagnation", this, &MemeticPlanner::setStagnation,
                                    &MemeticPlanner::getStagnation, "1:1:1000000");
         declareParam<unsigned int>("bisections", this, &MemeticPlanner::setBisections,
@@ -136,6 +138,12 @@ namespace mhplan
     {
         checkParameterRange("polish_passes", n, 1, 100000);
         polishPasses_ = n;
+    }
+
+    void MemeticPlanner::setEliteRewalks(unsigned int n)
+    {
+        checkParameterRange("elite_rewalks", n, 0, 1000);
+        eliteRewalks_ = n;
     }
 
     void MemeticPlanner::setStagnation(unsigned int n)
@@ -474,6 +482,27 @@ namespace mhplan
         evaluate(polished_);
     }
 
+    void MemeticPlanner::eliteRewalks()
+    {
+        for (unsigned int k = 0; k < eliteRewalks_ && !pop_.empty(); ++k)
+        {
+            if (stopRequested())
+                return;
+            const std::size_t b = bestIndex();
+            Individual child;
+            child.path = pop_[b].path;
+            if (!toolkit_->rewalk(child.path, 0.3, walkNoise_, 4000, stop_))
+                continue;
+            if (!improveAndEvaluate(child))
+                return;
+            if (child.cost < pop_[b].cost)
+            {
+                pop_[b] = std::move(child);
+                populationChanged();
+            }
+        }
+    }
+
     void MemeticPlanner::restart()
     {
         ++restarts_;
@@ -524,6 +553,7 @@ namespace mhplan
                 ++generationInEpoch_;
                 // The polish first: on huge worlds a generation may take long, the incumbent still improves.
                 polishElite();
+                eliteRewalks();
                 if (pop_.size() < populationSize_ && !noPath_ && !stopRequested())
                 {
                     Individual ind;
