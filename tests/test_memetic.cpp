@@ -135,8 +135,8 @@ class Memetic : public ::testing::TestWithParam<std::string>
 };
 
 // Measured (seed 3, 15 generations, 280-810 evaluations): every variant reaches the optimum's class on both
-// worlds, gaps 0.0037-0.0044 % on the circles and below 1e-6 % on the maze. The bounds (0.2 %, 1 %) leave room
-// for other platforms' rounding and libraries.
+// worlds, gaps 0.0037-0.0044 % on the circles and below 1e-6 % on the maze. The bounds (0.2 %, 1 %) leave
+// room for other platforms' rounding and libraries.
 TEST_P(Memetic, SolvesCirclesAndMazeNearTheOptimum)
 {
     for (const bool isMaze : {false, true})
