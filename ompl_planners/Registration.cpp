@@ -5,6 +5,8 @@
 #include "mhplan/planners/field/BacterialForaging.h"
 #include "mhplan/planners/lattice/AStar.h"
 #include "mhplan/planners/lattice/ThetaStar.h"
+#include "mhplan/planners/memetic/MemeticGenetic.h"
+#include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
 #include "mhplan/planners/population/Genetic.h"
 #include "mhplan/planners/population/LRSMA.h"
 #include "mhplan/planners/population/MountainGazelle.h"
@@ -16,6 +18,10 @@ namespace mhplan
 {
     namespace
     {
+        /** \brief Iterations without improvement before the improved variants restart (anytime mode only:
+            max_iterations = 0; see PopulationPlanner::setStagnationRestart). */
+        constexpr unsigned int kAnytimeRestart = 30;
+
         /** \brief A population planner named \e name with the [GMS] repair, simplification and node
             improvement on every individual after each iteration, and \e waypoints waypoints. */
         template <typename P> PlannerAllocator gmsVariant(const std::string &name, unsigned int waypoints)
@@ -28,6 +34,7 @@ namespace mhplan
                 p->setGmsImprove(1);
                 p->setGmsScope("all");
                 p->setWaypoints(waypoints);
+                p->setStagnationRestart(kAnytimeRestart);
                 return p;
             };
         }
@@ -73,7 +80,26 @@ namespace mhplan
                {
                    auto p = std::make_shared<Genetic>(si, "GA-WALK");
                    p->setInitialisation("walk");
+                   p->setStagnationRestart(kAnytimeRestart);
                    return p;
                }});
+        r.add({"GA-MEM", "mhplan",
+               "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
+               "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
+               allocatorFor<MemeticGenetic>()});
+        r.add(
+            {"SMA-MEM", "mhplan",
+             "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
+             "along the best path, feasible decoding, local search, restarts",
+             allocatorFor<MemeticSlimeMould>()});
+        r.add({"LRSMA-MEM", "mhplan",
+               "LRSMA, improved memetic variant (not in the paper): SMA-MEM with LRSMA's Levy flight and "
+               "rotation perturbation on station offsets",
+               allocatorFor<MemeticLRSMA>()});
+        r.add(
+            {"MGO-MEM", "mhplan",
+             "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
+             "stations along the best path, feasible decoding, local search, restarts",
+             allocatorFor<MemeticGazelle>()});
     }
 } // namespace mhplan

@@ -379,6 +379,24 @@ TEST(NdRefusal, GeneticAlgorithmIsPlanarOnly)
     EXPECT_FALSE(p->isSetup());
 }
 
+TEST(NdRefusal, MemeticVariantsArePlanarOnly)
+{
+    // The memetic variants' walks, pull moves and crossover joints are planar: R^3 is refused at setup.
+    for (const char *name : {"GA-MEM", "SMA-MEM", "LRSMA-MEM", "MGO-MEM"})
+    {
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        og::SimpleSetupPtr ss = sphereProblem(3, true);
+        ob::PlannerPtr p = makePlanner(ss, name, 1, 1);
+        const std::string msg = thrownMessage([&] { ss->setup(); });
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        EXPECT_EQ(
+            msg.rfind(std::string(name) + ": needs a 2-dimensional ompl::base::RealVectorStateSpace", 0), 0u)
+            << msg;
+        EXPECT_NE(msg.find("of dimension 3"), std::string::npos) << msg;
+        EXPECT_FALSE(p->isSetup());
+    }
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // No heap allocation per fitness evaluation, in R^6 (with a motion validator that allocates nothing itself:
 // OMPL's DiscreteMotionValidator allocates a state per call).

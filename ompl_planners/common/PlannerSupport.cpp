@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/common/PlannerSupport.h"
 
+#include <ompl/base/ProblemDefinition.h>
+
 #include <iomanip>
 #include <sstream>
 
@@ -33,6 +35,28 @@ namespace mhplan
         for (ob::State *s : owned)
             si.freeState(s);
         owned.clear();
+    }
+
+    void reportImprovement(const ob::Planner *planner, const ob::ProblemDefinitionPtr &pdef,
+                           const ob::SpaceInformation &si, std::size_t count,
+                           const std::function<void(ob::State *, std::size_t)> &fill, const ob::Cost &cost)
+    {
+        if (!pdef)
+            return;
+        const auto &callback = pdef->getIntermediateSolutionCallback();
+        if (!callback)
+            return;
+        std::vector<ob::State *> states;
+        states.reserve(count);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            states.push_back(si.allocState());
+            fill(states.back(), i);
+        }
+        const std::vector<const ob::State *> view(states.begin(), states.end());
+        callback(planner, view, cost);
+        for (ob::State *s : states)
+            si.freeState(s);
     }
 
     std::string formatCost(double cost)

@@ -3,6 +3,8 @@
 #ifndef MHPLAN_PLANNER_SUPPORT_H
 #define MHPLAN_PLANNER_SUPPORT_H
 
+#include <ompl/base/Cost.h>
+#include <ompl/base/Planner.h>
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/SpaceInformation.h>
 
@@ -25,6 +27,15 @@ namespace mhplan
 
     /** \brief Free the states of \e owned with \e si and empty it. */
     void freeStates(const ompl::base::SpaceInformation &si, std::vector<ompl::base::State *> &owned);
+
+    /** \brief Report an improvement of a planner's best solution: when \e pdef has an intermediate-solution
+        callback, call it with \e planner, the \e count states of the path (\e fill(state, i) writes point i;
+        the states are allocated with \e si and freed after the call) and \e cost. Every mhplan planner calls
+        this at each improvement of its best solution. */
+    void reportImprovement(const ompl::base::Planner *planner, const ompl::base::ProblemDefinitionPtr &pdef,
+                           const ompl::base::SpaceInformation &si, std::size_t count,
+                           const std::function<void(ompl::base::State *, std::size_t)> &fill,
+                           const ompl::base::Cost &cost);
 
     /** \brief A cost as a progress property value (17 significant digits, "inf" when none). */
     std::string formatCost(double cost);

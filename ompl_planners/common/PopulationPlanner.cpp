@@ -83,6 +83,8 @@ namespace mhplan
                              &PopulationPlanner::getCrossingWeight, "0.:0.1:1000000.");
         declareParam<unsigned long>("seed", this, &PopulationPlanner::setSeed, &PopulationPlanner::getSeed,
                                     "0:1:4294967295");
+        declareParam<unsigned int>("stagnation_restart", this, &PopulationPlanner::setStagnationRestart,
+                                   &PopulationPlanner::getStagnationRestart, "0:1:1000000");
         declareParam<unsigned int>("gms_repair", this, &PopulationPlanner::setGmsRepair,
                                    &PopulationPlanner::getGmsRepair, "0:1:1");
         declareParam<unsigned int>("gms_revise", this, &PopulationPlanner::setGmsRevise,
@@ -227,6 +229,12 @@ namespace mhplan
         invalidate();
     }
 
+    void PopulationPlanner::setStagnationRestart(unsigned int n)
+    {
+        checkParameterRange("stagnation_restart", n, 0, 1000000);
+        stagnationRestart_ = n;
+    }
+
     void PopulationPlanner::setGmsRepair(unsigned int on)
     {
         checkParameterRange("gms_repair", on, 0, 1);
@@ -360,6 +368,10 @@ namespace mhplan
         bestCostValue_ = std::numeric_limits<double>::infinity();
         iterationCount_ = 0;
         evaluationCount_ = 0;
+        epochStart_ = 0;
+        epochLength_ = 0;
+        sinceImprovement_ = 0;
+        restarts_ = 0;
     }
 
     bool PopulationPlanner::prepareProblem()
@@ -433,27 +445,59 @@ namespace mhplan
         unsigned int done = 0;
         const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
         auto satisfied = [&] { return haveFeasible_ && opt && opt->isSatisfied(bestFeasibleCost_); };
+        if (epochLength_ == 0)
+            epochLength_ = iterations_;
+        // Anytime restarts only without an iteration budget (so iteration-bounded runs are unchanged).
+        const bool restarts = stagnationRestart_ > 0 && maxIterations_ == 0;
+        if (!restarts)
+            epochLength_ = iterations_;
         while (initialised_ && !ptc() && !satisfied() && (maxIterations_ == 0 || done < maxIterations_))
         {
-            const auto t = static_cast<unsigned int>(iterationCount_.load() % iterations_) + 1;
+            // Without restarts epochStart_ = 0 and epochLength_ = T: t cycles through 1..T as before.
+            const auto t =
+                static_cast<unsigned int>((iterationCount_.load() - epochStart_) % epochLength_) + 1;
+            const double before = bestCostValue_.load();
             if (!iterate(t))
                 break;
             ++iterationCount_;
             ++done;
             if (gmsOperatorsEnabled() && !applyGmsOperators())
                 break;
+            if (restarts && !restartOnStagnation(before))
+                break;
         }
         ptc_ = nullptr;
 
         bool exact = false, approximate = false;
         reportSolution(exact, approximate);
-        OMPL_INFORM("%s: %lu iterations, %lu fitness evaluations, best cost %s", getName().c_str(),
-                    iterationCount(), evaluationCount(), ompl::toString(bestCost()).c_str());
+        OMPL_INFORM("%s: %lu iterations, %lu fitness evaluations, %lu restarts, best cost %s",
+                    getName().c_str(), iterationCount(), evaluationCount(), restarts_,
+                    ompl::toString(bestCost()).c_str());
         if (exact)
             return ob::PlannerStatus::EXACT_SOLUTION;
         if (approximate)
             return ob::PlannerStatus::APPROXIMATE_SOLUTION;
         return ob::PlannerStatus::TIMEOUT;
+    }
+
+    bool PopulationPlanner::restartOnStagnation(double before)
+    {
+        const double now = bestCostValue_.load();
+        if (std::isfinite(now) && !(now >= before - 1e-9 * std::abs(now)))
+            sinceImprovement_ = 0;
+        else
+            ++sinceImprovement_;
+        if (sinceImprovement_ < stagnationRestart_)
+            return true;
+        // Diversify: a fresh population (the best path found so far stays archived and reported), and the
+        // schedule starts again with twice the length.
+        sinceImprovement_ = 0;
+        ++restarts_;
+        clearPopulation();
+        epochStart_ = iterationCount_.load();
+        epochLength_ = std::min<unsigned long>(2ul * epochLength_, 1ul << 30);
+        initialised_ = !stopRequested() && initialisePopulation();
+        return initialised_;
     }
 
     void PopulationPlanner::randomPosition(double *x)
@@ -548,21 +592,9 @@ namespace mhplan
 
     void PopulationPlanner::fireIntermediate()
     {
-        const auto &callback = pdef_->getIntermediateSolutionCallback();
-        if (!callback)
-            return;
-        const std::size_t count = bestFeasiblePath_.size() / spaceDim_;
-        std::vector<ob::State *> states;
-        states.reserve(count);
-        for (std::size_t i = 0; i < count; ++i)
-        {
-            states.push_back(si_->allocState());
-            toState(states.back(), bestFeasiblePath_, i);
-        }
-        const std::vector<const ob::State *> view(states.begin(), states.end());
-        callback(this, view, bestFeasibleCost_);
-        for (ob::State *s : states)
-            si_->freeState(s);
+        reportImprovement(
+            this, pdef_, *si_, bestFeasiblePath_.size() / spaceDim_,
+            [this](ob::State *s, std::size_t i) { toState(s, bestFeasiblePath_, i); }, bestFeasibleCost_);
     }
 
     void PopulationPlanner::reportSolution(bool &exact, bool &approximate)

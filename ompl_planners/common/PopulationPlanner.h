@@ -155,6 +155,15 @@ namespace mhplan
         /** \brief w_c of [GMS] (0..1e6). */
         void setCrossingWeight(double w);
         double getCrossingWeight() const { return weights_.crossingWeight; }
+        /** \brief Anytime restarts (0 = off, the default; the improved variants switch them on): without an
+            iteration budget (max_iterations = 0), after this many iterations without an improvement of the
+            best feasible cost the population is drawn afresh (the best path stays archived and reported) and
+            the coefficient schedule restarts with twice its previous length (T, 2T, 4T, ...), so that a long
+            time limit is used by ever longer runs instead of a collapsed population (0..1000000). */
+        void setStagnationRestart(unsigned int n);
+        unsigned int getStagnationRestart() const { return stagnationRestart_; }
+        /** \brief Restarts since the last clear(). */
+        unsigned long restartCount() const { return restarts_; }
         /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
         void setSeed(unsigned long seed);
         unsigned long getSeed() const { return seed_; }
@@ -275,6 +284,9 @@ namespace mhplan
         void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
         void reportSolution(bool &exact, bool &approximate);
         void fireIntermediate();
+        /** \brief The stagnation restart after an iteration whose best cost was \e before (see
+            setStagnationRestart()); false when the redrawn population was interrupted. */
+        bool restartOnStagnation(double before);
         /** \brief The [GMS] operator step after an iteration (see the class doc); false when interrupted. */
         bool applyGmsOperators();
         /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */
@@ -293,6 +305,11 @@ namespace mhplan
         std::string fitnessName_{"auto"};
         FitnessWeights weights_;
         unsigned long seed_{0};
+        unsigned int stagnationRestart_{0};
+        unsigned long epochStart_{0};
+        unsigned long epochLength_{0};
+        unsigned long sinceImprovement_{0};
+        unsigned long restarts_{0};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         bool problemReady_{false};

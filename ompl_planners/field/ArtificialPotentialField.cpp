@@ -27,7 +27,7 @@ namespace mhplan
     {
         specs_.approximateSolutions = true;
         specs_.optimizingPaths = false;
-        specs_.canReportIntermediateSolutions = false;
+        specs_.canReportIntermediateSolutions = true; // the walk, once it reaches the goal
         specs_.multithreaded = false;
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
 
@@ -302,7 +302,7 @@ namespace mhplan
     ob::PlannerStatus ArtificialPotentialField::report()
     {
         return reportWalk(si_, pdef_, getName(), walk_, state_ != State::Descending,
-                          state_ == State::ReachedGoal, goal_, bestCostValue_);
+                          state_ == State::ReachedGoal, goal_, bestCostValue_, this);
     }
 
     void ArtificialPotentialField::getPlannerData(ob::PlannerData &data) const

@@ -92,7 +92,7 @@ namespace mhplan
     {
         specs_.approximateSolutions = true;
         specs_.optimizingPaths = !online_;
-        specs_.canReportIntermediateSolutions = !online_;
+        specs_.canReportIntermediateSolutions = true; // online: the walk, once it reaches the goal
         specs_.multithreaded = false;
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
     }
@@ -634,7 +634,7 @@ namespace mhplan
     {
         const ob::PlannerStatus status =
             reportWalk(si_, pdef_, getName(), walk_, walkState_ != WalkState::Walking,
-                       walkState_ == WalkState::ReachedGoal, goal_, onlineBestCost_);
+                       walkState_ == WalkState::ReachedGoal, goal_, onlineBestCost_, this);
         if (status == ob::PlannerStatus::TIMEOUT)
             return status;
         const bool exact = status == ob::PlannerStatus::EXACT_SOLUTION;

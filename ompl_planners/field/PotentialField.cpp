@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/field/PotentialField.h"
+#include "mhplan/planners/common/PlannerSupport.h"
 
 #include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
 #include "mhplan/collision/Validity.h"
@@ -264,7 +265,8 @@ namespace mhplan
 
     ob::PlannerStatus reportWalk(const ob::SpaceInformationPtr &si, const ob::ProblemDefinitionPtr &pdef,
                                  const std::string &who, const std::vector<Vec2> &walk, bool finished,
-                                 bool reachedGoal, const Vec2 &goal, std::atomic<double> &bestCost)
+                                 bool reachedGoal, const Vec2 &goal, std::atomic<double> &bestCost,
+                                 const ob::Planner *planner)
     {
         if (walk.size() < 2 && !finished)
             return ob::PlannerStatus::TIMEOUT;
@@ -286,7 +288,12 @@ namespace mhplan
         if (exact)
         {
             const ob::Cost cost = opt ? path->cost(opt) : ob::Cost(path->length());
+            const bool improved = cost.value() < bestCost.load();
             bestCost = cost.value();
+            if (planner != nullptr && improved)
+                reportImprovement(
+                    planner, pdef, *si, walk.size(),
+                    [&walk](ob::State *st, std::size_t i) { setStatePosition(st, walk[i]); }, cost);
             if (opt)
                 solution.setOptimized(opt, cost, opt->isSatisfied(cost));
         }

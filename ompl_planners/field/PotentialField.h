@@ -196,11 +196,14 @@ namespace mhplan
     /** \brief Add the walk to \e pdef as a solution named \e who: exact (with the objective's cost, also
         stored in \e bestCost) when \e reachedGoal and every segment passes checkMotion, else approximate
         (difference = distance from walk.back() to \e goal). TIMEOUT, adding nothing, when the walk has no
-        step yet and is not \e finished. */
+        step yet and is not \e finished. When \e planner is given and the exact walk is cheaper than
+        \e bestCost was (the walk reached the goal: its one improvement), the intermediate-solution callback
+        of \e pdef is called with it (reportImprovement()). */
     ompl::base::PlannerStatus reportWalk(const ompl::base::SpaceInformationPtr &si,
                                          const ompl::base::ProblemDefinitionPtr &pdef, const std::string &who,
                                          const std::vector<Vec2> &walk, bool finished, bool reachedGoal,
-                                         const Vec2 &goal, std::atomic<double> &bestCost);
+                                         const Vec2 &goal, std::atomic<double> &bestCost,
+                                         const ompl::base::Planner *planner = nullptr);
 
     /** @} */
 } // namespace mhplan

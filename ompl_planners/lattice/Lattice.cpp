@@ -516,19 +516,10 @@ namespace mhplan
                 {
                     objectiveCost(solution_, solutionCost_);
                     bestCostValue_ = solutionCost_.value();
-                    if (const auto &callback = pdef_->getIntermediateSolutionCallback())
-                    {
-                        std::vector<ob::State *> states;
-                        for (const Vec2 &p : solution_)
-                        {
-                            states.push_back(si_->allocState());
-                            setStatePosition(states.back(), p);
-                        }
-                        callback(this, std::vector<const ob::State *>(states.begin(), states.end()),
-                                 solutionCost_);
-                        for (ob::State *st : states)
-                            si_->freeState(st);
-                    }
+                    reportImprovement(
+                        this, pdef_, *si_, solution_.size(),
+                        [this](ob::State *st, std::size_t i) { setStatePosition(st, solution_[i]); },
+                        solutionCost_);
                 }
             }
             else if (r == SearchResult::Exhausted)

@@ -541,11 +541,15 @@ namespace mhplan
             });
         if (hit)
             return false;
-        // A segment lying on a grid line: each open edge piece needs a free cell on one side.
-        if (a.y == b.y)
+        // A segment lying on a grid line (up to kPinchTolerance cells: a segment within rounding of the line
+        // may not enter the open squares in floating point) needs a free cell on one side of each open edge
+        // piece.
+        const double lineTol = kPinchTolerance * g.cellSize();
+        if (std::abs(a.y - b.y) <= lineTol)
         {
-            const int l = locateY(a.y);
-            if (a.y == cellY0(l))
+            const int l = locateY(0.5 * (a.y + b.y) + 0.5 * g.cellSize());
+            const double y = cellY0(l);
+            if (std::abs(a.y - y) <= lineTol && std::abs(b.y - y) <= lineTol)
             {
                 const double xlo = std::min(a.x, b.x);
                 const double xhi = std::max(a.x, b.x);
@@ -555,10 +559,11 @@ namespace mhplan
                         return false;
             }
         }
-        if (a.x == b.x)
+        if (std::abs(a.x - b.x) <= lineTol)
         {
-            const int k = locateX(a.x);
-            if (a.x == cellX0(k))
+            const int k = locateX(0.5 * (a.x + b.x) + 0.5 * g.cellSize());
+            const double x = cellX0(k);
+            if (std::abs(a.x - x) <= lineTol && std::abs(b.x - x) <= lineTol)
             {
                 const double ylo = std::min(a.y, b.y);
                 const double yhi = std::max(a.y, b.y);

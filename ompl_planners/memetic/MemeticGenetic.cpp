@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/planners/memetic/MemeticGenetic.h"
+
+#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    MemeticGenetic::MemeticGenetic(const ob::SpaceInformationPtr &si, const std::string &name)
+        : MemeticPlanner(si, name, 20)
+    {
+        declareParam<double>("crossover_rate", this, &MemeticGenetic::setCrossoverRate,
+                             &MemeticGenetic::getCrossoverRate, "0.:0.05:1.");
+        declareParam<double>("mutation_rate", this, &MemeticGenetic::setMutationRate,
+                             &MemeticGenetic::getMutationRate, "0.:0.05:1.");
+        declareParam<double>("immigrant_rate", this, &MemeticGenetic::setImmigrantRate,
+                             &MemeticGenetic::getImmigrantRate, "0.:0.05:1.");
+        declareParam<unsigned int>("tournament_size", this, &MemeticGenetic::setTournamentSize,
+                                   &MemeticGenetic::getTournamentSize, "1:1:100");
+    }
+
+    void MemeticGenetic::setCrossoverRate(double r)
+    {
+        checkParameterRange("crossover_rate", r, 0.0, 1.0);
+        crossoverRate_ = r;
+    }
+
+    void MemeticGenetic::setMutationRate(double r)
+    {
+        checkParameterRange("mutation_rate", r, 0.0, 1.0);
+        mutationRate_ = r;
+    }
+
+    void MemeticGenetic::setImmigrantRate(double r)
+    {
+        checkParameterRange("immigrant_rate", r, 0.0, 1.0);
+        immigrantRate_ = r;
+    }
+
+    void MemeticGenetic::setTournamentSize(unsigned int k)
+    {
+        checkParameterRange("tournament_size", k, 1, 100);
+        tournamentSize_ = k;
+    }
+
+    std::size_t MemeticGenetic::tournament()
+    {
+        const int n = static_cast<int>(pop_.size());
+        auto best = static_cast<std::size_t>(rng_.uniformInt(0, n - 1));
+        for (unsigned int k = 1; k < tournamentSize_; ++k)
+        {
+            const auto c = static_cast<std::size_t>(rng_.uniformInt(0, n - 1));
+            if (pop_[c].cost < pop_[best].cost)
+                best = c;
+        }
+        return best;
+    }
+
+    bool MemeticGenetic::generation(unsigned long /*t*/)
+    {
+        const std::size_t n = pop_.size();
+        Individual child;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            if (stopRequested())
+                return false;
+            const std::size_t a = tournament();
+            bool changed = false;
+            if (n > 1 && rng_.uniform01() < crossoverRate_)
+            {
+                std::size_t b = tournament();
+                if (b == a)
+                    b = (a + 1 + static_cast<std::size_t>(rng_.uniformInt(0, int(n) - 2))) % n;
+                const double radius = 2.5 * MemeticToolkit::length(pop_[a].path) / 47.0;
+                changed =
+                    toolkit().splice(pop_[a].path, pop_[b].path, radius, rng_.uniform01() < 0.5, child.path);
+            }
+            if (!changed)
+                child.path = pop_[a].path;
+            if (!changed || rng_.uniform01() < mutationRate_)
+            {
+                const double u = rng_.uniform01();
+                if (u < 0.25)
+                    changed = toolkit().detour(child.path, 0.3) || changed;
+                else if (u < 0.35)
+                    changed = toolkit().flip(child.path) || changed;
+                else
+                    changed =
+                        toolkit().rewalk(child.path, 0.3, getWalkNoise(), 4000, stopFunction()) || changed;
+            }
+            if (!changed)
+                continue;
+            if (!improveAndEvaluate(child))
+                return false;
+            crowdingInsert(child);
+        }
+        if (rng_.uniform01() < immigrantRate_)
+        {
+            Individual immigrant;
+            if (walkIndividual(immigrant))
+                crowdingInsert(immigrant);
+            else if (stopRequested())
+                return false;
+        }
+        return true;
+    }
+} // namespace mhplan

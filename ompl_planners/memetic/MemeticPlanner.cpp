@@ -1,0 +1,653 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/planners/memetic/MemeticPlanner.h"
+
+#include "mhplan/planners/common/PlannerSupport.h"
+#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/collision/Validity.h"
+
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Exception.h>
+#include <ompl/util/String.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan
+{
+    MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
+                                   unsigned int populationSize)
+        : ob::Planner(si, name), populationSize_(populationSize),
+          bestCostValue_(std::numeric_limits<double>::infinity())
+    {
+        specs_.approximateSolutions = true;
+        specs_.optimizingPaths = true;
+        specs_.canReportIntermediateSolutions = true;
+        specs_.multithreaded = false;
+        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
+        stop_ = [this] { return stopRequested(); };
+
+        declareParam<unsigned int>("population_size", this, &MemeticPlanner::setPopulationSize,
+                                   &MemeticPlanner::getPopulationSize, "2:1:1000");
+        declareParam<unsigned int>("max_iterations", this, &MemeticPlanner::setMaxIterations,
+                                   &MemeticPlanner::getMaxIterations, "0:1:1000000");
+        declareParam<unsigned long>("seed", this, &MemeticPlanner::setSeed, &MemeticPlanner::getSeed,
+                                    "0:1:4294967295");
+        declareParam<double>("walk_noise", this, &MemeticPlanner::setWalkNoise, &MemeticPlanner::getWalkNoise,
+                             "0.:0.1:10.");
+        declareParam<double>("walk_weight", this, &MemeticPlanner::setWalkWeight,
+                             &MemeticPlanner::getWalkWeight, "1.:0.1:10.");
+        declareParam<unsigned int>("walk_expansions", this, &MemeticPlanner::setWalkExpansions,
+                                   &MemeticPlanner::getWalkExpansions, "1000:1000:100000000");
+        declareParam<unsigned int>("lattice_levels", this, &MemeticPlanner::setLatticeLevels,
+                                   &MemeticPlanner::getLatticeLevels, "1:1:16");
+        declareParam<double>("coarse_turn", this, &MemeticPlanner::setCoarseTurn,
+                             &MemeticPlanner::getCoarseTurn, "0.01:0.01:3.");
+        declareParam<double>("fine_turn", this, &MemeticPlanner::setFineTurn, &MemeticPlanner::getFineTurn,
+                             "0.001:0.001:1.");
+        declareParam<unsigned int>("polish_passes", this, &MemeticPlanner::setPolishPasses,
+                                   &MemeticPlanner::getPolishPasses, "1:1:100000");
+        declareParam<unsigned int>("elite_rewalks", this, &MemeticPlanner::setEliteRewalks,
+                                   &MemeticPlanner::getEliteRewalks, "0:1:1000");
+        declareParam<unsigned int>("stagnation", this, &MemeticPlanner::setStagnation,
+                                   &MemeticPlanner::getStagnation, "1:1:1000000");
+        declareParam<unsigned int>("bisections", this, &MemeticPlanner::setBisections,
+                                   &MemeticPlanner::getBisections, "4:1:40");
+
+        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
+        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
+        addPlannerProgressProperty("fitness evaluations INTEGER",
+                                   [this] { return std::to_string(evaluationCount()); });
+        addPlannerProgressProperty("motion checks INTEGER",
+                                   [this] { return std::to_string(motionCheckCount()); });
+    }
+
+    MemeticPlanner::~MemeticPlanner()
+    {
+        if (costA_ != nullptr)
+            si_->freeState(costA_);
+        if (costB_ != nullptr)
+            si_->freeState(costB_);
+        freeStates(*si_, plannerDataStates_);
+    }
+
+    void MemeticPlanner::setPopulationSize(unsigned int n)
+    {
+        checkParameterRange("population_size", n, 2, 1000);
+        populationSize_ = n;
+    }
+
+    void MemeticPlanner::setMaxIterations(unsigned int n)
+    {
+        checkParameterRange("max_iterations", n, 0, 1000000);
+        maxIterations_ = n;
+    }
+
+    void MemeticPlanner::setSeed(unsigned long seed)
+    {
+        checkParameterRange("seed", static_cast<double>(seed), 0.0, 4294967295.0);
+        seed_ = seed;
+        if (problemReady_)
+            clear();
+    }
+
+    void MemeticPlanner::setWalkNoise(double noise)
+    {
+        checkParameterRange("walk_noise", noise, 0.0, 10.0);
+        walkNoise_ = noise;
+    }
+
+    void MemeticPlanner::setWalkWeight(double w)
+    {
+        checkParameterRange("walk_weight", w, 1.0, 10.0);
+        walkWeight_ = w;
+    }
+
+    void MemeticPlanner::setWalkExpansions(unsigned int n)
+    {
+        checkParameterRange("walk_expansions", n, 1000, 100000000);
+        walkExpansions_ = n;
+    }
+
+    void MemeticPlanner::setLatticeLevels(unsigned int n)
+    {
+        checkParameterRange("lattice_levels", n, 1, 16);
+        latticeLevels_ = n;
+    }
+
+    void MemeticPlanner::setCoarseTurn(double x)
+    {
+        checkParameterRange("coarse_turn", x, 0.01, 3.0);
+        coarseTurn_ = x;
+    }
+
+    void MemeticPlanner::setFineTurn(double x)
+    {
+        checkParameterRange("fine_turn", x, 0.001, 1.0);
+        fineTurn_ = x;
+    }
+
+    void MemeticPlanner::setPolishPasses(unsigned int n)
+    {
+        checkParameterRange("polish_passes", n, 1, 100000);
+        polishPasses_ = n;
+    }
+
+    void MemeticPlanner::setEliteRewalks(unsigned int n)
+    {
+        checkParameterRange("elite_rewalks", n, 0, 1000);
+        eliteRewalks_ = n;
+    }
+
+    void MemeticPlanner::setStagnation(unsigned int n)
+    {
+        checkParameterRange("stagnation", n, 1, 1000000);
+        stagnation_ = n;
+    }
+
+    void MemeticPlanner::setBisections(unsigned int n)
+    {
+        checkParameterRange("bisections", n, 4, 40);
+        bisections_ = n;
+    }
+
+    void MemeticPlanner::refuseSetup(const std::string &message)
+    {
+        setup_ = false;
+        const std::string text = getName() + ": " + message;
+        OMPL_ERROR("%s", text.c_str());
+        throw ompl::Exception(text);
+    }
+
+    void MemeticPlanner::setup()
+    {
+        ob::Planner::setup();
+        const ob::StateSpacePtr &ss = si_->getStateSpace();
+        const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(ss.get());
+        if (space == nullptr || space->getDimension() != 2)
+            refuseSetup(
+                "needs a 2-dimensional ompl::base::RealVectorStateSpace (the lattice walks, pull moves "
+                "and crossover joints are planar); got the state space '" +
+                ss->getName() + "'" +
+                (space != nullptr ? " of dimension " + std::to_string(space->getDimension()) : "") +
+                ". Use SMA, LRSMA or MGO in R^k.");
+        const ob::RealVectorBounds &b = space->getBounds();
+        for (unsigned int j = 0; j < 2; ++j)
+            if (!std::isfinite(b.low[j]) || !std::isfinite(b.high[j]) || b.low[j] >= b.high[j])
+                refuseSetup("needs finite bounds low < high on both coordinates");
+    }
+
+    void MemeticPlanner::clear()
+    {
+        ob::Planner::clear();
+        clearAlgorithm();
+        pop_.clear();
+        freeStates(*si_, plannerDataStates_);
+        problemReady_ = false;
+        started_ = false;
+        haveSolution_ = false;
+        bestPath_.clear();
+        closest_.clear();
+        polished_.clear();
+        level_ = 0;
+        noPath_ = false;
+        fillCut_ = false;
+        walks_ = 0;
+        sinceImprovement_ = 0;
+        generationInEpoch_ = 0;
+        restarts_ = 0;
+        if (toolkit_)
+            toolkit_->resetCounts();
+        bestCostValue_ = std::numeric_limits<double>::infinity();
+        iterationCount_ = 0;
+        evaluationCount_ = 0;
+        motionChecks_ = 0;
+    }
+
+    bool MemeticPlanner::prepareProblem()
+    {
+        const ob::State *start = pis_.nextStart();
+        if (start == nullptr)
+        {
+            OMPL_ERROR("%s: no valid start state", getName().c_str());
+            return false;
+        }
+        start_ = statePosition(start);
+        const ob::State *goal = pis_.nextGoal();
+        if (goal == nullptr)
+        {
+            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
+            return false;
+        }
+        goal_ = statePosition(goal);
+        const auto &b = si_->getStateSpace()->as<ob::RealVectorStateSpace>()->getBounds();
+        const Box box{b.low[0], b.high[0], b.low[1], b.high[1]};
+        scale_ = std::max(box.width(), box.height());
+        if (!toolkit_)
+            toolkit_ = std::make_unique<MemeticToolkit>(si_, rng_);
+        toolkit_->setBounds(box);
+        toolkit_->setBisections(bisections_);
+        toolkit_->resetCounts();
+        if (costA_ == nullptr)
+        {
+            costA_ = si_->allocState();
+            costB_ = si_->allocState();
+        }
+        if (seed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        closestDistance_ = std::numeric_limits<double>::infinity();
+        closest_ = {start_};
+        OMPL_INFORM("%s: seed %lu, N = %u", getName().c_str(),
+                    static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_);
+        problemReady_ = true;
+        return true;
+    }
+
+    double MemeticPlanner::pathCost(const MemeticPath &path)
+    {
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        if (!opt)
+            return MemeticToolkit::length(path);
+        ob::Cost c = opt->identityCost();
+        for (std::size_t i = 1; i < path.size(); ++i)
+        {
+            setStatePosition(costA_, path[i - 1]);
+            setStatePosition(costB_, path[i]);
+            c = opt->combineCosts(c, opt->motionCost(costA_, costB_));
+        }
+        return c.value();
+    }
+
+    void MemeticPlanner::record(const MemeticPath &path, double cost)
+    {
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        const ob::Cost c(cost);
+        const bool better =
+            !haveSolution_ || (opt ? opt->isCostBetterThan(c, bestCostObj_) : cost < bestCostObj_.value());
+        if (!better)
+            return;
+        if (haveSolution_ && bestCostObj_.value() - cost <= 1e-12 * std::abs(cost))
+            return; // rounding noise is not an improvement
+        haveSolution_ = true;
+        bestCostObj_ = c;
+        bestPath_ = path;
+        bestCostValue_ = cost;
+        reportImprovement(
+            this, pdef_, *si_, bestPath_.size(),
+            [this](ob::State *s, std::size_t i) { setStatePosition(s, bestPath_[i]); }, bestCostObj_);
+    }
+
+    double MemeticPlanner::evaluate(const MemeticPath &path)
+    {
+        ++evaluationCount_;
+        const double c = pathCost(path);
+        record(path, c);
+        return c;
+    }
+
+    bool MemeticPlanner::improveAndEvaluate(Individual &ind)
+    {
+        MemeticPath p = ind.path;
+        toolkit_->tighten(p, coarseTurn_, 1e-4, 30, stop_);
+        if (stopRequested())
+            return false;
+        ind.path.swap(p);
+        // Every operator checks the segments it makes; this pass guards the joints on split segments under a
+        // sampling motion validator (which may refuse a piece of a segment it accepted).
+        if (!toolkit_->pathValid(ind.path))
+        {
+            ind.cost = std::numeric_limits<double>::infinity();
+            MemeticToolkit::resample(ind.path, 16, ind.signature);
+            return true;
+        }
+        ind.cost = evaluate(ind.path);
+        MemeticToolkit::resample(ind.path, 16, ind.signature);
+        return true;
+    }
+
+    MemeticToolkit::WalkResult MemeticPlanner::walk(MemeticPath &path, const Vec2 &from, const Vec2 &to,
+                                                    double noise, double weight)
+    {
+        while (true)
+        {
+            // Powers of two (in the space's units): the levels nest, and they align with grid maps whose
+            // cells are a power of two wide (1 m, 0.5 m, ...) when the start is at a cell centre.
+            const double h = std::pow(2.0, std::floor(std::log2(scale_ / 16.0)) - double(level_));
+            const MemeticToolkit::WalkResult r = toolkit_->randomWalk(
+                path, from, to, h, noise, walkExpansions_, stop_, closest_, closestDistance_, weight);
+            if (r != MemeticToolkit::WalkResult::Exhausted)
+                return r;
+            if (level_ + 1 >= latticeLevels_)
+                return r;
+            ++level_;
+        }
+    }
+
+    bool MemeticPlanner::walkIndividual(Individual &out)
+    {
+        if (noPath_)
+            return false;
+        const double noise = walks_ == 0 ? 0.0 : rng_.uniformReal(0.0, walkNoise_);
+        const Box &box = toolkit_->bounds();
+        toolkit_->randomiseField(std::hypot(box.width(), box.height()));
+        // Every other walk after the first passes a random via point (valid, within the box around start and
+        // goal widened by half their distance): a different homotopy class by construction.
+        bool viaWalk = walks_ > 0 && rng_.uniform01() < 0.5;
+        ++walks_;
+        Vec2 via;
+        if (viaWalk)
+        {
+            // Near the straight line: along it uniformly, off it by up to 0.3 of the start-goal distance.
+            viaWalk = false;
+            const Vec2 line = goal_ - start_;
+            const double d = norm(line);
+            const Vec2 normal = d > 0.0 ? Vec2(-line.y / d, line.x / d) : Vec2(0.0, 1.0);
+            for (int k = 0; k < 20 && !viaWalk; ++k)
+            {
+                via =
+                    start_ + line * rng_.uniformReal(0.15, 0.85) + normal * (d * rng_.uniformReal(-0.3, 0.3));
+                viaWalk = toolkit_->pointValid(via);
+            }
+        }
+        MemeticToolkit::WalkResult r;
+        if (viaWalk)
+        {
+            MemeticPath second;
+            const double keepDistance = closestDistance_;
+            r = walk(out.path, start_, via, noise, walkWeight_);
+            closestDistance_ = keepDistance; // the approximate solution is about the goal, not the via point
+            if (r == MemeticToolkit::WalkResult::Found)
+            {
+                r = walk(second, via, goal_, noise, walkWeight_);
+                if (r == MemeticToolkit::WalkResult::Found)
+                    out.path.insert(out.path.end(), second.begin() + 1, second.end());
+            }
+            if (r == MemeticToolkit::WalkResult::Exhausted)
+                r = MemeticToolkit::WalkResult::Budget; // the via point may be enclosed: not a verdict
+        }
+        else
+        {
+            r = walk(out.path, start_, goal_, noise, walkWeight_);
+            if (r == MemeticToolkit::WalkResult::Exhausted)
+            {
+                noPath_ = true;
+                OMPL_INFORM("%s: no walk reaches the goal at the finest lattice step", getName().c_str());
+            }
+        }
+        if (r != MemeticToolkit::WalkResult::Found)
+            return false;
+        if (!haveSolution_ && toolkit_->pathValid(out.path))
+        {
+            // The first path is reported at once: on huge worlds its local search takes a while.
+            if (stopRequested())
+                return false;
+            evaluate(out.path);
+        }
+        return improveAndEvaluate(out) && std::isfinite(out.cost);
+    }
+
+    std::size_t MemeticPlanner::bestIndex() const
+    {
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < pop_.size(); ++i)
+            if (pop_[i].cost < pop_[best].cost)
+                best = i;
+        return best;
+    }
+
+    double MemeticPlanner::signatureDistance(const Individual &a, const Individual &b)
+    {
+        double d = 0.0;
+        for (std::size_t k = 0; k < a.signature.size() && k < b.signature.size(); ++k)
+            d = std::max(d, distance(a.signature[k], b.signature[k]));
+        return d;
+    }
+
+    bool MemeticPlanner::crowdingInsert(Individual &child)
+    {
+        if (pop_.empty())
+            return false;
+        std::size_t nearest = 0;
+        double dn = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < pop_.size(); ++i)
+        {
+            const double d = signatureDistance(child, pop_[i]);
+            if (d < dn)
+            {
+                dn = d;
+                nearest = i;
+            }
+        }
+        if (child.cost < pop_[nearest].cost)
+        {
+            std::swap(pop_[nearest], child);
+            return true;
+        }
+        return false;
+    }
+
+    bool MemeticPlanner::fillPopulation()
+    {
+        const unsigned long startChecks = toolkit_->motionChecks();
+        while (pop_.size() < populationSize_ && !noPath_)
+        {
+            if (stopRequested())
+                return false;
+            // Huge worlds: start with what there is once the walks have cost kFillBudget motion checks
+            // (deterministic, unlike a clock); the rest joins one per generation.
+            if (pop_.size() >= 2 && toolkit_->motionChecks() - startChecks > kFillBudget)
+            {
+                fillCut_ = true;
+                return true;
+            }
+            Individual ind;
+            if (walkIndividual(ind))
+                pop_.push_back(std::move(ind));
+            else if (stopRequested())
+                return false;
+            else if (pop_.empty() || noPath_)
+                return !noPath_ && !pop_.empty(); // try again next generation
+        }
+        return !pop_.empty();
+    }
+
+    bool MemeticPlanner::readyToStart() const
+    {
+        return pop_.size() == populationSize_ || (pop_.size() >= 2 && fillCut_) || (!pop_.empty() && noPath_);
+    }
+
+    void MemeticPlanner::polishElite()
+    {
+        if (pop_.empty())
+            return;
+        const std::size_t b = bestIndex();
+        if (polished_.empty() || pop_[b].cost < polishedSource_)
+        {
+            // A new best individual: polish it from now on (its coarse version stays in the population).
+            polished_ = pop_[b].path;
+            polishedSource_ = pop_[b].cost;
+        }
+        MemeticPath p = polished_;
+        toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000, true);
+        if (stopRequested() || !toolkit_->pathValid(p))
+            return;
+        polished_.swap(p);
+        evaluate(polished_);
+    }
+
+    void MemeticPlanner::eliteRewalks()
+    {
+        for (unsigned int k = 0; k < eliteRewalks_ && !pop_.empty(); ++k)
+        {
+            if (stopRequested())
+                return;
+            const std::size_t b = bestIndex();
+            Individual child;
+            child.path = pop_[b].path;
+            if (!toolkit_->rewalk(child.path, 0.3, walkNoise_, 4000, stop_))
+                continue;
+            if (!improveAndEvaluate(child))
+                return;
+            if (child.cost < pop_[b].cost)
+            {
+                pop_[b] = std::move(child);
+                populationChanged();
+            }
+        }
+    }
+
+    void MemeticPlanner::restart()
+    {
+        ++restarts_;
+        const std::size_t b = bestIndex();
+        Individual elite = pop_[b];
+        pop_.clear();
+        pop_.push_back(std::move(elite));
+        sinceImprovement_ = 0;
+        generationInEpoch_ = 0;
+    }
+
+    ob::PlannerStatus MemeticPlanner::solve(const ob::PlannerTerminationCondition &ptc)
+    {
+        checkValidity();
+        if (!problemReady_ && !prepareProblem())
+            return ob::PlannerStatus::INVALID_START;
+        ptc_ = &ptc;
+        unsigned int done = 0;
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        auto satisfied = [&] { return haveSolution_ && opt && opt->isSatisfied(bestCostObj_); };
+        if (!ptc())
+        {
+            fillPopulation();
+            if (!started_ && readyToStart())
+            {
+                started_ = true;
+                startAlgorithm();
+            }
+        }
+        while (!ptc() && !satisfied() && (maxIterations_ == 0 || done < maxIterations_))
+        {
+            bool completed = true;
+            const double before =
+                haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+            if (!started_)
+            {
+                // The population is not ready yet (no path found so far, or interrupted): walk on.
+                fillPopulation();
+                polishElite();
+                if (readyToStart())
+                {
+                    started_ = true;
+                    startAlgorithm();
+                }
+            }
+            else
+            {
+                ++generationInEpoch_;
+                // The polish first: on huge worlds a generation may take long, the incumbent still improves.
+                polishElite();
+                eliteRewalks();
+                if (pop_.size() < populationSize_ && !noPath_ && !stopRequested())
+                {
+                    Individual ind;
+                    if (walkIndividual(ind))
+                    {
+                        pop_.push_back(std::move(ind));
+                        populationChanged();
+                    }
+                }
+                completed = !stopRequested() && generation(generationInEpoch_);
+            }
+            if (stopRequested())
+                completed = false;
+            if (!completed)
+                break;
+            ++iterationCount_;
+            ++done;
+            const double after =
+                haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+            if (std::isfinite(before) && after < before - 1e-9 * before)
+                sinceImprovement_ = 0;
+            else
+                ++sinceImprovement_;
+            if (started_ && sinceImprovement_ >= stagnation_ && !noPath_)
+            {
+                restart();
+                fillCut_ = false;
+                if (!fillPopulation() || !readyToStart())
+                    started_ = false;
+                else
+                    restartAlgorithm();
+            }
+            publishCounts();
+        }
+        ptc_ = nullptr;
+        publishCounts();
+        bool exact = false, approximate = false;
+        reportSolution(exact, approximate);
+        OMPL_INFORM("%s: %lu generations, %lu evaluations, %lu motion checks, %lu restarts, best cost %s",
+                    getName().c_str(), iterationCount(), evaluationCount(), motionCheckCount(), restarts_,
+                    ompl::toString(bestCost()).c_str());
+        if (exact)
+            return ob::PlannerStatus::EXACT_SOLUTION;
+        if (approximate)
+            return ob::PlannerStatus::APPROXIMATE_SOLUTION;
+        return ob::PlannerStatus::TIMEOUT;
+    }
+
+    void MemeticPlanner::publishCounts()
+    {
+        if (toolkit_)
+            motionChecks_ = toolkit_->motionChecks();
+    }
+
+    void MemeticPlanner::reportSolution(bool &exact, bool &approximate)
+    {
+        exact = approximate = false;
+        const MemeticPath *points = haveSolution_ ? &bestPath_ : nullptr;
+        if (points == nullptr && closest_.size() >= 1 && std::isfinite(closestDistance_))
+            points = &closest_;
+        if (points == nullptr)
+            return;
+        auto path = std::make_shared<og::PathGeometric>(si_);
+        ob::State *s = si_->allocState();
+        for (const Vec2 &p : *points)
+        {
+            setStatePosition(s, p);
+            path->append(s);
+        }
+        si_->freeState(s);
+        ob::PlannerSolution solution(path);
+        solution.setPlannerName(getName());
+        if (haveSolution_)
+        {
+            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+            if (opt)
+                solution.setOptimized(opt, bestCostObj_, opt->isSatisfied(bestCostObj_));
+            exact = true;
+        }
+        else
+        {
+            solution.setApproximate(std::max(closestDistance_, 1e-12));
+            approximate = true;
+        }
+        pdef_->addSolutionPath(solution);
+    }
+
+    void MemeticPlanner::getPlannerData(ob::PlannerData &data) const
+    {
+        ob::Planner::getPlannerData(data);
+        const MemeticPath &points = haveSolution_ ? bestPath_ : closest_;
+        addPathToPlannerData(
+            *si_, points.size(), [&points](ob::State *s, std::size_t i) { setStatePosition(s, points[i]); },
+            haveSolution_, data, plannerDataStates_);
+    }
+} // namespace mhplan

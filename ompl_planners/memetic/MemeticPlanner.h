@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the machinery of the memetic (-MEM) improved variants: a population of feasible paths of any
+   length, multi-resolution walks for initial paths, local search, elite polishing, restarts, best-so-far
+   tracking and the intermediate-solution callback. An algorithm writes its update rule (generation()). */
+#ifndef MHPLAN_MEMETIC_PLANNER_H
+#define MHPLAN_MEMETIC_PLANNER_H
+
+#include "mhplan/planners/memetic/MemeticToolkit.h"
+
+#include <ompl/base/Planner.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief Base class of the memetic improved variants GA-MEM, SMA-MEM, MGO-MEM and LRSMA-MEM (not in
+        any paper: mhplan's scalable, anytime versions of the update rules).
+
+        Problem: a 2-dimensional ompl::base::RealVectorStateSpace with finite bounds (the walks, the pull
+        moves and the crossover joints are planar), any validity checker and motion validator, start and goal
+        from the problem definition (the first start, one goal sample). The planner sees the problem only
+        through the space information (bounds, isValid, checkMotion) and the optimization objective.
+
+        Design (each choice stated as docs/conventions.md asks):
+        - Encoding that grows with the problem: an individual is a feasible polyline of any number of
+          waypoints (MemeticToolkit). Every individual is feasible by construction: it comes from a lattice
+          walk checked by the motion validator, and every operator keeps feasibility (moves are accepted
+          only when the motion validator accepts the changed segments).
+        - Feasible initial population: \c population_size randomised lattice walks (MemeticToolkit::
+          randomWalk, a new random cost field per walk of strength drawn in [0, \c walk_noise), heuristic
+          weight \c walk_weight (weight 1, A*, was measured slower: on mazes it expands most of the lattice);
+          the first walk is noiseless; every other later walk passes a random valid
+       via point, uniformly along the start-goal line between 15 % and 85 % and off it by up to 0.3 of its
+       length), each shortened by the local search. Multi-resolution: the lattice step starts at the largest
+       power of two (in the space's units) not above 1/16 of the bounds' larger side (powers of two nest, and
+       align with grid maps of power-of-two cells when the start is at a cell centre) and halves whenever a
+       walk exhausts its lattice (no path at that resolution), at most \c lattice_levels times; the level
+       reached is kept for later walks. A walk stops after \c walk_expansions nodes (then it is retried later
+       with other noise).
+        - Elite neighbourhood search: \c elite_rewalks times per generation a piece of the best individual
+          is re-walked (MemeticToolkit::rewalk: another homotopy class nearby), tightened, and kept when
+          shorter (a class-changing local improvement, like 2-opt in memetic TSP solvers). 0 for GA-MEM,
+          whose mutation does this; 4 for the offset variants, whose update rules move within the
+          neighbourhood of the reference.
+        - Huge worlds: once the walks of a (re)start have cost 3e6 motion checks and there are at least 2
+          individuals, the generations start and the rest of the population joins one walk per generation
+          (a deterministic budget, so runs stay reproducible). The elite polish runs before each generation.
+        - Memetic local search: every new individual is tightened with the coarse turn limit
+          \c coarse_turn (MemeticToolkit::tighten, relative tolerance 1e-4, at most 30 passes); the best
+          individual is polished after every generation with the fine limit \c fine_turn (tolerance 1e-10,
+          \c polish_passes passes per generation, so the polish continues across generations: anytime
+          refinement of the incumbent). The polish works on a copy: the population keeps coarse paths (few
+          waypoints, cheap to vary, compared at the same level of refinement); a new best individual
+          replaces the copy being polished.
+        - Fitness = the optimization objective's cost of the path (path length by default); lower is better.
+          No penalty terms: nothing infeasible is ever evaluated.
+        - Anytime: with \c max_iterations = 0 the planner runs generations until the termination condition
+          holds. When the best cost has not improved by more than 1e-9 (relative) for \c stagnation
+          generations, the population restarts with elitism: the best individual stays, the others are
+          replaced by fresh walks, the algorithm's schedule restarts with its length doubled
+          (restartAlgorithm()), so schedules that depend on t/T need no time budget. The termination
+          condition is tested before every evaluation and inside walks (every 64 nodes) and local searches
+          (every pass and every 16 waypoints).
+        - Every improvement of the best path is reported to the problem definition's intermediate-solution
+          callback (reportImprovement()); progress properties \c best \c cost, \c iterations (generations),
+          \c fitness \c evaluations (evaluated individuals) and \c motion \c checks are atomics.
+        - When no walk reaches the goal (no path, or none found yet) each generation tries one more walk;
+          the walked path that came closest to the goal is reported as an approximate solution.
+        - Randomness only from the member ompl::RNG (seeded from OMPL's global seed, or from \c seed when
+          it is not 0): the same seed gives the same run under an iteration budget. */
+    class MemeticPlanner : public ompl::base::Planner
+    {
+      public:
+        MemeticPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
+                       unsigned int populationSize);
+        ~MemeticPlanner() override;
+
+        ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        void clear() override;
+        void setup() override;
+        void getPlannerData(ompl::base::PlannerData &data) const override;
+
+        /** \brief Population size N (2..1000). */
+        void setPopulationSize(unsigned int n);
+        unsigned int getPopulationSize() const { return populationSize_; }
+        /** \brief Generations per solve() call, 0 = until the termination condition (0..1000000). */
+        void setMaxIterations(unsigned int n);
+        unsigned int getMaxIterations() const { return maxIterations_; }
+        /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
+        void setSeed(unsigned long seed);
+        unsigned long getSeed() const { return seed_; }
+        /** \brief Largest priority noise of the walks (0..10). */
+        void setWalkNoise(double noise);
+        double getWalkNoise() const { return walkNoise_; }
+        /** \brief Heuristic weight of the walks after the first (1..10). */
+        void setWalkWeight(double w);
+        double getWalkWeight() const { return walkWeight_; }
+        /** \brief Node budget of one walk (1000..100000000). */
+        void setWalkExpansions(unsigned int n);
+        unsigned int getWalkExpansions() const { return walkExpansions_; }
+        /** \brief Number of lattice resolutions (1..16). */
+        void setLatticeLevels(unsigned int n);
+        unsigned int getLatticeLevels() const { return latticeLevels_; }
+        /** \brief Largest turn (rad) per waypoint after the coarse local search (0.01..3). */
+        void setCoarseTurn(double x);
+        double getCoarseTurn() const { return coarseTurn_; }
+        /** \brief Largest turn (rad) per waypoint of the polished best path (0.001..1). */
+        void setFineTurn(double x);
+        double getFineTurn() const { return fineTurn_; }
+        /** \brief Local-search passes of the elite polish per generation (1..100000). */
+        void setPolishPasses(unsigned int n);
+        unsigned int getPolishPasses() const { return polishPasses_; }
+        /** \brief Re-walk trials on the best individual per generation (0..1000). */
+        void setEliteRewalks(unsigned int n);
+        unsigned int getEliteRewalks() const { return eliteRewalks_; }
+        /** \brief Generations without improvement before a restart with elitism (1..1000000). */
+        void setStagnation(unsigned int n);
+        unsigned int getStagnation() const { return stagnation_; }
+        /** \brief Bisection steps of each pull move (4..40). */
+        void setBisections(unsigned int n);
+        unsigned int getBisections() const { return bisections_; }
+
+        double bestCost() const { return bestCostValue_.load(); }
+        unsigned long iterationCount() const { return iterationCount_.load(); }
+        unsigned long evaluationCount() const { return evaluationCount_.load(); }
+        unsigned long motionCheckCount() const { return motionChecks_.load(); }
+        /** \brief Restarts with elitism since the last clear(). */
+        unsigned long restartCount() const { return restarts_; }
+
+      protected:
+        struct Individual
+        {
+            MemeticPath path;
+            double cost{0.0};
+            /** \brief 16 points at equal arc length (for crowding). */
+            MemeticPath signature;
+        };
+
+        /** \brief Algorithm state after the population exists (called once per (re)start). */
+        virtual void startAlgorithm() {}
+        /** \brief One generation of the update rule on pop_; false when interrupted. \e t counts
+            generations since the last (re)start, from 1. */
+        virtual bool generation(unsigned long t) = 0;
+        /** \brief A restart with elitism happened (pop_ refilled): restart schedules (double T). */
+        virtual void restartAlgorithm() {}
+        virtual void clearAlgorithm() {}
+        /** \brief An individual joined pop_ outside generation() (a late walk): refresh the encoding. */
+        virtual void populationChanged() {}
+
+        bool stopRequested() const { return ptc_ == nullptr || (*ptc_)(); }
+        const std::function<bool()> &stopFunction() const { return stop_; }
+
+        /** \brief A fresh feasible individual from a walk (coarse local search applied), evaluated; false
+            when no walk reached the goal (interrupted, budget, or no path at the finest resolution). */
+        bool walkIndividual(Individual &out);
+        /** \brief Coarse local search of \e ind.path, then evaluation (cost, signature); false when
+            interrupted before the evaluation (ind unchanged then). */
+        bool improveAndEvaluate(Individual &ind);
+        /** \brief Objective cost of a path, counted as an evaluation; updates the best. */
+        double evaluate(const MemeticPath &path);
+        /** \brief Index of the best individual of pop_. */
+        std::size_t bestIndex() const;
+        /** \brief Deterministic crowding: \e child replaces the most similar individual (signature distance)
+            when it is cheaper; returns true when it entered the population. */
+        bool crowdingInsert(Individual &child);
+        /** \brief max over the signature points of the distance (similarity of two paths). */
+        static double signatureDistance(const Individual &a, const Individual &b);
+
+        MemeticToolkit &toolkit() { return *toolkit_; }
+        const Vec2 &startPoint() const { return start_; }
+        const Vec2 &goalPoint() const { return goal_; }
+        /** \brief The larger side of the bounds. */
+        double scale() const { return scale_; }
+        const MemeticPath &bestPath() const { return bestPath_; }
+        bool haveSolution() const { return haveSolution_; }
+        double coarseTurnLimit() const { return coarseTurn_; }
+
+        [[noreturn]] void refuseSetup(const std::string &message);
+
+        ompl::RNG rng_;
+        std::vector<Individual> pop_;
+
+      private:
+        bool prepareProblem();
+        /** \brief A walk from \e from to \e to, halving the lattice step on exhaustion (level_ persists). */
+        MemeticToolkit::WalkResult walk(MemeticPath &path, const Vec2 &from, const Vec2 &to, double noise,
+                                        double weight);
+        /** \brief Fill pop_ with walks up to N (or, with at least 2 individuals, until the walks have cost
+            kFillBudget motion checks); false when interrupted or no walk succeeded. */
+        bool fillPopulation();
+        /** \brief The population is complete, or cut short by the fill budget, or all the lattice offers. */
+        bool readyToStart() const;
+        static constexpr unsigned long kFillBudget = 3000000;
+        void polishElite();
+        /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
+        void eliteRewalks();
+        void restart();
+        void reportSolution(bool &exact, bool &approximate);
+        void record(const MemeticPath &path, double cost);
+        double pathCost(const MemeticPath &path);
+        void publishCounts();
+
+        unsigned int populationSize_;
+        unsigned int maxIterations_{0};
+        unsigned long seed_{0};
+        double walkNoise_{3.0};
+        double walkWeight_{2.0};
+        unsigned int walkExpansions_{400000};
+        unsigned int latticeLevels_{8};
+        double coarseTurn_{0.35};
+        double fineTurn_{0.05};
+        unsigned int polishPasses_{8};
+        unsigned int stagnation_{40};
+        unsigned int eliteRewalks_{0};
+        unsigned int bisections_{10};
+
+        const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
+        std::function<bool()> stop_;
+        bool problemReady_{false};
+        bool started_{false};
+        Vec2 start_, goal_;
+        double scale_{1.0};
+        std::unique_ptr<MemeticToolkit> toolkit_;
+        ompl::base::State *costA_{nullptr};
+        ompl::base::State *costB_{nullptr};
+        unsigned int level_{0};
+        bool noPath_{false};
+        bool fillCut_{false};
+        unsigned long walks_{0};
+        unsigned long sinceImprovement_{0};
+        unsigned long generationInEpoch_{0};
+        unsigned long restarts_{0};
+
+        bool haveSolution_{false};
+        ompl::base::Cost bestCostObj_;
+        MemeticPath bestPath_;
+        MemeticPath closest_;
+        /** \brief The polished copy of the best individual and that individual's (coarse) cost. */
+        MemeticPath polished_;
+        double polishedSource_{0.0};
+        double closestDistance_{0.0};
+        mutable std::vector<ompl::base::State *> plannerDataStates_;
+
+        std::atomic<double> bestCostValue_;
+        std::atomic<unsigned long> iterationCount_{0};
+        std::atomic<unsigned long> evaluationCount_{0};
+        std::atomic<unsigned long> motionChecks_{0};
+    };
+} // namespace mhplan
+
+#endif

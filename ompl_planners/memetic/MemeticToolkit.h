@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: path operators of the memetic (-MEM) planners: randomised multi-resolution lattice walks for
+   feasible initial paths, local search (shortcuts, pulling waypoints tight, adaptive subdivision), path
+   crossover at close points and detour mutation. Planar; validity only through the space information. */
+#ifndef MHPLAN_MEMETIC_TOOLKIT_H
+#define MHPLAN_MEMETIC_TOOLKIT_H
+
+#include "mhplan/base/Geometry.h"
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace mhplan
+{
+    using MemeticPath = std::vector<Vec2>;
+
+    /** \brief Path operators of the memetic planners (MemeticPlanner). A path is a polyline of planar points
+        from the start to the goal (both never moved). The toolkit sees the problem only through the space
+        information: the state space's bounds, the validity checker (isValid) and the motion validator
+        (checkMotion); every motion check is counted (motionChecks()).
+
+        Local search (tighten()), the memetic improvement of an individual, repeats passes of
+        - shortcut: drop waypoint i when waypoint i-1 sees waypoint i+1;
+        - pull tight: move waypoint i toward the closest point of the chord (i-1, i+1), then slide it toward
+          each neighbour along the segment to that neighbour (so that a waypoint held by an obstacle corner
+          or circle slides into the corner or along the arc); each move is the largest fraction found by
+          bisection (\c bisections steps) that keeps both adjacent segments valid; a move never lengthens
+          the path (the chord move and the slides cannot, by the triangle inequality); a waypoint none of
+          whose moves is possible is held by a contact inside one of its segments (a long segment in a
+          narrow corridor touching a corner): in the precise mode (the elite polish) the bisection goes on
+          halving down to 1e-9 of the bounds, and the motion validator's last valid point toward the chord
+          (checkMotion with lastValid) locates the contact, and a waypoint is inserted there, around which
+          the held waypoint can then turn (without this, string pulling stalls in mazes);
+        - adaptive subdivision: a waypoint whose turn exceeds \e maxTurn gets the midpoints of its two
+          segments inserted (a polyline wrapped round a circle with per-vertex turn x is longer than the arc
+          by about x^2 / 12: maxTurn 0.1 bounds that excess to 0.08 % of the arcs); an inserted point is kept
+          only when both halves of its segment pass the motion validator (a sampling validator may refuse a
+          piece of a segment it accepted);
+        until a pass shortens the path by less than \e relTol of its length, or \e maxPasses passes. Only
+        waypoints whose neighbourhood changed in the previous pass are moved again.
+
+        Feasible paths (randomWalk()): a randomised weighted best-first search on the lattice start + h (i, j)
+        over the 8 compass moves (edge checks by the motion validator, lazily when a node is taken from the
+        queue), priority g + w d(goal) (\e weight w: 1 is A*, larger is greedier) with every edge's cost
+       multiplied by 1 + noise (1 + f(m)) / 2 at the edge's midpoint m, f a random smooth field in [-1, 1]
+       (six plane waves of random direction, phase and wavelength between 1/24 and 1/3 of the bounds'
+       diagonal, drawn by randomiseField()): spatially correlated noise, so that walks take different homotopy
+       classes (independent noise per edge averages out along a path and sends every walk the same way). A
+       walk ends when a node sees the goal within 2 h, when the queue is exhausted (no path at this
+       resolution: the caller halves h) or after \e maxExpansions nodes. */
+    class MemeticToolkit
+    {
+      public:
+        MemeticToolkit(ompl::base::SpaceInformationPtr si, ompl::RNG &rng);
+        ~MemeticToolkit();
+        MemeticToolkit(const MemeticToolkit &) = delete;
+        MemeticToolkit &operator=(const MemeticToolkit &) = delete;
+
+        /** \brief Bounds of the first two coordinates (points outside are invalid). */
+        void setBounds(const Box &bounds) { bounds_ = bounds; }
+        const Box &bounds() const { return bounds_; }
+        /** \brief Bisection steps of every pull move (4..40). */
+        void setBisections(unsigned int n) { bisections_ = n; }
+
+        /** \brief The motion validator's verdict on a segment (both ends inside the bounds). Counted. */
+        bool motionValid(const Vec2 &a, const Vec2 &b);
+        /** \brief motionValid(); when invalid, \e fraction is the motion validator's last valid fraction
+            of the segment (checkMotion with lastValid). Counted. */
+        bool motionValid(const Vec2 &a, const Vec2 &b, double &fraction);
+        /** \brief Every segment of \e path passes motionValid(). */
+        bool pathValid(const MemeticPath &path);
+        /** \brief The validity checker's verdict on a point inside the bounds. */
+        bool pointValid(const Vec2 &p);
+        unsigned long motionChecks() const { return motionChecks_; }
+        void resetCounts() { motionChecks_ = 0; }
+
+        enum class WalkResult
+        {
+            Found,     ///< \e path runs from start to goal, every segment valid
+            Exhausted, ///< no path on this lattice
+            Budget,    ///< maxExpansions reached
+            Stopped    ///< \e stop() became true
+        };
+        /** \brief One randomised lattice walk with step \e h (see the class doc). On Found \e path is the
+            lattice path (start, nodes, goal); \e closest is updated with the node closest to the goal seen
+            so far (for approximate solutions) when it is closer than \e closestDistance. */
+        WalkResult randomWalk(MemeticPath &path, const Vec2 &start, const Vec2 &goal, double h, double noise,
+                              unsigned int maxExpansions, const std::function<bool()> &stop,
+                              MemeticPath &closest, double &closestDistance, double weight = 2.0);
+
+        /** \brief Draw a new random field for the following walks, wavelengths between \e size / 24 and
+            \e size / 3 (the bounds' diagonal for whole walks, the span of a re-walk). */
+        void randomiseField(double size);
+
+        /** \brief Greedy shortcut: from each kept waypoint jump to the farthest later waypoint it sees
+            (doubling, then bisection on the index). */
+        void shortcut(MemeticPath &path, const std::function<bool()> &stop);
+        /** \brief Local search (class doc); returns false when \e stop() interrupted it (the path is valid
+            and no longer than before either way). */
+        bool tighten(MemeticPath &path, double maxTurn, double relTol, unsigned int maxPasses,
+                     const std::function<bool()> &stop, unsigned int maxPoints = 4000, bool precise = false);
+
+        /** \brief Crossover: child = a[..p] -> b[q..] (one point) or a[..p1] -> b[q1..q2] -> a[p2..] (two
+            points), joined where the parents pass within \e radius of each other (resampled at 48 points
+            each), through the motion validator. False when no joint was found in a few tries. */
+        bool splice(const MemeticPath &a, const MemeticPath &b, double radius, bool twoPoint,
+                    MemeticPath &child);
+        /** \brief Detour mutation: replace the piece between arc positions s1 < s2 (span a random share of
+            the length, heavier for larger \e scale) by two segments through a random point off the chord;
+            false when no valid detour was found in a few tries. */
+        bool detour(MemeticPath &path, double scale);
+
+        /** \brief Flip mutation: move a random turning waypoint to the other side of the chord of its
+            neighbours (its mirror image, then 1.5 and 2.5 times as far), so that the path passes the obstacle
+            that held it on the other side; false when no mirrored point gave valid segments (4 waypoints
+            tried). */
+        bool flip(MemeticPath &path);
+
+        /** \brief Re-walk mutation: replace the piece between arc positions s1 < s2 (span a random share of
+            the length, heavier for larger \e scale) by a new randomised lattice walk between its ends (step
+            span / 24, field wavelengths from span / 8 to span, at most \e maxExpansions nodes, a fresh random
+           field of strength \e noise); false when the walk did not connect them. */
+        bool rewalk(MemeticPath &path, double scale, double noise, unsigned int maxExpansions,
+                    const std::function<bool()> &stop);
+
+        /** \brief \e n points at equal arc length (first = start, last = goal). */
+        static void resample(const MemeticPath &path, unsigned int n, MemeticPath &out);
+        static double length(const MemeticPath &path);
+        /** \brief The point at arc length \e s and the index of the segment it is on. */
+        static Vec2 pointAt(const MemeticPath &path, double s, std::size_t &segment);
+        /** \brief Largest turn angle at an interior waypoint (0 for a straight path). */
+        static double maxTurnAngle(const MemeticPath &path);
+
+      private:
+        /** \brief One pull-tight pass; returns true when a waypoint moved or was dropped. */
+        bool pullPass(MemeticPath &path, std::vector<char> &dirty, const std::function<bool()> &stop);
+        bool subdivide(MemeticPath &path, std::vector<char> &dirty, double maxTurn, unsigned int maxPoints);
+        /** \brief Largest t in [0, 1] (bisection) with a -> v + t d -> b valid (t = 0 assumed valid). */
+        double bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b);
+        bool inBounds(const Vec2 &p) const { return bounds_.contains(p); }
+
+        ompl::base::SpaceInformationPtr si_;
+        ompl::RNG &rng_;
+        Box bounds_;
+        unsigned int bisections_{10};
+        /** \brief tighten(precise): tiny moves and contact splits (the elite polish). */
+        bool precise_{false};
+        ompl::base::State *a_{nullptr};
+        ompl::base::State *b_{nullptr};
+        ompl::base::State *c_{nullptr};
+        unsigned long motionChecks_{0};
+
+        // Walk buffers (reused).
+        struct Node
+        {
+            long ix, iy;
+            std::uint32_t parent;
+            double g;
+            bool closed;
+        };
+        std::vector<Node> nodes_;
+        std::unordered_map<std::uint64_t, std::uint32_t> index_;
+        MemeticPath sa_, sb_;
+        struct Wave
+        {
+            double kx, ky, phase, amplitude;
+        };
+        std::vector<Wave> field_;
+        double fieldAt(const Vec2 &p) const;
+    };
+} // namespace mhplan
+
+#endif
