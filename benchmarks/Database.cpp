@@ -181,7 +181,9 @@ namespace mhplan::bench
             {
                 while (true)
                 {
-                    fd_ = ::open(name_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+                    // Not close-on-exec: ompl_benchmark_statistics inherits the descriptor, so that the lock
+                    // is held until it ends even when this process is killed alone.
+                    fd_ = ::open(name_.c_str(), O_RDWR | O_CREAT, 0644);
                     if (fd_ < 0)
                         throw std::runtime_error(errnoText("cannot create the database work file", name_));
                     while (::flock(fd_, LOCK_EX) < 0 && errno == EINTR)

@@ -51,27 +51,26 @@ namespace mhplan::bench
 
     namespace
     {
-        /** Refuse a directory where no file can be created (checked before any run starts). */
-        void checkWritableDirectory(const fs::path &dir, const std::string &what)
+        /** Refuse a directory where no file can be created (checked before any run starts); \e subject
+            names what goes there ("the logs to 'DIR'", "the database 'FILE'"). */
+        void checkWritableDirectory(const fs::path &dir, const std::string &subject)
         {
+            const auto refuse = [&](const std::string &why) {
+                throw InputError("cannot write " + subject + " (directory '" + dir.string() + "': " + why +
+                                 ")");
+            };
             std::error_code ec;
             fs::create_directories(dir, ec);
             if (ec)
-                throw InputError("cannot create the " + what + " '" + dir.string() + "': " + ec.message());
+                refuse(ec.message());
             const fs::path probe = dir / (".mhplan-write-test." + std::to_string(::getpid()));
-            {
-                std::ofstream out(probe, std::ios::binary | std::ios::trunc);
-                out << "mhplan\n";
-                out.close();
-                if (!out)
-                {
-                    const int err = errno;
-                    fs::remove(probe, ec);
-                    throw InputError("cannot write to the " + what + " '" + dir.string() +
-                                     "': " + std::strerror(err ? err : EIO));
-                }
-            }
+            std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+            out << "mhplan\n";
+            out.close();
+            const int err = errno;
             fs::remove(probe, ec);
+            if (!out)
+                refuse(std::strerror(err ? err : EIO));
         }
 
         /** Remove the temporary files ("<file>.tmp<PID>", see writeExperimentFiles) that experiment
@@ -171,11 +170,11 @@ namespace mhplan::bench
 
         // Where the campaign writes, checked before any run starts.
         if (options.run && !todo.empty())
-            checkWritableDirectory(campaign.logDir, "log directory");
+            checkWritableDirectory(campaign.logDir, "the logs to '" + campaign.logDir + "'");
         if (options.merge)
         {
             const fs::path db = fs::absolute(campaign.database);
-            checkWritableDirectory(db.parent_path(), "database directory");
+            checkWritableDirectory(db.parent_path(), "the database '" + campaign.database + "'");
             if (fs::is_directory(db))
                 throw InputError("the database '" + campaign.database + "' is a directory");
         }
