@@ -1,0 +1,415 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan bench: the SQLite wrapper and the merge of a campaign's logs into its database. The merge is
+   atomic: it builds the new database in a work file next to the target (a copy of the existing database),
+   appends the logs there with ompl_benchmark_statistics, records them in mhplan_logs in the same file and
+   only then renames the work file over the target. A merge killed at any moment leaves the old database
+   as it was, and the next merge appends exactly what is missing. */
+#include "mhplan/bench/Database.h"
+
+#include "mhplan/bench/CampaignRunner.h"
+#include "mhplan/bench/ChildProcess.h"
+#include "mhplan/bench/Improvements.h"
+
+#include <sqlite3.h>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace mhplan::bench
+{
+    namespace detail
+    {
+        Database::Database(const std::string &file)
+        {
+            if (sqlite3_open(file.c_str(), &db_) != SQLITE_OK)
+            {
+                const std::string err = db_ ? sqlite3_errmsg(db_) : "out of memory";
+                sqlite3_close(db_);
+                throw std::runtime_error("cannot open database '" + file + "': " + err);
+            }
+            sqlite3_busy_timeout(db_, 10000);
+            exec("PRAGMA foreign_keys = ON");
+        }
+
+        Database::~Database()
+        {
+            sqlite3_close(db_);
+        }
+
+        void Database::exec(const std::string &sql)
+        {
+            char *err = nullptr;
+            if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK)
+            {
+                const std::string e = err ? err : "?";
+                sqlite3_free(err);
+                throw std::runtime_error("database: " + e + " in: " + sql);
+            }
+        }
+
+        bool Database::hasTable(const std::string &name)
+        {
+            Statement st(*this, "SELECT count(*) FROM sqlite_master WHERE type='table' AND name=?");
+            st.bind(1, name);
+            return st.step() && st.integer(0) > 0;
+        }
+
+        Database::Statement::Statement(Database &db, const std::string &sql) : db_(db)
+        {
+            if (sqlite3_prepare_v2(db.db_, sql.c_str(), -1, &st_, nullptr) != SQLITE_OK)
+                throw std::runtime_error("database: " + std::string(sqlite3_errmsg(db.db_)) + " in: " + sql);
+        }
+
+        Database::Statement::~Statement()
+        {
+            sqlite3_finalize(st_);
+        }
+
+        void Database::Statement::bind(int i, const std::string &v)
+        {
+            sqlite3_bind_text(st_, i, v.c_str(), -1, SQLITE_TRANSIENT);
+        }
+
+        void Database::Statement::bind(int i, long long v)
+        {
+            sqlite3_bind_int64(st_, i, v);
+        }
+
+        void Database::Statement::bind(int i, double v)
+        {
+            sqlite3_bind_double(st_, i, v);
+        }
+
+        bool Database::Statement::step()
+        {
+            const int rc = sqlite3_step(st_);
+            if (rc == SQLITE_ROW)
+                return true;
+            if (rc != SQLITE_DONE)
+                throw std::runtime_error("database: " + std::string(sqlite3_errmsg(db_.db_)));
+            return false;
+        }
+
+        void Database::Statement::reset()
+        {
+            sqlite3_reset(st_);
+            sqlite3_clear_bindings(st_);
+        }
+
+        long long Database::Statement::integer(int col)
+        {
+            return sqlite3_column_int64(st_, col);
+        }
+
+        std::string Database::Statement::text(int col)
+        {
+            const auto *t = sqlite3_column_text(st_, col);
+            return t ? reinterpret_cast<const char *>(t) : "";
+        }
+    } // namespace detail
+
+    namespace
+    {
+        using detail::Database;
+
+        /** Run a program with arguments; its standard output goes to \e outputFile. Returns the exit code. */
+        int runProgram(const std::vector<std::string> &argv, const std::string &outputFile)
+        {
+            std::cout.flush();
+            std::cerr.flush();
+            const pid_t pid = ::fork();
+            if (pid < 0)
+                throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            if (pid == 0)
+            {
+                const int fd = ::open(outputFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+                if (fd >= 0)
+                {
+                    ::dup2(fd, 1);
+                    ::dup2(fd, 2);
+                    ::close(fd);
+                }
+                std::vector<char *> args;
+                for (const auto &a : argv)
+                    args.push_back(const_cast<char *>(a.c_str()));
+                args.push_back(nullptr);
+                ::execv(args[0], args.data());
+                ::_exit(127);
+            }
+            int status = 0;
+            while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            {
+            }
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        }
+
+        std::string readAll(const std::string &file)
+        {
+            std::ifstream in(file);
+            std::ostringstream ss;
+            ss << in.rdbuf();
+            return ss.str();
+        }
+
+        std::string errnoText(const std::string &what, const std::string &file)
+        {
+            return what + " '" + file + "': " + std::strerror(errno);
+        }
+
+        /** The work file of a merge, locked (flock) against other merges into the same database. It keeps
+            its name while it is locked: a merge that renamed it over the target leaves its waiters the old
+            inode, and they open the name again. */
+        class WorkFile
+        {
+          public:
+            explicit WorkFile(std::string name) : name_(std::move(name))
+            {
+                while (true)
+                {
+                    // Not close-on-exec: ompl_benchmark_statistics inherits the descriptor, so that the lock
+                    // is held until it ends even when this process is killed alone.
+                    fd_ = ::open(name_.c_str(), O_RDWR | O_CREAT, 0644);
+                    if (fd_ < 0)
+                        throw std::runtime_error(errnoText("cannot create the database work file", name_));
+                    while (::flock(fd_, LOCK_EX) < 0 && errno == EINTR)
+                    {
+                    }
+                    struct stat held
+                    {
+                    }, named{};
+                    if (::fstat(fd_, &held) == 0 && ::stat(name_.c_str(), &named) == 0 &&
+                        held.st_dev == named.st_dev && held.st_ino == named.st_ino)
+                        break;
+                    ::close(fd_);
+                }
+                // Journals of a merge killed earlier must not be rolled back into the fresh copy.
+                for (const char *suffix : {"-journal", "-wal", "-shm"})
+                    ::unlink((name_ + suffix).c_str());
+            }
+            ~WorkFile()
+            {
+                if (!committed_)
+                    ::unlink(name_.c_str());
+                ::close(fd_); // releases the lock
+            }
+            WorkFile(const WorkFile &) = delete;
+            WorkFile &operator=(const WorkFile &) = delete;
+
+            const std::string &name() const { return name_; }
+
+            /** Make the work file a copy of \e source (empty when \e source does not exist). */
+            void copyFrom(const std::string &source)
+            {
+                if (::ftruncate(fd_, 0) != 0)
+                    throw std::runtime_error(errnoText("cannot write", name_));
+                const int in = ::open(source.c_str(), O_RDONLY | O_CLOEXEC);
+                if (in < 0)
+                {
+                    if (errno == ENOENT)
+                        return;
+                    throw std::runtime_error(errnoText("cannot read the database", source));
+                }
+                char buf[1 << 16];
+                off_t at = 0;
+                while (true)
+                {
+                    const ssize_t n = ::read(in, buf, sizeof(buf));
+                    if (n < 0 && errno == EINTR)
+                        continue;
+                    if (n < 0)
+                    {
+                        ::close(in);
+                        throw std::runtime_error(errnoText("cannot read the database", source));
+                    }
+                    if (n == 0)
+                        break;
+                    for (ssize_t done = 0; done < n;)
+                    {
+                        const ssize_t w = ::pwrite(fd_, buf + done, static_cast<std::size_t>(n - done), at);
+                        if (w < 0 && errno == EINTR)
+                            continue;
+                        if (w <= 0)
+                        {
+                            ::close(in);
+                            throw std::runtime_error(errnoText("cannot write", name_));
+                        }
+                        done += w;
+                        at += w;
+                    }
+                }
+                ::close(in);
+            }
+
+            /** Flush the work file to disk and rename it over \e target. */
+            void commit(const std::string &target)
+            {
+                if (::fsync(fd_) != 0)
+                    throw std::runtime_error(errnoText("cannot write", name_));
+                if (::rename(name_.c_str(), target.c_str()) != 0)
+                    throw std::runtime_error(errnoText("cannot replace the database", target));
+                committed_ = true;
+            }
+
+          private:
+            std::string name_;
+            int fd_{-1};
+            bool committed_{false};
+        };
+    } // namespace
+
+    std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
+                              const std::string &statisticsTool)
+    {
+        struct Pending
+        {
+            const Experiment *experiment;
+            std::string log;
+            std::string content;
+        };
+        const fs::path dbPath(campaign.database);
+        if (dbPath.has_parent_path())
+            fs::create_directories(dbPath.parent_path());
+        // A hot journal of the target (a database written in place by an older mhplan and killed) is
+        // rolled back by opening it once; the copy below is then a consistent database.
+        if (fs::exists(campaign.database + "-journal"))
+            Database(campaign.database).hasTable("experiments");
+        WorkFile work(campaign.database + ".merging");
+        work.copyFrom(campaign.database);
+
+        std::vector<Pending> pending;
+        long long maxBefore = 0;
+        {
+            Database db(work.name());
+            db.exec("CREATE TABLE IF NOT EXISTS mhplan_logs (file TEXT PRIMARY KEY, experiment TEXT, "
+                    "experimentid INTEGER, log_fingerprint TEXT, merged DATETIME)");
+            std::map<std::string, std::pair<std::string, long long>> merged;
+            {
+                Database::Statement st(db, "SELECT file, log_fingerprint, experimentid FROM mhplan_logs");
+                while (st.step())
+                    merged[st.text(0)] = {st.text(1), st.integer(2)};
+            }
+            const bool haveExperiments = db.hasTable("experiments");
+            for (const auto &e : experiments)
+            {
+                const std::string log = logFile(campaign, e);
+                if (!logIsComplete(log, e.configHash))
+                    continue;
+                const std::string key = fs::absolute(log).lexically_normal().string();
+                const std::string content = fingerprint(readAll(log));
+                const auto it = merged.find(key);
+                if (it != merged.end() && it->second.first == content)
+                    continue;
+                if (it != merged.end() && haveExperiments)
+                {
+                    // The experiment was re-run with another configuration: replace its old rows.
+                    Database::Statement del(db, "DELETE FROM experiments WHERE id = ?");
+                    del.bind(1, it->second.second);
+                    del.step();
+                    Database::Statement del2(db, "DELETE FROM mhplan_logs WHERE file = ?");
+                    del2.bind(1, key);
+                    del2.step();
+                }
+                pending.push_back({&e, log, content});
+            }
+            if (haveExperiments)
+            {
+                Database::Statement st(db, "SELECT coalesce(max(id), 0) FROM experiments");
+                if (st.step())
+                    maxBefore = st.integer(0);
+            }
+        }
+        if (pending.empty())
+        {
+            // Nothing to append: a new database is still created (with its mhplan_logs table).
+            if (!fs::exists(campaign.database))
+                work.commit(campaign.database);
+            return 0;
+        }
+
+        std::vector<std::string> argv{statisticsTool, "-a", "-d", work.name()};
+        for (const auto &p : pending)
+            argv.push_back(p.log);
+        const std::string output = campaign.database + ".merge-output.txt";
+        const int rc = runProgram(argv, output);
+        if (rc != 0)
+            throw std::runtime_error(statisticsTool + " failed with exit code " + std::to_string(rc) + ":\n" +
+                                     readAll(output));
+        fs::remove(output);
+
+        {
+            Database db(work.name());
+            db.exec("BEGIN");
+            db.exec("CREATE TABLE IF NOT EXISTS paths (runid INTEGER PRIMARY KEY, points TEXT, "
+                    "FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE)");
+            std::vector<long long> ids;
+            {
+                Database::Statement st(db, "SELECT id FROM experiments WHERE id > ? ORDER BY id");
+                st.bind(1, maxBefore);
+                while (st.step())
+                    ids.push_back(st.integer(0));
+            }
+            if (ids.size() != pending.size())
+                throw std::runtime_error(
+                    "database '" + campaign.database + "': expected " + std::to_string(pending.size()) +
+                    " new experiments after the merge, found " + std::to_string(ids.size()));
+            Database::Statement record(
+                db, "INSERT OR REPLACE INTO mhplan_logs VALUES (?, ?, ?, ?, datetime('now'))");
+            Database::Statement findRun(
+                db, "SELECT runs.id FROM runs JOIN plannerConfigs ON runs.plannerid = "
+                    "plannerConfigs.id WHERE runs.experimentid = ? AND plannerConfigs.name = ? "
+                    "AND runs.run_index = ?");
+            Database::Statement insertPath(db, "INSERT OR REPLACE INTO paths VALUES (?, ?)");
+            for (std::size_t i = 0; i < pending.size(); ++i)
+            {
+                const Experiment &e = *pending[i].experiment;
+                record.bind(1, fs::absolute(pending[i].log).lexically_normal().string());
+                record.bind(2, e.name);
+                record.bind(3, ids[i]);
+                record.bind(4, pending[i].content);
+                record.step();
+                record.reset();
+                std::ifstream in(pathsFile(campaign, e));
+                std::string line;
+                while (std::getline(in, line))
+                {
+                    if (line.empty() || line[0] == '#')
+                        continue;
+                    const std::vector<std::string> cols = detail::splitOn(line, '\t');
+                    if (cols.size() != 3)
+                        continue;
+                    findRun.bind(1, ids[i]);
+                    findRun.bind(2, cols[0]);
+                    findRun.bind(3, std::atoll(cols[1].c_str()));
+                    const bool found = findRun.step();
+                    const long long runId = found ? findRun.integer(0) : -1;
+                    findRun.reset();
+                    if (!found)
+                        continue;
+                    insertPath.bind(1, runId);
+                    insertPath.bind(2, cols[2]);
+                    insertPath.step();
+                    insertPath.reset();
+                }
+                insertImprovements(db.handle(), ids[i], improvementsFile(campaign, e));
+            }
+            db.exec("COMMIT");
+        }
+        work.commit(campaign.database);
+        return pending.size();
+    }
+} // namespace mhplan::bench

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan bench: one experiment process. It runs every planner (or every controller of a simulation) of
+   the campaign on its experiment, each run in its own child process (ChildProcess.h), reports every run to
+   the campaign process and writes the experiment's log (OMPL's format and writer) and its sidecars. */
+#ifndef MHPLAN_BENCH_EXPERIMENT_RUNS_H
+#define MHPLAN_BENCH_EXPERIMENT_RUNS_H
+
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/ChildProcess.h"
+#include "mhplan/bench/OmplAdapters.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/sim/Simulation.h"
+
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    class PlannerRegistry;
+}
+
+namespace mhplan::bench::detail
+{
+    /** Numbers as OMPL writes them (full precision; "nan"/"inf" become NULL in the database). */
+    std::string num(double v);
+
+    /** Everything a planning experiment's processes share (built before the children are forked; nothing
+        here owns a random number generator). */
+    struct ExperimentSetup
+    {
+        const Campaign *campaign{nullptr};
+        const Experiment *experiment{nullptr};
+        const PlannerRegistry *registry{nullptr};
+        World world;
+        Query query;
+        CollisionModelPtr model;
+        double optimum{std::numeric_limits<double>::quiet_NaN()};
+        double optimumSeconds{0.0};
+        double metricStep{1e-3};
+    };
+
+    /** Build the shared problem of an experiment (no random number generator is created here). */
+    void prepareExperiment(ExperimentSetup &xs);
+
+    /** Experiment process of a planning experiment: every planner of the campaign, every run in its own
+        child process; then the log and the sidecars. Reports each run to \e progressFd; returns the exit
+        code of the process. */
+    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, double &solveSeconds);
+
+    /** Everything the run processes of a simulation experiment share. */
+    struct SimulationSetup
+    {
+        const Campaign *campaign{nullptr};
+        const Experiment *experiment{nullptr};
+        const SimulationSpec *spec{nullptr};
+        /** \brief The planners of "plan:<PLANNER>" controllers: the campaign's registry. */
+        const PlannerRegistry *registry{nullptr};
+        Scenario scenario;
+        /** Progress slot of the first controller (see ProgressBar). */
+        std::size_t slotBase{0};
+    };
+
+    /** Experiment process of a simulation experiment: every controller, every run, each in its own
+        process; then the log (OMPL's format and writer) and an empty path sidecar. */
+    int runSimulationExperiment(SimulationSetup &xs, int progressFd, double &solveSeconds);
+
+    /** The data of one planner (or controller) across all its runs, gathered from several processes. */
+    struct PlannerRecord
+    {
+        std::map<std::string, std::string> common;
+        std::string properties;
+        std::vector<std::string> progressNames;
+        std::vector<ompl::tools::Benchmark::RunProperties> runs;
+        std::vector<ompl::tools::Benchmark::RunProgressData> progress;
+        std::vector<std::string> paths;
+        std::vector<std::string> improvements;
+        std::vector<bool> have;
+    };
+
+    /** Tell the campaign process that a run ended: message 'r' EXPERIMENT "CRASHED SLOT SECONDS". */
+    void reportRun(int progressFd, std::size_t experiment, bool crashed, std::size_t slot, double seconds);
+
+    /** Say on stderr why a run process crashed. */
+    void reportCrash(const std::string &experiment, const std::string &what, std::size_t run,
+                     const ChildOutcome &outcome, double watchdog);
+
+    /** The record of a run whose process ended without sending one: status Crash, the time it ran. */
+    ompl::tools::Benchmark::RunProperties crashRun(double elapsed, std::size_t runIndex, std::uint32_t seed);
+
+    /** Write an experiment's path sidecar (and its improvements sidecar when given) and then its log with
+        OMPL's writer and the real version line. Every file is written under a temporary name and renamed
+        when complete, the log last: a log on disk means a finished experiment. */
+    void writeExperimentFiles(const Campaign &c, const Experiment &e, const AssembledBenchmark &bench,
+                              const std::string &paths, const std::string &improvements = "");
+
+    /** Check every planner and parameter in a throw-away process (so that the campaign process never
+        allocates a random number generator before the run processes set their seeds). */
+    void validatePlanners(const Campaign &c, const PlannerRegistry &registry, const World &world,
+                          const Query &query);
+
+    /** Check every controller and parameter of the simulations in a throw-away process (controllers may
+        own planners and random number generators). Messages name the campaign file and line. */
+    void validateControllers(const Campaign &c, const PlannerRegistry &registry);
+} // namespace mhplan::bench::detail
+
+#endif

@@ -1,0 +1,373 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan bench: planning experiments. Every run of every planner is one child process that runs the
+   planner once through ompl::tools::Benchmark and sends its record; the experiment process assembles the
+   runs into OMPL's experiment record and writes the log. */
+#include "mhplan/bench/ExperimentRuns.h"
+
+#include "mhplan/bench/CampaignRunner.h"
+
+#include "mhplan/base/Version.h"
+#include "mhplan/collision/Metrics.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/registry/Registry.h"
+
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+#include <ompl/util/Time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+namespace ot = ompl::tools;
+namespace fs = std::filesystem;
+
+namespace mhplan::bench::detail
+{
+    namespace
+    {
+        std::string encodePath(const std::vector<Vec2> &pts)
+        {
+            std::string out;
+            for (const Vec2 &p : pts)
+                out += num(p.x) + " " + num(p.y) + ";";
+            return out;
+        }
+
+        struct WorkerInfo
+        {
+            std::string host;
+            std::string cpuInfo;
+        };
+
+        /** Child process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send the
+           run's properties, path and progress to \e fd. One process per run: the seed applies to exactly this
+           run, OMPL's memory figure is this run's, a crash takes nothing else with it, and no planner is ever
+            cleared or destroyed (the process just ends). Never returns. */
+        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
+                                          std::uint32_t seed, int fd)
+        {
+            finishRunChild(
+                fd,
+                [&]()
+                {
+                    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                    // The seed must be set before any random number generator exists in this process; the
+                    // campaign process and the experiment process never allocate one.
+                    ompl::RNG::setSeed(seed);
+                    const Campaign &c = *xs.campaign;
+                    // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
+                    // generator (its path simplifier's).
+                    const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+                    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+                    ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
+                    inner->setName(spec.displayName);
+                    auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
+                    ss->setPlanner(planner);
+                    ImprovementRecorder improvements;
+                    planner->setRecorder(&improvements);
+
+                    ot::Benchmark benchmark(*ss, xs.experiment->name);
+                    benchmark.addPlanner(planner);
+                    CerrCapture capture;
+                    // OMPL's collector samples the progress properties from the start of solve() at a fixed
+                    // interval but not at its end: the post-run event adds that last sample.
+                    std::map<std::string, std::string> finalSample;
+                    benchmark.setPreRunEvent(
+                        [&](const ob::PlannerPtr &p)
+                        {
+                            const auto &data = benchmark.getRecordedExperimentData();
+                            std::map<std::string, std::string> common;
+                            p->params().getParams(common);
+                            p->getSpaceInformation()->params().getParams(common);
+                            std::ostringstream props;
+                            p->printProperties(props);
+                            std::string names = "time REAL";
+                            for (const auto &kv : p->getPlannerProgressProperties())
+                                names += std::string(1, kGroupSep) + kv.first;
+                            const auto &fns = inner->getPlannerProgressProperties();
+                            const auto best = fns.find("best cost REAL");
+                            improvements.attach(p->getProblemDefinition(),
+                                                best == fns.end() ? nullptr : best->second,
+                                                kImprovementPollInterval);
+                            sendMessage(fd, 'C', 0, encodeMap(common));
+                            sendMessage(fd, 'S', 0,
+                                        encodeMap({{"host", data.host},
+                                                   {"cpu", data.cpuInfo},
+                                                   {"properties", props.str()},
+                                                   {"progress", names}}));
+                        });
+                    benchmark.setPostRunEvent(
+                        [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
+                        {
+                            const std::string crash =
+                                std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                            // OMPL's benchmark catches a std::runtime_error thrown by solve() and only
+                            // reports it on std::cerr: that is a crash too.
+                            if (capture.take().find("error executing planner") != std::string::npos)
+                            {
+                                run["status ENUM"] = crash;
+                                run["solved BOOLEAN"] = "0";
+                            }
+                            if (!c.plannerData)
+                            {
+                                run.erase("graph states INTEGER");
+                                run.erase("graph motions INTEGER");
+                            }
+                            run["run index INTEGER"] = std::to_string(runIndex);
+                            run["run seed INTEGER"] = std::to_string(seed);
+                            run["exact optimum length REAL"] = num(xs.optimum);
+                            if (!p->getPlannerProgressProperties().empty())
+                            {
+                                finalSample["time REAL"] = run["time REAL"];
+                                for (const auto &kv : p->getPlannerProgressProperties())
+                                    finalSample[kv.first] = kv.second();
+                            }
+                            for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
+                            {
+                                const auto &fns = p->getPlannerProgressProperties();
+                                const auto it = fns.find(name);
+                                if (it != fns.end() && run.count(name) == 0)
+                                    run[name] = it->second();
+                            }
+                            std::string path;
+                            const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
+                            if (pdef->hasSolution() && run["status ENUM"] != crash)
+                            {
+                                const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
+                                const std::vector<Vec2> pts = pathPoints(*geo);
+                                const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
+                                run["path length REAL"] = num(m.length);
+                                run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+                                run["min clearance REAL"] = num(m.minClearance);
+                                run["mean clearance REAL"] = num(m.meanClearance);
+                                run["smoothness REAL"] = num(m.smoothness);
+                                run["max curvature REAL"] = num(m.maxCurvature);
+                                run["angle over length REAL"] = num(m.angleOverLength);
+                                run["cusps INTEGER"] = std::to_string(m.cusps);
+                                if (pdef->hasExactSolution())
+                                    run["optimality gap REAL"] =
+                                        num(optimalityGapPercent(m.length, xs.optimum));
+                                path = encodePath(pts);
+                            }
+                            const std::vector<Improvement> better = run["status ENUM"] == crash
+                                                                        ? std::vector<Improvement>{}
+                                                                        : improvements.finish(*pdef);
+                            run["improvements INTEGER"] = std::to_string(better.size());
+                            std::map<std::string, std::string> payload = run;
+                            payload["\x01path"] = path;
+                            payload["\x01improvements"] = encodeImprovements(better);
+                            sendMessage(fd, 'R', runIndex, encodeMap(payload));
+                        });
+                    const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
+                                                     false, false);
+                    benchmark.benchmark(req);
+                    const auto &pd = benchmark.getRecordedExperimentData().planners;
+                    if (!pd.empty() && !pd[0].runsProgressData.empty())
+                    {
+                        std::string payload;
+                        double lastTime = -1.0;
+                        for (const auto &sample : pd[0].runsProgressData.back())
+                        {
+                            payload += encodeMap(sample) + kGroupSep;
+                            const auto t = sample.find("time REAL");
+                            if (t != sample.end())
+                                lastTime = std::max(lastTime, std::atof(t->second.c_str()));
+                        }
+                        const auto t = finalSample.find("time REAL");
+                        if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
+                            payload += encodeMap(finalSample) + kGroupSep;
+                        sendMessage(fd, 'G', runIndex, payload);
+                    }
+                    sendMessage(fd, 'E', runIndex, "");
+                });
+        }
+    } // namespace
+
+    /** Build the shared problem of an experiment (no random number generator is created here). */
+    void prepareExperiment(ExperimentSetup &xs)
+    {
+        const Campaign &c = *xs.campaign;
+        const Experiment &e = *xs.experiment;
+        xs.world = loadWorld(e.worldFile);
+        xs.query = xs.world.query(e.query);
+        xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
+        xs.metricStep = defaultMetricStep(xs.world);
+        const Clock::time_point t0 = Clock::now();
+        try
+        {
+            const OptimumResult opt = computeOptimum(xs.world, xs.query);
+            if (opt.found)
+                xs.optimum = opt.length;
+        }
+        catch (const InputError &ex)
+        {
+            // E.g. grid worlds with a robot radius: no exact optimum, no gap; the runs still count.
+            std::cerr << "mhplan bench: " << e.name << ": no exact optimum (" << ex.what() << ")\n";
+        }
+        xs.optimumSeconds = secondsSince(t0);
+    }
+
+    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, double &solveSeconds)
+    {
+        const Campaign &c = *xs.campaign;
+        const Experiment &e = *xs.experiment;
+        const Clock::time_point t0 = Clock::now();
+        const ompl::time::point start = ompl::time::now();
+        WorkerInfo info;
+        std::vector<PlannerRecord> records(c.planners.size());
+        solveSeconds = 0.0;
+        const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
+        const double watchdog = 2.0 * c.timeLimit + 20.0;
+
+        for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+        {
+            const PlannerSpec &spec = c.planners[pi];
+            PlannerRecord &rec = records[pi];
+            rec.runs.resize(c.runs);
+            rec.progress.resize(c.runs);
+            rec.paths.resize(c.runs);
+            rec.improvements.resize(c.runs);
+            rec.have.assign(c.runs, false);
+            for (std::size_t next = 0; next < c.runs; ++next)
+            {
+                const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
+                const ChildOutcome outcome = runChildProcess(
+                    watchdog, [&](int fd) { runPlannerChild(xs, spec, next, seed, fd); },
+                    [&](const Message &m, double runSeconds)
+                    {
+                        if (m.type == 'C')
+                            rec.common = decodeMap(m.payload);
+                        else if (m.type == 'S')
+                        {
+                            const auto s = decodeMap(m.payload);
+                            info.host = s.at("host");
+                            info.cpuInfo = s.at("cpu");
+                            rec.properties = s.at("properties");
+                            rec.progressNames = splitOn(s.at("progress"), kGroupSep);
+                            std::sort(rec.progressNames.begin(), rec.progressNames.end());
+                            if (rec.progressNames.size() == 1) // only "time": no progress properties
+                                rec.progressNames.clear();
+                        }
+                        else if (m.type == 'R' && m.index < c.runs)
+                        {
+                            auto props = decodeMap(m.payload);
+                            rec.paths[m.index] = props["\x01path"];
+                            props.erase("\x01path");
+                            rec.improvements[m.index] = props["\x01improvements"];
+                            props.erase("\x01improvements");
+                            rec.runs[m.index] = props;
+                            rec.have[m.index] = true;
+                            const auto t = props.find("time REAL");
+                            if (t != props.end())
+                                solveSeconds += std::atof(t->second.c_str());
+                            reportRun(progressFd, e.index, props["status ENUM"] == std::to_string(crashCode),
+                                      pi, runSeconds);
+                        }
+                        else if (m.type == 'G' && m.index < c.runs)
+                        {
+                            ot::Benchmark::RunProgressData data;
+                            for (const auto &sample : splitOn(m.payload, kGroupSep))
+                                data.push_back(decodeMap(sample));
+                            rec.progress[m.index] = data;
+                        }
+                    },
+                    {progressFd});
+                const std::size_t k = next;
+                if (rec.have[k])
+                    continue;
+                ot::Benchmark::RunProperties crash = crashRun(outcome.elapsed, k, seed);
+                crash["exact optimum length REAL"] = num(xs.optimum);
+                rec.runs[k] = crash;
+                rec.have[k] = true;
+                solveSeconds += outcome.elapsed;
+                reportRun(progressFd, e.index, true, pi, outcome.runSeconds);
+                reportCrash(e.name, "planner " + spec.displayName, k, outcome, watchdog);
+            }
+        }
+
+        // Assemble the experiment with OMPL's own record and writer.
+        const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+        AssembledBenchmark bench(*ss, e.name);
+        auto &x = bench.experiment();
+        x.name = e.name;
+        x.maxTime = c.timeLimit;
+        x.maxMem = c.memoryLimit;
+        x.runCount = c.runs;
+        x.startTime = start;
+        x.seed = e.seed;
+        x.host = info.host;
+        x.cpuInfo = info.cpuInfo;
+        std::ostringstream setupInfo;
+        ss->print(setupInfo);
+        setupInfo << "\nProperties of benchmarked planners:\n";
+        for (const auto &r : records)
+            setupInfo << r.properties;
+        x.setupInfo = setupInfo.str();
+        x.parameters["campaign TEXT"] = c.name;
+        x.parameters["kind TEXT"] = "planning";
+        x.parameters["world TEXT"] = xs.world.name;
+        x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
+        x.parameters["world_type TEXT"] = xs.world.type();
+        x.parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
+        if (xs.world.isGrid())
+            x.parameters["grid_cells INTEGER"] =
+                std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
+        x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
+        x.parameters["query TEXT"] = xs.query.name;
+        std::ostringstream q;
+        q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
+          << xs.query.goal.y << ")";
+        x.parameters["query_points TEXT"] = q.str();
+        // Experiment properties go to the database verbatim (no NaN to NULL conversion): leave an unknown
+        // optimum out.
+        if (std::isfinite(xs.optimum))
+        {
+            x.parameters["exact_optimum REAL"] = num(xs.optimum);
+            x.parameters["optimum_seconds REAL"] = num(xs.optimumSeconds);
+        }
+        x.parameters["collision_backend TEXT"] = xs.model->name();
+        x.parameters["config_hash TEXT"] = e.configHash;
+        x.parameters["mhplan_version TEXT"] = version();
+        for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+        {
+            ot::Benchmark::PlannerExperiment pe;
+            pe.name = "geometric_" + c.planners[pi].displayName;
+            pe.common = records[pi].common;
+            pe.runs = records[pi].runs;
+            if (!records[pi].progressNames.empty())
+            {
+                pe.progressPropertyNames = records[pi].progressNames;
+                pe.runsProgressData = records[pi].progress;
+            }
+            x.planners.push_back(std::move(pe));
+        }
+        x.totalDuration = secondsSince(t0);
+
+        std::ostringstream paths;
+        paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n";
+        for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+            for (std::size_t k = 0; k < c.runs; ++k)
+                if (!records[pi].paths[k].empty())
+                    paths << "geometric_" << c.planners[pi].displayName << "\t" << k << "\t"
+                          << records[pi].paths[k] << "\n";
+        std::vector<std::string> plannerNames;
+        std::vector<std::vector<std::string>> improvements;
+        for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
+        {
+            plannerNames.push_back("geometric_" + c.planners[pi].displayName);
+            improvements.push_back(records[pi].improvements);
+        }
+        writeExperimentFiles(c, e, bench, paths.str(), improvementsFileText(plannerNames, improvements));
+        return 0;
+    }
+} // namespace mhplan::bench::detail

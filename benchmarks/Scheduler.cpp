@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan bench: the scheduler of a campaign. It checks the campaign, skips the experiments whose logs
+   are complete (resume), runs the others in up to `jobs` experiment processes at a time, follows their
+   run reports for the progress bar and the summary, and merges the logs into the database. */
+#include "mhplan/bench/CampaignRunner.h"
+
+#include "mhplan/bench/ExperimentRuns.h"
+#include "mhplan/bench/Progress.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace mhplan::bench
+{
+    using namespace detail;
+
+    double CampaignSummary::overheadFraction() const
+    {
+        const double total = workerSeconds + mergeSeconds;
+        return total > 0.0 ? std::max(0.0, total - solveSeconds) / total : 0.0;
+    }
+
+    std::string logFile(const Campaign &campaign, const Experiment &experiment)
+    {
+        return (fs::path(campaign.logDir) / (safeFileStem(experiment.name) + ".log")).string();
+    }
+
+    std::string pathsFile(const Campaign &campaign, const Experiment &experiment)
+    {
+        return (fs::path(campaign.logDir) / (safeFileStem(experiment.name) + ".paths")).string();
+    }
+
+    namespace
+    {
+        /** Refuse a directory where no file can be created (checked before any run starts); \e subject
+            names what goes there ("the logs to 'DIR'", "the database 'FILE'"). */
+        void checkWritableDirectory(const fs::path &dir, const std::string &subject)
+        {
+            const auto refuse = [&](const std::string &why) {
+                throw InputError("cannot write " + subject + " (directory '" + dir.string() + "': " + why +
+                                 ")");
+            };
+            std::error_code ec;
+            fs::create_directories(dir, ec);
+            if (ec)
+                refuse(ec.message());
+            const fs::path probe = dir / (".mhplan-write-test." + std::to_string(::getpid()));
+            std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+            out << "mhplan\n";
+            out.close();
+            const int err = errno;
+            fs::remove(probe, ec);
+            if (!out)
+                refuse(std::strerror(err ? err : EIO));
+        }
+
+        /** Remove the temporary files ("<file>.tmp<PID>", see writeExperimentFiles) that experiment
+            processes which no longer exist left in \e dir when they were killed while writing. */
+        void removeStaleTemporaryFiles(const std::string &dir)
+        {
+            std::error_code ec;
+            for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+            {
+                const std::string name = it->path().filename().string();
+                const std::size_t at = name.rfind(".tmp");
+                if (at == std::string::npos || at + 4 == name.size() ||
+                    name.find_first_not_of("0123456789", at + 4) != std::string::npos)
+                    continue;
+                const long pid = std::atol(name.c_str() + at + 4);
+                if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+                    fs::remove(it->path(), ec);
+            }
+        }
+    } // namespace
+
+    bool logIsComplete(const std::string &log, const std::string &configHash)
+    {
+        std::ifstream in(log);
+        if (!in)
+            return false;
+        std::string line;
+        bool hashOk = false;
+        std::size_t n = 0;
+        while (std::getline(in, line) && n < 64 && !hashOk)
+        {
+            ++n;
+            if (line.rfind("config_hash TEXT = ", 0) == 0)
+                hashOk = line.substr(19) == configHash;
+        }
+        if (!hashOk)
+            return false;
+        // A finished log ends with the last planner's "." line.
+        std::string last;
+        while (std::getline(in, line))
+            if (!line.empty())
+                last = line;
+        return last == ".";
+    }
+
+    CampaignSummary runCampaign(const Campaign &campaign, const RunOptions &options)
+    {
+        const Clock::time_point t0 = Clock::now();
+        if (!options.resolveWorld)
+            throw std::invalid_argument("runCampaign: options.resolveWorld must be set");
+        if (options.jobs < 1 || options.jobs > 256)
+            throw InputError("--jobs must be in [1, 256] (got " + std::to_string(options.jobs) + ")");
+        const PlannerRegistry &registry = options.registry ? *options.registry : PlannerRegistry::builtin();
+        std::ostream *msg = options.messages;
+
+        const std::vector<Experiment> all = enumerateExperiments(campaign, options.resolveWorld);
+        const std::vector<Experiment> mine = shardExperiments(all, options.shardIndex, options.shardCount);
+        if (all.empty())
+            throw InputError(campaign.file + ": the campaign has no experiments (no worlds, no simulations)");
+        for (const auto &p : campaign.planners)
+            registry.get(p.planner); // unknown names fail here with the list of registered planners
+        if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
+        {
+            const World world = loadWorld(all.front().worldFile);
+            validatePlanners(campaign, registry, world, world.query(all.front().query));
+        }
+        if (!campaign.simulations.empty())
+            validateControllers(campaign, registry);
+        // Progress slots: the planners, then every controller of every simulation.
+        std::vector<std::size_t> slotBase(campaign.simulations.size(), 0);
+        std::size_t slots = campaign.planners.size();
+        for (std::size_t si = 0; si < campaign.simulations.size(); ++si)
+        {
+            slotBase[si] = slots;
+            slots += campaign.simulations[si].controllers.size();
+        }
+        const auto runsOf = [&](const Experiment &e)
+        {
+            return e.simulation == Experiment::kNoSimulation
+                       ? campaign.planners.size() * e.runs
+                       : campaign.simulations[e.simulation].controllers.size() * e.runs;
+        };
+
+        CampaignSummary summary;
+        summary.experiments = mine.size();
+        std::vector<const Experiment *> todo;
+        for (const auto &e : mine)
+        {
+            if (logIsComplete(logFile(campaign, e), e.configHash))
+                ++summary.skipped;
+            else
+                todo.push_back(&e);
+        }
+        if (msg && summary.skipped > 0)
+            *msg << "mhplan bench: " << summary.skipped << " of " << mine.size()
+                 << " experiments already complete (logs in " << campaign.logDir << "), skipping them\n";
+
+        // Where the campaign writes, checked before any run starts.
+        if (options.run && !todo.empty())
+            checkWritableDirectory(campaign.logDir, "the logs to '" + campaign.logDir + "'");
+        if (options.merge)
+        {
+            const fs::path db = fs::absolute(campaign.database);
+            checkWritableDirectory(db.parent_path(), "the database '" + campaign.database + "'");
+            if (fs::is_directory(db))
+                throw InputError("the database '" + campaign.database + "' is a directory");
+        }
+
+        if (options.run && !todo.empty())
+        {
+            removeStaleTemporaryFiles(campaign.logDir);
+            std::vector<std::size_t> slotRuns(slots, 0);
+            for (const Experiment *e : todo)
+            {
+                if (e->simulation == Experiment::kNoSimulation)
+                    for (std::size_t p = 0; p < campaign.planners.size(); ++p)
+                        slotRuns[p] += e->runs;
+                else
+                    for (std::size_t ci = 0; ci < campaign.simulations[e->simulation].controllers.size();
+                         ++ci)
+                        slotRuns[slotBase[e->simulation] + ci] += e->runs;
+            }
+            ProgressBar bar(options.progressBar && ::isatty(2), todo.size(), slotRuns, campaign.timeLimit);
+            struct Active
+            {
+                const Experiment *experiment;
+                std::unique_ptr<ChildProcess> process;
+                bool ended{false};
+                double workerSeconds{0.0};
+                double solveSeconds{0.0};
+                std::size_t runsSeen{0};
+            };
+            std::map<pid_t, Active> active;
+            std::size_t nextTodo = 0, expDone = 0, runsDone = 0;
+            ::signal(SIGPIPE, SIG_IGN);
+            while (nextTodo < todo.size() || !active.empty())
+            {
+                while (nextTodo < todo.size() && active.size() < options.jobs)
+                {
+                    const Experiment *e = todo[nextTodo++];
+                    std::vector<int> others;
+                    for (const auto &kv : active)
+                        others.push_back(kv.second.process->fd());
+                    auto process = std::make_unique<ChildProcess>(
+                        [&](int fd)
+                        {
+                            int code = 0;
+                            try
+                            {
+                                const Clock::time_point w0 = Clock::now();
+                                double solve = 0.0;
+                                if (e->simulation == Experiment::kNoSimulation)
+                                {
+                                    ExperimentSetup xs;
+                                    xs.campaign = &campaign;
+                                    xs.experiment = e;
+                                    xs.registry = &registry;
+                                    prepareExperiment(xs);
+                                    code = runPlanningExperiment(xs, fd, solve);
+                                }
+                                else
+                                {
+                                    SimulationSetup xs;
+                                    xs.campaign = &campaign;
+                                    xs.experiment = e;
+                                    xs.spec = &campaign.simulations[e->simulation];
+                                    xs.registry = &registry;
+                                    xs.scenario = loadScenario(e->scenarioFile);
+                                    xs.slotBase = slotBase[e->simulation];
+                                    code = runSimulationExperiment(xs, fd, solve);
+                                }
+                                std::ostringstream done;
+                                done.precision(17);
+                                done << secondsSince(w0) << " " << solve;
+                                sendMessage(fd, 'e', e->index, done.str());
+                            }
+                            catch (const std::exception &ex)
+                            {
+                                std::cerr << "mhplan bench: experiment " << e->name
+                                          << " failed: " << ex.what() << "\n";
+                                code = 4;
+                            }
+                            ::close(fd);
+                            std::cout.flush();
+                            std::cerr.flush();
+                            ::_exit(code);
+                        },
+                        others);
+                    const pid_t pid = process->pid();
+                    active[pid] = Active{e, std::move(process), false, 0.0, 0.0, 0};
+                }
+                std::vector<pollfd> pfds;
+                std::vector<pid_t> pids;
+                for (const auto &kv : active)
+                {
+                    if (kv.second.ended)
+                        continue;
+                    pfds.push_back({kv.second.process->fd(), POLLIN, 0});
+                    pids.push_back(kv.first);
+                }
+                if (!pfds.empty())
+                    ::poll(pfds.data(), pfds.size(), 200);
+                for (std::size_t i = 0; i < pfds.size(); ++i)
+                {
+                    if (!(pfds[i].revents & (POLLIN | POLLHUP | POLLERR)))
+                        continue;
+                    Active &a = active[pids[i]];
+                    a.ended = !a.process->read(
+                        [&](const Message &m)
+                        {
+                            std::istringstream in(m.payload);
+                            if (m.type == 'r')
+                            {
+                                int crashed = 0;
+                                std::size_t slot = 0;
+                                double seconds = 0.0;
+                                in >> crashed >> slot >> seconds;
+                                bar.recordRun(slot, seconds);
+                                ++runsDone;
+                                ++a.runsSeen;
+                                ++summary.runs;
+                                summary.crashes += crashed ? 1 : 0;
+                            }
+                            else if (m.type == 'e')
+                                in >> a.workerSeconds >> a.solveSeconds;
+                        });
+                }
+                bar.update(expDone, runsDone, summary.crashes);
+                // Reap finished experiment processes.
+                for (auto it = active.begin(); it != active.end();)
+                {
+                    if (!it->second.ended)
+                    {
+                        ++it;
+                        continue;
+                    }
+                    const Active &a = it->second;
+                    const int status = a.process->wait();
+                    ++expDone;
+                    // Runs a failed process never reported still count as done for the bar.
+                    const std::size_t expected = runsOf(*a.experiment);
+                    runsDone += expected > a.runsSeen ? expected - a.runsSeen : 0;
+                    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+                                    logIsComplete(logFile(campaign, *a.experiment), a.experiment->configHash);
+                    if (ok)
+                    {
+                        ++summary.completed;
+                        summary.workerSeconds += a.workerSeconds;
+                        summary.solveSeconds += a.solveSeconds;
+                    }
+                    else
+                    {
+                        ++summary.failed;
+                        summary.errors.push_back("experiment " + a.experiment->name + " failed (" +
+                                                 (WIFSIGNALED(status)
+                                                      ? "signal " + std::to_string(WTERMSIG(status))
+                                                      : "exit code " + std::to_string(WEXITSTATUS(status))) +
+                                                 "); re-run the campaign to retry it");
+                    }
+                    if (msg && !(options.progressBar && ::isatty(2)))
+                        *msg << "[" << expDone << "/" << todo.size() << "] " << a.experiment->name
+                             << (ok ? " done" : " FAILED") << " (" << std::fixed << std::setprecision(1)
+                             << a.workerSeconds << " s)\n"
+                             << std::defaultfloat;
+                    it = active.erase(it);
+                    bar.update(expDone, runsDone, summary.crashes, true);
+                }
+            }
+            bar.finish();
+        }
+
+        if (options.merge)
+        {
+            const Clock::time_point m0 = Clock::now();
+            // Merge every complete log of the whole campaign (all shards), so that one final step after
+            // sharded runs builds the database.
+            summary.mergedLogs = mergeDatabase(campaign, all, options.statisticsTool);
+            summary.mergeSeconds = secondsSince(m0);
+        }
+        summary.wallSeconds = secondsSince(t0);
+        return summary;
+    }
+} // namespace mhplan::bench

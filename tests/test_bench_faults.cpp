@@ -1,0 +1,389 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* Faults and shards of a campaign, through the mhplan program as a user runs it. A small iteration-bounded
+   campaign (tests/data/bench_faults.yaml: five planning and two simulation experiments) is run once
+   uninterrupted; then `mhplan bench` is killed with SIGKILL (its whole process group) at ten moments drawn
+   from a fixed seed, half of them while it merges, and resumed each time. After every kill the database on
+   disk is whole (every experiment recorded once in mhplan_logs); at the end it holds exactly the runs of the
+   uninterrupted run: the same experiments once each, the same runs with the same seeds and costs. Shards:
+   uneven sizes, k > 2, disjoint, covering every experiment, planning and simulation mixed; shards run at the
+   same time into one log directory and merged at the end give the uninterrupted database again. */
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/CampaignRunner.h"
+
+#include <ompl/util/RandomNumbers.h>
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace mhplan;
+using namespace mhplan::bench;
+namespace fs = std::filesystem;
+
+namespace
+{
+    const std::string kCampaign = std::string(MHPLAN_TEST_DATA_DIR) + "/bench_faults.yaml";
+
+    fs::path freshDir(const std::string &tag)
+    {
+        const fs::path dir =
+            fs::temp_directory_path() / ("mhplan_test_faults_" + std::to_string(::getpid())) / tag;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        return dir;
+    }
+
+    /** Start `mhplan ARGS` in a process group of its own, its output to \e output. */
+    pid_t spawnMhplan(const std::vector<std::string> &args, const std::string &output)
+    {
+        const pid_t pid = ::fork();
+        if (pid == 0)
+        {
+            ::setpgid(0, 0);
+            const int fd = ::open(output.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+            if (fd >= 0)
+            {
+                ::dup2(fd, 1);
+                ::dup2(fd, 2);
+                ::close(fd);
+            }
+            std::vector<char *> argv{const_cast<char *>(MHPLAN_BINARY)};
+            for (const auto &a : args)
+                argv.push_back(const_cast<char *>(a.c_str()));
+            argv.push_back(nullptr);
+            ::execv(argv[0], argv.data());
+            ::_exit(127);
+        }
+        if (pid > 0)
+            ::setpgid(pid, pid); // also here: the group exists before the parent may kill it
+        return pid;
+    }
+
+    int exitCode(int status)
+    {
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+
+    int waitFor(pid_t pid)
+    {
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        {
+        }
+        return exitCode(status);
+    }
+
+    std::string readFile(const std::string &file)
+    {
+        std::ifstream in(file);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    /** The experiment logs in \e dir (a log appears, under its name, only when complete). */
+    std::size_t completeLogs(const std::string &dir)
+    {
+        std::error_code ec;
+        std::size_t n = 0;
+        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+            n += it->path().extension() == ".log" ? 1 : 0;
+        return n;
+    }
+
+    std::vector<std::string> benchArgs(const fs::path &dir, std::vector<std::string> more = {})
+    {
+        std::vector<std::string> args{"bench", kCampaign, "--no-progress", "--database",
+                                      (dir / "f.db").string()};
+        args.insert(args.end(), more.begin(), more.end());
+        return args;
+    }
+
+    /** Rows of \e sql as text ("NULL" for NULL), from a read-only connection. */
+    std::vector<std::vector<std::string>> query(const std::string &db, const std::string &sql)
+    {
+        std::vector<std::vector<std::string>> rows;
+        sqlite3 *h = nullptr;
+        if (sqlite3_open_v2(db.c_str(), &h, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
+        {
+            ADD_FAILURE() << "cannot open " << db;
+            sqlite3_close(h);
+            return rows;
+        }
+        char *err = nullptr;
+        const auto collect = [](void *out, int n, char **values, char **) -> int
+        {
+            std::vector<std::string> row;
+            for (int i = 0; i < n; ++i)
+                row.emplace_back(values[i] ? values[i] : "NULL");
+            static_cast<std::vector<std::vector<std::string>> *>(out)->push_back(row);
+            return 0;
+        };
+        if (sqlite3_exec(h, sql.c_str(), collect, &rows, &err) != SQLITE_OK)
+            ADD_FAILURE() << db << ": " << (err ? err : "?") << " in " << sql;
+        sqlite3_free(err);
+        sqlite3_close(h);
+        return rows;
+    }
+
+    long long scalar(const std::string &db, const std::string &sql)
+    {
+        const auto rows = query(db, sql);
+        return rows.empty() ? -1 : std::atoll(rows[0][0].c_str());
+    }
+
+    /** What a database holds, as compared here: the experiment names (with repeats), and per run
+        (experiment, planner, run index) its seed, status and results (costs of planning runs, makespan and
+        flowtime of simulation runs). Times are wall-clock and left out. */
+    struct Contents
+    {
+        std::multiset<std::string> experiments;
+        std::map<std::string, std::string> runs;
+        long long runRows{0};
+        long long logs{0};
+        long long paths{0};
+    };
+
+    Contents contents(const std::string &db)
+    {
+        Contents c;
+        for (const auto &r : query(db, "SELECT name FROM experiments"))
+            c.experiments.insert(r[0]);
+        for (const auto &r : query(
+                 db,
+                 "SELECT experiments.name, plannerConfigs.name, runs.run_index, runs.run_seed, runs.status, "
+                 "runs.best_cost, runs.path_length, runs.makespan, runs.flowtime FROM runs "
+                 "JOIN experiments ON runs.experimentid = experiments.id "
+                 "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
+            c.runs[r[0] + "|" + r[1] + "|" + r[2]] = "seed " + r[3] + " status " + r[4] + " cost " + r[5] +
+                                                     " length " + r[6] + " makespan " + r[7] + " flowtime " +
+                                                     r[8];
+        c.runRows = scalar(db, "SELECT count(*) FROM runs");
+        c.logs = scalar(db, "SELECT count(*) FROM mhplan_logs");
+        c.paths = scalar(db, "SELECT count(*) FROM paths");
+        return c;
+    }
+
+    void expectSameContents(const Contents &got, const Contents &want)
+    {
+        EXPECT_EQ(got.experiments, want.experiments);
+        EXPECT_EQ(got.runRows, want.runRows);
+        EXPECT_EQ(got.logs, want.logs);
+        EXPECT_EQ(got.paths, want.paths);
+        EXPECT_EQ(got.runs.size(), want.runs.size());
+        for (const auto &kv : want.runs)
+        {
+            const auto it = got.runs.find(kv.first);
+            if (it == got.runs.end())
+                ADD_FAILURE() << "run missing: " << kv.first;
+            else
+                EXPECT_EQ(it->second, kv.second) << kv.first;
+        }
+    }
+
+    class CampaignFaults : public ::testing::Test
+    {
+      protected:
+        /** The uninterrupted run, once per test process. */
+        static void SetUpTestSuite()
+        {
+            const fs::path dir = freshDir("reference");
+            const std::string out = (dir / "out.txt").string();
+            const auto t0 = std::chrono::steady_clock::now();
+            const int rc = waitFor(spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out));
+            wallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            ASSERT_EQ(rc, 0) << readFile(out);
+            // "wall time: W s (solve S s, experiment processes P s, database M s)"
+            const std::string text = readFile(out);
+            const std::size_t at = text.find(", database ");
+            ASSERT_NE(at, std::string::npos) << text;
+            mergeSeconds_ = std::atof(text.c_str() + at + 11);
+            reference_ = new Contents(contents((dir / "f.db").string()));
+        }
+        static void TearDownTestSuite()
+        {
+            delete reference_;
+            reference_ = nullptr;
+            fs::remove_all(fs::temp_directory_path() / ("mhplan_test_faults_" + std::to_string(::getpid())));
+        }
+        void SetUp() override
+        {
+            ASSERT_NE(reference_, nullptr);
+            // The reference itself: 5 planning experiments x 2 planners x 2 runs, 2 + 1 simulation runs.
+            ASSERT_EQ(reference_->experiments.size(), 7u);
+            ASSERT_EQ(reference_->runRows, 5 * 2 * 2 + 2 + 1);
+            ASSERT_EQ(reference_->logs, 7);
+        }
+        static Contents *reference_;
+        /** The uninterrupted run's wall time and the part of it spent merging. */
+        static double wallSeconds_, mergeSeconds_;
+    };
+    Contents *CampaignFaults::reference_ = nullptr;
+    double CampaignFaults::wallSeconds_ = 0.0;
+    double CampaignFaults::mergeSeconds_ = 0.0;
+} // namespace
+
+TEST_F(CampaignFaults, KilledAtRandomMomentsAndResumedHoldsExactlyTheUninterruptedRuns)
+{
+    const fs::path dir = freshDir("killed");
+    const std::string db = (dir / "f.db").string(), out = (dir / "out.txt").string();
+    ompl::RNG rng(20261201);
+    int killed = 0, killedMerging = 0;
+    for (int attempt = 0; attempt < 10; ++attempt)
+    {
+        const pid_t pid = spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out);
+        ASSERT_GT(pid, 0);
+        // Five kills at a moment after the start, while the experiments run (the uninterrupted run spent
+        // wall - merge seconds on them, half of it per attempt); five at a moment after the merge began
+        // (every log written), within the merge time of the uninterrupted run, so that kills land inside
+        // ompl_benchmark_statistics and the recording after it.
+        const bool inMerge = attempt >= 5;
+        const double delay =
+            inMerge ? rng.uniformReal(0.0, 0.8 * mergeSeconds_)
+                    : rng.uniformReal(0.0, std::min(0.5, 0.5 * std::max(0.1, wallSeconds_ - mergeSeconds_)));
+        auto t0 = std::chrono::steady_clock::now();
+        bool exited = false;
+        int status = 0;
+        bool merging = !inMerge;
+        while (!exited)
+        {
+            if (!merging && completeLogs(db + ".logs") == 7)
+            {
+                merging = true;
+                t0 = std::chrono::steady_clock::now();
+            }
+            if (merging &&
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() >= delay)
+                break;
+            exited = ::waitpid(pid, &status, WNOHANG) == pid;
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        if (!exited)
+        {
+            killedMerging += completeLogs(db + ".logs") == 7 ? 1 : 0;
+            ::kill(-pid, SIGKILL);
+            EXPECT_EQ(waitFor(pid), 128 + SIGKILL);
+            ++killed;
+        }
+        else
+            EXPECT_EQ(exitCode(status), 0) << readFile(out);
+        // Whatever the moment, the database on disk is whole: each experiment once, each recorded.
+        if (fs::exists(db))
+        {
+            const bool haveExperiments =
+                scalar(db,
+                       "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'experiments'") ==
+                1;
+            const long long experiments =
+                haveExperiments ? scalar(db, "SELECT count(*) FROM experiments") : 0;
+            EXPECT_EQ(experiments, scalar(db, "SELECT count(*) FROM mhplan_logs"))
+                << "after attempt " << attempt;
+            if (haveExperiments)
+            {
+                EXPECT_EQ(experiments, scalar(db, "SELECT count(DISTINCT name) FROM experiments"))
+                    << "after attempt " << attempt;
+            }
+        }
+    }
+    std::cout << "killed " << killed << " of 10 attempts: " << killed - killedMerging
+              << " while running experiments, " << killedMerging << " while merging\n";
+    EXPECT_GE(killed, 5); // at least the kills timed from the start land before the end of the campaign
+
+    // Resumed to the end; a further resume finds nothing to do.
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out)), 0) << readFile(out);
+    fs::remove(out);
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(dir), out)), 0) << readFile(out);
+    EXPECT_NE(readFile(out).find("experiments: 7 (0 run now, 7 already complete, 0 failed)"),
+              std::string::npos)
+        << readFile(out);
+    EXPECT_NE(readFile(out).find("(0 log(s) appended)"), std::string::npos) << readFile(out);
+    EXPECT_FALSE(fs::exists(db + ".merging"));
+    expectSameContents(contents(db), *reference_);
+}
+
+TEST_F(CampaignFaults, UnevenShardsAreDisjointCoverEverythingAndMergeToTheUninterruptedRun)
+{
+    const Campaign campaign = loadCampaign(kCampaign);
+    const auto resolve = [](const std::string &name)
+    { return fs::exists(name) ? name : std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml"; };
+    const std::vector<Experiment> all = enumerateExperiments(campaign, resolve);
+    ASSERT_EQ(all.size(), 7u);
+    for (unsigned int k : {2u, 3u, 4u, 5u, 7u, 9u})
+    {
+        std::map<std::size_t, unsigned int> owner;
+        std::size_t smallest = all.size(), largest = 0;
+        for (unsigned int i = 1; i <= k; ++i)
+        {
+            const auto part = shardExperiments(all, i, k);
+            smallest = std::min(smallest, part.size());
+            largest = std::max(largest, part.size());
+            for (const auto &e : part)
+                EXPECT_TRUE(owner.emplace(e.index, i).second)
+                    << e.name << " in shards " << owner[e.index] << " and " << i << " of " << k;
+        }
+        EXPECT_EQ(owner.size(), all.size()) << "shards of " << k << " miss experiments";
+        EXPECT_LE(largest - smallest, 1u) << k << " shards";
+    }
+    // Three shards of seven: 3, 2 and 2 experiments, planning and simulation experiments mixed.
+    std::set<int> kinds;
+    for (unsigned int i = 1; i <= 3; ++i)
+        for (const auto &e : shardExperiments(all, i, 3))
+            kinds.insert((e.simulation == Experiment::kNoSimulation ? 0 : 10) + static_cast<int>(i));
+    EXPECT_EQ(kinds.size(), 5u) << "expected shards with planning experiments and shards with simulations";
+
+    // The three shards at the same time into one log directory (a shard writes logs, no database), then the
+    // merge.
+    const fs::path dir = freshDir("shards");
+    const std::string db = (dir / "f.db").string();
+    std::vector<pid_t> pids;
+    for (unsigned int i = 1; i <= 3; ++i)
+        pids.push_back(spawnMhplan(benchArgs(dir, {"--shard", std::to_string(i) + "/3"}),
+                                   (dir / ("out" + std::to_string(i) + ".txt")).string()));
+    for (unsigned int i = 1; i <= 3; ++i)
+        EXPECT_EQ(waitFor(pids[i - 1]), 0) << readFile((dir / ("out" + std::to_string(i) + ".txt")).string());
+    EXPECT_FALSE(fs::exists(db));
+    EXPECT_EQ(completeLogs(db + ".logs"), 7u);
+    const std::string out = (dir / "merge.txt").string();
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(dir, {"--merge-only"}), out)), 0) << readFile(out);
+    EXPECT_NE(readFile(out).find("(7 log(s) appended)"), std::string::npos) << readFile(out);
+    expectSameContents(contents(db), *reference_);
+}
+
+TEST(BenchCli, UnwritableLogOrDatabaseDirectoryIsRefusedBeforeAnyRun)
+{
+    const fs::path dir = freshDir("unwritable");
+    for (const auto &[args, path] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"--database", "/proc/x.db", "--logs", (dir / "logs").string()}, "/proc/x.db"},
+             {{"--database", (dir / "ok.db").string(), "--logs", "/proc/logs"}, "/proc/logs"},
+             {{"--database", "/proc/x.db", "--merge-only"}, "/proc/x.db"}})
+    {
+        std::vector<std::string> all{"bench", kCampaign, "--no-progress"};
+        all.insert(all.end(), args.begin(), args.end());
+        const std::string out = (dir / "out.txt").string();
+        fs::remove(out);
+        EXPECT_EQ(waitFor(spawnMhplan(all, out)), 1) << readFile(out);
+        const std::string text = readFile(out);
+        EXPECT_NE(text.find("'" + path + "'"), std::string::npos) << text;
+        EXPECT_EQ(text.find("internal error"), std::string::npos) << text;
+        EXPECT_EQ(text.find(" done ("), std::string::npos) << "a run started: " << text;
+    }
+    EXPECT_FALSE(fs::exists(dir / "logs" / "bfo_case1-default.log"));
+    EXPECT_FALSE(fs::exists(dir / "ok.db"));
+    fs::remove_all(dir.parent_path());
+}
