@@ -11,6 +11,10 @@ cmake --install "$build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/lib/cmake/mhplan/mhplanConfig.cmake"
 test -f "$work/prefix/include/mhplan/planners/population/SlimeMould.h"
 test -f "$work/prefix/include/mhplan/base/VersionConfig.h"
+test -f "$work/prefix/include/mhplan/draw/GifWriter.h"
+# A layer's detail/ headers are shared by its own sources only: not installed.
+test ! -e "$work/prefix/include/mhplan/optimum/detail"
+test ! -e "$work/prefix/include/mhplan/draw/detail"
 test -x "$work/prefix/bin/mhplan"
 # The installed program finds its installed worlds (not the source tree's).
 worlds=$(env -u MHPLAN_ENVIRONMENTS "$work/prefix/bin/mhplan" worlds)
@@ -24,6 +28,7 @@ deb=$(ls "$work"/mhplan_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 contents=$(dpkg-deb -c "$deb")
 grep -q libompl-dev <<<"$depends"
+grep -q libgif7 <<<"$depends" # libmhplan links giflib (src/draw/GifWriter.cpp)
 grep -q "usr/lib/cmake/mhplan/mhplanConfig.cmake" <<<"$contents"
 grep -q "usr/bin/mhplan" <<<"$contents"
 echo "consumer project built and ran against the installed package; $(basename "$deb") built"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/lattice/Lattice.h"
+#include "mhplan/planners/lattice/LatticePlanner.h"
 #include "mhplan/planners/common/PlannerSupport.h"
 
 #include "mhplan/collision/GridCollision.h"

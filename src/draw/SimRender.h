@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: drawing simulation runs (Simulation.h): an SVG of the trajectories (with an optional SMIL
-   animation), an animated GIF written from scratch (GIF89a, LZW), and the trajectories as CSV. */
+   animation, SimSvg.cpp), an animated GIF (frames rasterised in SimGif.cpp, encoded by GifWriter.h), and the
+   trajectories as CSV (SimCsv.cpp). */
 #ifndef MHPLAN_SIM_RENDER_H
 #define MHPLAN_SIM_RENDER_H
 
+#include "mhplan/draw/GifWriter.h"
 #include "mhplan/sim/Simulation.h"
 
 #include <array>
@@ -52,29 +54,6 @@ namespace mhplan
         written. */
     void writeSimulationGif(const Scenario &scenario, const SimulationResult &result, const std::string &path,
                             const GifOptions &options = GifOptions());
-
-    /** \brief Encode frames as an animated GIF89a that loops forever (NETSCAPE2.0 extension).
-
-        \e palette has 2..256 colours (padded to a power of two with black); every frame holds \e w * \e h
-        palette indices (row-major, top row first), each < palette.size(). \e delaysCs holds one delay per
-        frame in hundredths of a second, or a single value for all. Frames after the first are stored as the
-        smallest rectangle that differs from the previous frame (disposal "do not dispose"), so a decoder
-        composites them onto the previous canvas; with fewer than 256 colours the unchanged pixels in that
-        rectangle are written as a transparent index (palette.size()). LZW with variable code size (up to 12
-       bits) and a clear code whenever the code table is full. Throws std::invalid_argument naming the
-       parameter on misuse. */
-    std::vector<std::uint8_t> encodeGif(int w, int h, const std::vector<std::array<std::uint8_t, 3>> &palette,
-                                        const std::vector<std::vector<std::uint8_t>> &frames,
-                                        const std::vector<int> &delaysCs);
-
-    /** \brief encodeGif with one delay for every frame. */
-    std::vector<std::uint8_t> encodeGif(int w, int h, const std::vector<std::array<std::uint8_t, 3>> &palette,
-                                        const std::vector<std::vector<std::uint8_t>> &frames, int delayCs);
-
-    /** \brief GIF LZW compression of palette indices with minimum code size \e minCodeSize (2..8), returned
-        as the raw code stream (clear code first, end-of-information last, codes packed LSB first), before
-        the 255-byte sub-block split. */
-    std::vector<std::uint8_t> lzwEncode(const std::vector<std::uint8_t> &indices, int minCodeSize);
 
     /** \brief The trajectories as CSV: header "time,robot,x,y,heading", one row per recorded sample, ordered
         by time and then by robot index. */
