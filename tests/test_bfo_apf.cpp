@@ -616,12 +616,11 @@ TEST(BfoApfFieldSettings, DeclaresValidatesAndNotifies)
 {
     FieldOwner owner;
     // The five parameters, their range suggestions and the [BFO] section 6 defaults.
-    const std::vector<std::array<std::string, 3>> expected{
-        {"attraction_gain", "0.:0.01:1000000.", "0.1"},
-        {"repulsion_gain", "0.:0.01:1000000.", "0.06"},
-        {"influence_distance", "0.000001:0.1:1000000.", "1.5"},
-        {"sensing_range", "0.000001:0.1:1000000.", "1.2"},
-        {"repulsion", "sum,nearest", "sum"}};
+    const std::vector<std::array<std::string, 3>> expected{{"attraction_gain", "0:0.01:1000000", "0.1"},
+                                                           {"repulsion_gain", "0:0.01:1000000", "0.06"},
+                                                           {"influence_distance", "1e-06:0.1:1000000", "1.5"},
+                                                           {"sensing_range", "1e-06:0.1:1000000", "1.2"},
+                                                           {"repulsion", "sum,nearest", "sum"}};
     EXPECT_EQ(owner.params.size(), expected.size());
     for (const auto &e : expected)
     {

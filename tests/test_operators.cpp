@@ -113,7 +113,13 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
         for (const char *s : kSwitches)
         {
             EXPECT_EQ(p->params()[s].getValue(), "0") << name << " " << s;
-            EXPECT_FALSE(p->params().setParam(s, "2")) << name << " " << s;
+            EXPECT_EQ(p->params()[s].getRangeSuggestion(), "0,1") << name << " " << s;
+            // A switch is a bool: "2" is refused by name, true/false and 1/0 are accepted.
+            EXPECT_THROW(applyPlannerParameters(*p, {{s, "2"}}), InputError) << name << " " << s;
+            EXPECT_EQ(p->params()[s].getValue(), "0") << name << " " << s;
+            applyPlannerParameters(*p, {{s, "true"}});
+            EXPECT_EQ(p->params()[s].getValue(), "1") << name << " " << s;
+            applyPlannerParameters(*p, {{s, "false"}});
             EXPECT_EQ(p->params()[s].getValue(), "0") << name << " " << s;
         }
         EXPECT_EQ(p->params()["gms_scope"].getValue(), "best");
@@ -137,10 +143,6 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
             EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
         }
     };
-    expectMessage([&] { sma.setGmsRepair(2); }, "'gms_repair' must be in [0, 1]; got 2");
-    expectMessage([&] { sma.setGmsRevise(3); }, "'gms_revise'");
-    expectMessage([&] { sma.setGmsSimplify(7); }, "'gms_simplify'");
-    expectMessage([&] { sma.setGmsImprove(9); }, "'gms_improve'");
     expectMessage([&] { sma.setGmsReplaceFraction(-0.1); }, "'gms_replace_fraction' must be in [0, 1]");
     expectMessage([&] { sma.setGmsReplaceFraction(1.01); }, "'gms_replace_fraction'");
     expectMessage([&] { sma.setGmsScope("worst"); }, "'gms_scope' must be 'best' or 'all'; got 'worst'");
@@ -197,8 +199,8 @@ TEST(GmsOperators, RefusedInKDAndByAlgorithmsWithoutAPopulationView)
     }
     // Off again: accepted.
     SlimeMould sma(si);
-    sma.setGmsRepair(1);
-    sma.setGmsRepair(0);
+    sma.setGmsRepair(true);
+    sma.setGmsRepair(false);
     EXPECT_NO_THROW(sma.setup());
     // The GA (its own operators) exposes no waypoint population.
     const ob::PlannerPtr ga = PlannerRegistry::builtin().create("GA", planarSpace());

@@ -290,6 +290,131 @@ TEST_P(PlannerContract, InvalidParametersAreRefusedByName)
     }
 }
 
+namespace
+{
+    /** \brief The numeric bounds of a range suggestion "lo:step:hi"; false for a list of words or a switch.
+     */
+    bool numericRange(const std::string &range, double &lo, double &hi)
+    {
+        const auto first = range.find(':');
+        if (first == std::string::npos)
+            return false;
+        lo = std::stod(range.substr(0, first));
+        hi = std::stod(range.substr(range.rfind(':') + 1));
+        return true;
+    }
+
+    /** \brief \e v as OMPL prints a double parameter (digits10 significant digits). */
+    std::string formatNumber(double v)
+    {
+        std::ostringstream out;
+        out << std::setprecision(std::numeric_limits<double>::digits10) << v;
+        return out.str();
+    }
+
+    std::vector<std::string> splitWords(const std::string &list)
+    {
+        std::vector<std::string> out;
+        std::stringstream in(list);
+        std::string word;
+        while (std::getline(in, word, ','))
+            out.push_back(word);
+        return out;
+    }
+} // namespace
+
+TEST_P(PlannerContract, ParametersRoundTrip)
+{
+    // Every parameter the planner declares: its current value, both ends of its range (and an inner value),
+    // every word of its list, both values of a switch: setParam then getParam gives the same string, and
+    // the planner's own value string is accepted again unchanged.
+    ob::PlannerPtr p = makePlanner(GetParam());
+    std::vector<std::string> names;
+    p->params().getParamNames(names);
+    ASSERT_FALSE(names.empty()) << GetParam();
+    for (const std::string &name : names)
+    {
+        ob::GenericParam &param = p->params()[name];
+        const std::string range = param.getRangeSuggestion();
+        EXPECT_FALSE(range.empty()) << GetParam() << " " << name << " declares no range";
+        const std::string before = param.getValue();
+        std::vector<std::string> values{before};
+        double lo = 0.0, hi = 0.0;
+        if (range == "0,1")
+            values.insert(values.end(), {"1", "0"});
+        else if (numericRange(range, lo, hi))
+        {
+            const bool integral = before.find_first_of(".e") == std::string::npos;
+            const double mid = integral ? std::floor((lo + hi) / 2.0) : (lo + hi) / 2.0;
+            values.insert(values.end(), {formatNumber(lo), formatNumber(mid), formatNumber(hi)});
+        }
+        else
+            for (const std::string &word : splitWords(range))
+                values.push_back(word);
+        for (const std::string &value : values)
+        {
+            ASSERT_NO_THROW(applyPlannerParameters(*p, {{name, value}}))
+                << GetParam() << " " << name << "=" << value;
+            EXPECT_EQ(param.getValue(), value) << GetParam() << " " << name;
+        }
+        applyPlannerParameters(*p, {{name, before}});
+        EXPECT_EQ(param.getValue(), before) << GetParam() << " " << name;
+    }
+}
+
+TEST_P(PlannerContract, SwitchesAcceptBoolSpellingsAndBadValuesAreRefusedWithTheRange)
+{
+    ob::PlannerPtr p = makePlanner(GetParam());
+    std::vector<std::string> names;
+    p->params().getParamNames(names);
+    const auto refused = [&](const std::string &name, const std::string &value, const std::string &accepted)
+    {
+        try
+        {
+            applyPlannerParameters(*p, {{name, value}});
+            ADD_FAILURE() << GetParam() << " accepted " << name << " = " << value;
+        }
+        catch (const InputError &e)
+        {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("parameter '" + name + "'"), std::string::npos) << what;
+            EXPECT_NE(what.find(accepted), std::string::npos) << what;
+        }
+    };
+    for (const std::string &name : names)
+    {
+        const std::string range = p->params()[name].getRangeSuggestion();
+        const std::string before = p->params()[name].getValue();
+        double lo = 0.0, hi = 0.0;
+        if (range == "0,1")
+        {
+            // Switches are bool: true/false and 1/0.
+            for (const auto &[given, stored] : std::vector<std::pair<std::string, std::string>>{
+                     {"true", "1"}, {"false", "0"}, {"1", "1"}, {"0", "0"}})
+            {
+                applyPlannerParameters(*p, {{name, given}});
+                EXPECT_EQ(p->params()[name].getValue(), stored) << GetParam() << " " << name << "=" << given;
+            }
+            applyPlannerParameters(*p, {{name, before}});
+            refused(name, "2", "one of {0,1}");
+            refused(name, "yes", "one of {0,1}");
+        }
+        else if (numericRange(range, lo, hi))
+        {
+            const std::string accepted =
+                "[" + range.substr(0, range.find(':')) + ", " + range.substr(range.rfind(':') + 1) + "]";
+            refused(name, formatNumber(lo - 1.0), accepted);
+            refused(name, formatNumber(hi + 1.0), accepted);
+            refused(name, "abc", accepted);
+            refused(name, "", accepted);
+        }
+        else
+            refused(name, "no-such-choice", "one of {" + range + "}");
+        EXPECT_EQ(p->params()[name].getValue(), before) << GetParam() << " " << name;
+        applyPlannerParameters(*p, {{name, before}});
+    }
+}
+
 TEST_P(PlannerContract, IntermediateSolutionsImprove)
 {
     og::SimpleSetupPtr ss = seedProblem();

@@ -7,6 +7,7 @@
 
 #include "mhplan/planners/common/Fitness.h"
 #include "mhplan/planners/common/PathEncoding.h"
+#include "mhplan/base/Parameters.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/RandomNumbers.h>
@@ -19,10 +20,6 @@
 namespace mhplan
 {
     class PathOperators;
-
-    /** \brief Throws std::invalid_argument "parameter 'name' must be in [lo, hi]; got value" unless
-        lo <= value <= hi (shared by every planner's setters). */
-    void checkParameterRange(const char *param, double value, double lo, double hi);
 
     /** \brief Defaults a concrete planner passes to PopulationPlanner. */
     struct PopulationDefaults
@@ -74,8 +71,8 @@ namespace mhplan
         Switchable [GMS] operators (docs/algorithms.md 1.5; all off by default, and then no operator code
         runs and no random number is drawn, so the faithful algorithms are bit-identical to their papers'
         versions):
-        \c gms_repair (0/1: node repair + line-segment repair), \c gms_revise (0/1), \c gms_simplify (0/1),
-        \c gms_improve (0/1: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
+        \c gms_repair (bool: node repair + line-segment repair), \c gms_revise (bool), \c gms_simplify (bool),
+        \c gms_improve (bool: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
         ([0, 1], 0 = off). They act on the fixed-length waypoint encoding as follows, after every completed
         iteration of the algorithm:
         - for the iteration's best individual (scope "best") or for every individual (scope "all"): decode
@@ -168,18 +165,19 @@ namespace mhplan
         void setSeed(unsigned long seed);
         unsigned long getSeed() const { return seed_; }
 
-        /** \brief [GMS] node repair + line-segment repair on the operated individuals (0 = off, 1 = on). */
-        void setGmsRepair(unsigned int on);
-        unsigned int getGmsRepair() const { return gmsRepair_ ? 1u : 0u; }
-        /** \brief [GMS] revision (removal of repeated nodes and loops) (0 = off, 1 = on). */
-        void setGmsRevise(unsigned int on);
-        unsigned int getGmsRevise() const { return gmsRevise_ ? 1u : 0u; }
-        /** \brief [GMS] simplification (0 = off, 1 = on). */
-        void setGmsSimplify(unsigned int on);
-        unsigned int getGmsSimplify() const { return gmsSimplify_ ? 1u : 0u; }
-        /** \brief [GMS] node improvement (0 = off, 1 = on). */
-        void setGmsImprove(unsigned int on);
-        unsigned int getGmsImprove() const { return gmsImprove_ ? 1u : 0u; }
+        /** \brief [GMS] node repair + line-segment repair on the operated individuals (a switch, off by
+         * default). */
+        void setGmsRepair(bool on);
+        bool getGmsRepair() const { return gmsRepair_; }
+        /** \brief [GMS] revision (removal of repeated nodes and loops) (a switch, off by default). */
+        void setGmsRevise(bool on);
+        bool getGmsRevise() const { return gmsRevise_; }
+        /** \brief [GMS] simplification (a switch, off by default). */
+        void setGmsSimplify(bool on);
+        bool getGmsSimplify() const { return gmsSimplify_; }
+        /** \brief [GMS] node improvement (a switch, off by default). */
+        void setGmsImprove(bool on);
+        bool getGmsImprove() const { return gmsImprove_; }
         /** \brief Which individuals the path operators act on: "best" (the iteration's best) or "all". */
         void setGmsScope(const std::string &scope);
         std::string getGmsScope() const { return gmsScopeAll_ ? "all" : "best"; }
@@ -276,6 +274,8 @@ namespace mhplan
         ompl::RNG rng_;
 
       private:
+        /** \brief Declare the parameters on params() (PopulationParameters.cpp). */
+        void declareParameters();
         /** \brief Read the space's dimension and bounds; refuseSetup() when they are unsupported. */
         void checkSpace();
         bool prepareProblem();
@@ -287,7 +287,8 @@ namespace mhplan
         /** \brief The stagnation restart after an iteration whose best cost was \e before (see
             setStagnationRestart()); false when the redrawn population was interrupted. */
         bool restartOnStagnation(double before);
-        /** \brief The [GMS] operator step after an iteration (see the class doc); false when interrupted. */
+        /** \brief The [GMS] operator step after an iteration (see the class doc; GmsStep.cpp); false when
+            interrupted. */
         bool applyGmsOperators();
         /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */
         bool operateOn(double *x, double &fx);

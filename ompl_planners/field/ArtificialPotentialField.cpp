@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/field/ArtificialPotentialField.h"
+#include "mhplan/base/Parameters.h"
 
 #include "mhplan/planners/common/PopulationPlanner.h"
 #include "mhplan/collision/Validity.h"
@@ -19,6 +20,18 @@ namespace mhplan
 {
     namespace
     {
+        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000000};
+        constexpr ParamRange kDirections{"directions", 3, 1, 3600};
+        constexpr ParamRange kGradientSpacing{"gradient_spacing", 0.000000001, 0.0001, 1};
+        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000};
+        constexpr ParamRange kStallSteps{"stall_steps", 1, 1, 1000000};
+        constexpr ParamRange kStallTolerance{"stall_tolerance", 0, 0.000001, 1000000};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 10000000};
+        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000};
+    } // namespace
+
+    namespace
+    {
         constexpr double kInf = std::numeric_limits<double>::infinity();
     } // namespace
 
@@ -33,19 +46,17 @@ namespace mhplan
 
         using A = ArtificialPotentialField;
         declareFieldParams(params_);
-        declareParam<double>("step_size", this, &A::setStepSize, &A::getStepSize, "0.000001:0.01:1000000.");
-        declareParam<std::string>("descent", this, &A::setDescent, &A::getDescent, "directions,gradient");
-        declareParam<unsigned int>("directions", this, &A::setDirections, &A::getDirections, "3:1:3600");
-        declareParam<double>("gradient_spacing", this, &A::setGradientSpacing, &A::getGradientSpacing,
-                             "0.000000001:0.0001:1.");
-        declareParam<double>("goal_tolerance", this, &A::setGoalTolerance, &A::getGoalTolerance,
-                             "0.:0.01:1000000.");
-        declareParam<unsigned int>("stall_steps", this, &A::setStallSteps, &A::getStallSteps, "1:1:1000000");
-        declareParam<double>("stall_tolerance", this, &A::setStallTolerance, &A::getStallTolerance,
-                             "0.:0.000001:1000000.");
-        declareParam<unsigned int>("max_iterations", this, &A::setMaxIterations, &A::getMaxIterations,
-                                   "0:1:10000000");
-        declareParam<unsigned int>("max_steps", this, &A::setMaxSteps, &A::getMaxSteps, "1:1:10000000");
+        declareRanged<double>(params(), this, kStepSize, &A::setStepSize, &A::getStepSize);
+        declareChoice(params(), this, "descent", &A::setDescent, &A::getDescent, "directions,gradient");
+        declareRanged<unsigned int>(params(), this, kDirections, &A::setDirections, &A::getDirections);
+        declareRanged<double>(params(), this, kGradientSpacing, &A::setGradientSpacing,
+                              &A::getGradientSpacing);
+        declareRanged<double>(params(), this, kGoalTolerance, &A::setGoalTolerance, &A::getGoalTolerance);
+        declareRanged<unsigned int>(params(), this, kStallSteps, &A::setStallSteps, &A::getStallSteps);
+        declareRanged<double>(params(), this, kStallTolerance, &A::setStallTolerance, &A::getStallTolerance);
+        declareRanged<unsigned int>(params(), this, kMaxIterations, &A::setMaxIterations,
+                                    &A::getMaxIterations);
+        declareRanged<unsigned int>(params(), this, kMaxSteps, &A::setMaxSteps, &A::getMaxSteps);
 
         addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCostValue_.load()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(steps_.load()); });
@@ -70,7 +81,7 @@ namespace mhplan
 
     void ArtificialPotentialField::setStepSize(double v)
     {
-        checkParameterRange("step_size", v, 1e-6, 1e6);
+        checkParameter(kStepSize, v);
         stepSize_ = v;
     }
 
@@ -84,43 +95,43 @@ namespace mhplan
 
     void ArtificialPotentialField::setDirections(unsigned int n)
     {
-        checkParameterRange("directions", n, 3, 3600);
+        checkParameter(kDirections, n);
         directions_ = n;
     }
 
     void ArtificialPotentialField::setGradientSpacing(double h)
     {
-        checkParameterRange("gradient_spacing", h, 1e-9, 1.0);
+        checkParameter(kGradientSpacing, h);
         gradientSpacing_ = h;
     }
 
     void ArtificialPotentialField::setGoalTolerance(double v)
     {
-        checkParameterRange("goal_tolerance", v, 0.0, 1e6);
+        checkParameter(kGoalTolerance, v);
         goalTolerance_ = v;
     }
 
     void ArtificialPotentialField::setStallSteps(unsigned int n)
     {
-        checkParameterRange("stall_steps", n, 1, 1000000);
+        checkParameter(kStallSteps, n);
         stallSteps_ = n;
     }
 
     void ArtificialPotentialField::setStallTolerance(double v)
     {
-        checkParameterRange("stall_tolerance", v, 0.0, 1e6);
+        checkParameter(kStallTolerance, v);
         stallTolerance_ = v;
     }
 
     void ArtificialPotentialField::setMaxIterations(unsigned int n)
     {
-        checkParameterRange("max_iterations", n, 0, 10000000);
+        checkParameter(kMaxIterations, n);
         maxIterations_ = n;
     }
 
     void ArtificialPotentialField::setMaxSteps(unsigned int n)
     {
-        checkParameterRange("max_steps", n, 1, 10000000);
+        checkParameter(kMaxSteps, n);
         maxSteps_ = n;
     }
 

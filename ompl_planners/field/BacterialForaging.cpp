@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/base/Parameters.h"
 
 #include "mhplan/collision/Validity.h"
 
@@ -19,6 +20,25 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kChemotacticSteps{"chemotactic_steps", 1, 1, 100000};
+        constexpr ParamRange kSwimLength{"swim_length", 0, 1, 100000};
+        constexpr ParamRange kReproductionSteps{"reproduction_steps", 1, 1, 100000};
+        constexpr ParamRange kEliminationEvents{"elimination_events", 1, 1, 100000};
+        constexpr ParamRange kEliminationProbability{"elimination_probability", 0, 0.01, 1};
+        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000};
+        constexpr ParamRange kImprovementThreshold{"improvement_threshold", 0, 1, 100000};
+        constexpr ParamRange kAttractDepth{"attract_depth", 0, 0.01, 1000000};
+        constexpr ParamRange kAttractWidth{"attract_width", 0, 0.01, 1000000};
+        constexpr ParamRange kRepelHeight{"repel_height", 0, 0.01, 1000000};
+        constexpr ParamRange kRepelWidth{"repel_width", 0, 0.01, 1000000};
+        constexpr ParamRange kRobotStep{"robot_step", 0.000001, 0.01, 1000000};
+        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000};
+        constexpr ParamRange kSectorAngle{"sector_angle", 0, 1, 180};
+        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000};
+    } // namespace
+
     namespace
     {
         constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -57,35 +77,30 @@ namespace mhplan
     void BacterialForaging::declareBfoParams()
     {
         using BF = BacterialForaging;
-        declareParam<std::string>("mode", this, &BF::setMode, &BF::getMode, "online,global");
-        declareParam<unsigned int>("chemotactic_steps", this, &BF::setChemotacticSteps,
-                                   &BF::getChemotacticSteps, "1:1:100000");
-        declareParam<unsigned int>("swim_length", this, &BF::setSwimLength, &BF::getSwimLength, "0:1:100000");
-        declareParam<unsigned int>("reproduction_steps", this, &BF::setReproductionSteps,
-                                   &BF::getReproductionSteps, "1:1:100000");
-        declareParam<unsigned int>("elimination_events", this, &BF::setEliminationEvents,
-                                   &BF::getEliminationEvents, "1:1:100000");
-        declareParam<double>("elimination_probability", this, &BF::setEliminationProbability,
-                             &BF::getEliminationProbability, "0.:0.01:1.");
-        declareParam<double>("step_size", this, &BF::setStepSize, &BF::getStepSize, "0.000001:0.01:1000.");
-        declareParam<bool>("adaptive_tumble", this, &BF::setAdaptiveTumble, &BF::getAdaptiveTumble, "0,1");
-        declareParam<unsigned int>("improvement_threshold", this, &BF::setImprovementThreshold,
-                                   &BF::getImprovementThreshold, "0:1:100000");
-        declareParam<bool>("cell_to_cell", this, &BF::setCellToCell, &BF::getCellToCell, "0,1");
-        declareParam<double>("attract_depth", this, &BF::setAttractDepth, &BF::getAttractDepth,
-                             "0.:0.01:1000000.");
-        declareParam<double>("attract_width", this, &BF::setAttractWidth, &BF::getAttractWidth,
-                             "0.:0.01:1000000.");
-        declareParam<double>("repel_height", this, &BF::setRepelHeight, &BF::getRepelHeight,
-                             "0.:0.01:1000000.");
-        declareParam<double>("repel_width", this, &BF::setRepelWidth, &BF::getRepelWidth, "0.:0.01:1000000.");
+        declareChoice(params(), this, "mode", &BF::setMode, &BF::getMode, "online,global");
+        declareRanged<unsigned int>(params(), this, kChemotacticSteps, &BF::setChemotacticSteps,
+                                    &BF::getChemotacticSteps);
+        declareRanged<unsigned int>(params(), this, kSwimLength, &BF::setSwimLength, &BF::getSwimLength);
+        declareRanged<unsigned int>(params(), this, kReproductionSteps, &BF::setReproductionSteps,
+                                    &BF::getReproductionSteps);
+        declareRanged<unsigned int>(params(), this, kEliminationEvents, &BF::setEliminationEvents,
+                                    &BF::getEliminationEvents);
+        declareRanged<double>(params(), this, kEliminationProbability, &BF::setEliminationProbability,
+                              &BF::getEliminationProbability);
+        declareRanged<double>(params(), this, kStepSize, &BF::setStepSize, &BF::getStepSize);
+        declareSwitch(params(), this, "adaptive_tumble", &BF::setAdaptiveTumble, &BF::getAdaptiveTumble);
+        declareRanged<unsigned int>(params(), this, kImprovementThreshold, &BF::setImprovementThreshold,
+                                    &BF::getImprovementThreshold);
+        declareSwitch(params(), this, "cell_to_cell", &BF::setCellToCell, &BF::getCellToCell);
+        declareRanged<double>(params(), this, kAttractDepth, &BF::setAttractDepth, &BF::getAttractDepth);
+        declareRanged<double>(params(), this, kAttractWidth, &BF::setAttractWidth, &BF::getAttractWidth);
+        declareRanged<double>(params(), this, kRepelHeight, &BF::setRepelHeight, &BF::getRepelHeight);
+        declareRanged<double>(params(), this, kRepelWidth, &BF::setRepelWidth, &BF::getRepelWidth);
         declareFieldParams(params_);
-        declareParam<double>("robot_step", this, &BF::setRobotStep, &BF::getRobotStep,
-                             "0.000001:0.01:1000000.");
-        declareParam<double>("goal_tolerance", this, &BF::setGoalTolerance, &BF::getGoalTolerance,
-                             "0.:0.01:1000000.");
-        declareParam<double>("sector_angle", this, &BF::setSectorAngle, &BF::getSectorAngle, "0.:1.:180.");
-        declareParam<unsigned int>("max_steps", this, &BF::setMaxSteps, &BF::getMaxSteps, "1:1:10000000");
+        declareRanged<double>(params(), this, kRobotStep, &BF::setRobotStep, &BF::getRobotStep);
+        declareRanged<double>(params(), this, kGoalTolerance, &BF::setGoalTolerance, &BF::getGoalTolerance);
+        declareRanged<double>(params(), this, kSectorAngle, &BF::setSectorAngle, &BF::getSectorAngle);
+        declareRanged<unsigned int>(params(), this, kMaxSteps, &BF::setMaxSteps, &BF::getMaxSteps);
     }
 
     void BacterialForaging::updateSpecs()
@@ -116,67 +131,67 @@ namespace mhplan
 
     void BacterialForaging::setChemotacticSteps(unsigned int n)
     {
-        checkParameterRange("chemotactic_steps", n, 1, 100000);
+        checkParameter(kChemotacticSteps, n);
         chemotacticSteps_ = n;
     }
 
     void BacterialForaging::setSwimLength(unsigned int n)
     {
-        checkParameterRange("swim_length", n, 0, 100000);
+        checkParameter(kSwimLength, n);
         swimLength_ = n;
     }
 
     void BacterialForaging::setReproductionSteps(unsigned int n)
     {
-        checkParameterRange("reproduction_steps", n, 1, 100000);
+        checkParameter(kReproductionSteps, n);
         reproductionSteps_ = n;
     }
 
     void BacterialForaging::setEliminationEvents(unsigned int n)
     {
-        checkParameterRange("elimination_events", n, 1, 100000);
+        checkParameter(kEliminationEvents, n);
         eliminationEvents_ = n;
     }
 
     void BacterialForaging::setEliminationProbability(double p)
     {
-        checkParameterRange("elimination_probability", p, 0.0, 1.0);
+        checkParameter(kEliminationProbability, p);
         eliminationProbability_ = p;
     }
 
     void BacterialForaging::setStepSize(double c)
     {
-        checkParameterRange("step_size", c, 1e-6, 1000.0);
+        checkParameter(kStepSize, c);
         stepSize_ = c;
     }
 
     void BacterialForaging::setImprovementThreshold(unsigned int f)
     {
-        checkParameterRange("improvement_threshold", f, 0, 100000);
+        checkParameter(kImprovementThreshold, f);
         improvementThreshold_ = f;
     }
 
     void BacterialForaging::setAttractDepth(double v)
     {
-        checkParameterRange("attract_depth", v, 0.0, 1e6);
+        checkParameter(kAttractDepth, v);
         attractDepth_ = v;
     }
 
     void BacterialForaging::setAttractWidth(double v)
     {
-        checkParameterRange("attract_width", v, 0.0, 1e6);
+        checkParameter(kAttractWidth, v);
         attractWidth_ = v;
     }
 
     void BacterialForaging::setRepelHeight(double v)
     {
-        checkParameterRange("repel_height", v, 0.0, 1e6);
+        checkParameter(kRepelHeight, v);
         repelHeight_ = v;
     }
 
     void BacterialForaging::setRepelWidth(double v)
     {
-        checkParameterRange("repel_width", v, 0.0, 1e6);
+        checkParameter(kRepelWidth, v);
         repelWidth_ = v;
     }
 
@@ -188,25 +203,25 @@ namespace mhplan
 
     void BacterialForaging::setRobotStep(double v)
     {
-        checkParameterRange("robot_step", v, 1e-6, 1e6);
+        checkParameter(kRobotStep, v);
         robotStep_ = v;
     }
 
     void BacterialForaging::setGoalTolerance(double v)
     {
-        checkParameterRange("goal_tolerance", v, 0.0, 1e6);
+        checkParameter(kGoalTolerance, v);
         goalTolerance_ = v;
     }
 
     void BacterialForaging::setSectorAngle(double deg)
     {
-        checkParameterRange("sector_angle", deg, 0.0, 180.0);
+        checkParameter(kSectorAngle, deg);
         sectorAngle_ = deg;
     }
 
     void BacterialForaging::setMaxSteps(unsigned int n)
     {
-        checkParameterRange("max_steps", n, 1, 10000000);
+        checkParameter(kMaxSteps, n);
         maxSteps_ = n;
     }
 

@@ -2,7 +2,7 @@
 #include "mhplan/planners/field/PotentialField.h"
 #include "mhplan/planners/common/PlannerSupport.h"
 
-#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/base/Parameters.h"
 #include "mhplan/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
@@ -20,6 +20,14 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kAttractionGain{"attraction_gain", 0, 0.01, 1e6};
+        constexpr ParamRange kRepulsionGain{"repulsion_gain", 0, 0.01, 1e6};
+        constexpr ParamRange kInfluenceDistance{"influence_distance", 1e-6, 0.1, 1e6};
+        constexpr ParamRange kSensingRange{"sensing_range", 1e-6, 0.1, 1e6};
+    } // namespace
+
     RepulsionMode parseRepulsionMode(const std::string &name)
     {
         if (name == "sum")
@@ -37,28 +45,28 @@ namespace mhplan
 
     void PotentialFieldSettings::setAttractionGain(double v)
     {
-        checkParameterRange("attraction_gain", v, 0.0, 1e6);
+        checkParameter(kAttractionGain, v);
         field_.attractionGain = v;
         fieldChanged();
     }
 
     void PotentialFieldSettings::setRepulsionGain(double v)
     {
-        checkParameterRange("repulsion_gain", v, 0.0, 1e6);
+        checkParameter(kRepulsionGain, v);
         field_.repulsionGain = v;
         fieldChanged();
     }
 
     void PotentialFieldSettings::setInfluenceDistance(double v)
     {
-        checkParameterRange("influence_distance", v, 1e-6, 1e6);
+        checkParameter(kInfluenceDistance, v);
         field_.influenceDistance = v;
         fieldChanged();
     }
 
     void PotentialFieldSettings::setSensingRange(double v)
     {
-        checkParameterRange("sensing_range", v, 1e-6, 1e6);
+        checkParameter(kSensingRange, v);
         field_.sensingRange = v;
         fieldChanged();
     }
@@ -71,27 +79,13 @@ namespace mhplan
 
     void PotentialFieldSettings::declareFieldParams(ob::ParamSet &params)
     {
-        const auto declare = [&params](const std::string &name, auto setter, auto getter, const char *range)
-        {
-            using T = std::decay_t<decltype(getter())>;
-            params.declareParam<T>(name, setter, getter);
-            params[name].setRangeSuggestion(range);
-        };
-        declare(
-            "attraction_gain", [this](double v) { setAttractionGain(v); },
-            [this] { return getAttractionGain(); }, "0.:0.01:1000000.");
-        declare(
-            "repulsion_gain", [this](double v) { setRepulsionGain(v); },
-            [this] { return getRepulsionGain(); }, "0.:0.01:1000000.");
-        declare(
-            "influence_distance", [this](double v) { setInfluenceDistance(v); },
-            [this] { return getInfluenceDistance(); }, "0.000001:0.1:1000000.");
-        declare(
-            "sensing_range", [this](double v) { setSensingRange(v); }, [this] { return getSensingRange(); },
-            "0.000001:0.1:1000000.");
-        declare(
-            "repulsion", [this](const std::string &m) { setRepulsion(m); }, [this] { return getRepulsion(); },
-            "sum,nearest");
+        using S = PotentialFieldSettings;
+        declareRanged<double>(params, this, kAttractionGain, &S::setAttractionGain, &S::getAttractionGain);
+        declareRanged<double>(params, this, kRepulsionGain, &S::setRepulsionGain, &S::getRepulsionGain);
+        declareRanged<double>(params, this, kInfluenceDistance, &S::setInfluenceDistance,
+                              &S::getInfluenceDistance);
+        declareRanged<double>(params, this, kSensingRange, &S::setSensingRange, &S::getSensingRange);
+        declareChoice(params, this, "repulsion", &S::setRepulsion, &S::getRepulsion, "sum,nearest");
     }
 
     PotentialField::PotentialField(ob::SpaceInformationPtr si) : si_(std::move(si)) {}

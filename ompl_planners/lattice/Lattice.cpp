@@ -4,7 +4,7 @@
 #include "mhplan/planners/common/PlannerSupport.h"
 
 #include "mhplan/collision/GridCollision.h"
-#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/base/Parameters.h"
 #include "mhplan/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
@@ -24,6 +24,12 @@ namespace og = ompl::geometric;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kResolution{"resolution", 0, 0.01, 1000000};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000000};
+    } // namespace
+
     namespace
     {
         constexpr LatticeNode kNoParent = 0xFFFFFFFFu;
@@ -192,12 +198,12 @@ namespace mhplan
         specs_.multithreaded = false;
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
 
-        declareParam<double>("resolution", this, &LatticePlanner::setResolution,
-                             &LatticePlanner::getResolution, "0.:0.01:1000000.");
-        declareParam<std::string>("lattice", this, &LatticePlanner::setLattice, &LatticePlanner::getLattice,
-                                  "auto,sampled");
-        declareParam<unsigned int>("max_iterations", this, &LatticePlanner::setMaxIterations,
-                                   &LatticePlanner::getMaxIterations, "0:1:1000000000");
+        declareRanged<double>(params(), this, kResolution, &LatticePlanner::setResolution,
+                              &LatticePlanner::getResolution);
+        declareChoice(params(), this, "lattice", &LatticePlanner::setLattice, &LatticePlanner::getLattice,
+                      "auto,sampled");
+        declareRanged<unsigned int>(params(), this, kMaxIterations, &LatticePlanner::setMaxIterations,
+                                    &LatticePlanner::getMaxIterations);
 
         addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
@@ -217,7 +223,7 @@ namespace mhplan
 
     void LatticePlanner::setResolution(double r)
     {
-        checkParameterRange("resolution", r, 0.0, 1e6);
+        checkParameter(kResolution, r);
         if (r != resolution_)
             clear();
         resolution_ = r;
@@ -235,7 +241,7 @@ namespace mhplan
 
     void LatticePlanner::setMaxIterations(unsigned int n)
     {
-        checkParameterRange("max_iterations", n, 0.0, 1e9);
+        checkParameter(kMaxIterations, n);
         maxIterations_ = n;
     }
 

@@ -1,46 +1,54 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/memetic/MemeticGenetic.h"
 
-#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/base/Parameters.h"
 
 namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1};
+        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1};
+        constexpr ParamRange kImmigrantRate{"immigrant_rate", 0, 0.05, 1};
+        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100};
+    } // namespace
+
     MemeticGenetic::MemeticGenetic(const ob::SpaceInformationPtr &si, const std::string &name)
         : MemeticPlanner(si, name, 20)
     {
-        declareParam<double>("crossover_rate", this, &MemeticGenetic::setCrossoverRate,
-                             &MemeticGenetic::getCrossoverRate, "0.:0.05:1.");
-        declareParam<double>("mutation_rate", this, &MemeticGenetic::setMutationRate,
-                             &MemeticGenetic::getMutationRate, "0.:0.05:1.");
-        declareParam<double>("immigrant_rate", this, &MemeticGenetic::setImmigrantRate,
-                             &MemeticGenetic::getImmigrantRate, "0.:0.05:1.");
-        declareParam<unsigned int>("tournament_size", this, &MemeticGenetic::setTournamentSize,
-                                   &MemeticGenetic::getTournamentSize, "1:1:100");
+        declareRanged<double>(params(), this, kCrossoverRate, &MemeticGenetic::setCrossoverRate,
+                              &MemeticGenetic::getCrossoverRate);
+        declareRanged<double>(params(), this, kMutationRate, &MemeticGenetic::setMutationRate,
+                              &MemeticGenetic::getMutationRate);
+        declareRanged<double>(params(), this, kImmigrantRate, &MemeticGenetic::setImmigrantRate,
+                              &MemeticGenetic::getImmigrantRate);
+        declareRanged<unsigned int>(params(), this, kTournamentSize, &MemeticGenetic::setTournamentSize,
+                                    &MemeticGenetic::getTournamentSize);
     }
 
     void MemeticGenetic::setCrossoverRate(double r)
     {
-        checkParameterRange("crossover_rate", r, 0.0, 1.0);
+        checkParameter(kCrossoverRate, r);
         crossoverRate_ = r;
     }
 
     void MemeticGenetic::setMutationRate(double r)
     {
-        checkParameterRange("mutation_rate", r, 0.0, 1.0);
+        checkParameter(kMutationRate, r);
         mutationRate_ = r;
     }
 
     void MemeticGenetic::setImmigrantRate(double r)
     {
-        checkParameterRange("immigrant_rate", r, 0.0, 1.0);
+        checkParameter(kImmigrantRate, r);
         immigrantRate_ = r;
     }
 
     void MemeticGenetic::setTournamentSize(unsigned int k)
     {
-        checkParameterRange("tournament_size", k, 1, 100);
+        checkParameter(kTournamentSize, k);
         tournamentSize_ = k;
     }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
 
-#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/base/Parameters.h"
 
 #include <boost/math/constants/constants.hpp>
 
@@ -14,6 +14,16 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kIterations{"iterations", 1, 1, 1000000};
+        constexpr ParamRange kMaxStations{"max_stations", 8, 1, 1024};
+        constexpr ParamRange kOffsetRange{"offset_range", 0.001, 0.001, 1};
+        constexpr ParamRange kZ{"z", 0, 0.01, 1};
+        constexpr ParamRange kLevyStep{"levy_step", 0, 0.01, 1};
+        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1};
+    } // namespace
+
     // ---------------------------------------------------------------- OffsetMemeticPlanner
 
     OffsetMemeticPlanner::OffsetMemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -21,29 +31,29 @@ namespace mhplan
         : MemeticPlanner(si, name, populationSize)
     {
         setEliteRewalks(4);
-        declareParam<unsigned int>("iterations", this, &OffsetMemeticPlanner::setIterations,
-                                   &OffsetMemeticPlanner::getIterations, "1:1:1000000");
-        declareParam<unsigned int>("max_stations", this, &OffsetMemeticPlanner::setMaxStations,
-                                   &OffsetMemeticPlanner::getMaxStations, "8:1:1024");
-        declareParam<double>("offset_range", this, &OffsetMemeticPlanner::setOffsetRange,
-                             &OffsetMemeticPlanner::getOffsetRange, "0.001:0.001:1.");
+        declareRanged<unsigned int>(params(), this, kIterations, &OffsetMemeticPlanner::setIterations,
+                                    &OffsetMemeticPlanner::getIterations);
+        declareRanged<unsigned int>(params(), this, kMaxStations, &OffsetMemeticPlanner::setMaxStations,
+                                    &OffsetMemeticPlanner::getMaxStations);
+        declareRanged<double>(params(), this, kOffsetRange, &OffsetMemeticPlanner::setOffsetRange,
+                              &OffsetMemeticPlanner::getOffsetRange);
     }
 
     void OffsetMemeticPlanner::setIterations(unsigned int t)
     {
-        checkParameterRange("iterations", t, 1, 1000000);
+        checkParameter(kIterations, t);
         iterations_ = t;
     }
 
     void OffsetMemeticPlanner::setMaxStations(unsigned int k)
     {
-        checkParameterRange("max_stations", k, 8, 1024);
+        checkParameter(kMaxStations, k);
         maxStations_ = k;
     }
 
     void OffsetMemeticPlanner::setOffsetRange(double r)
     {
-        checkParameterRange("offset_range", r, 0.001, 1.0);
+        checkParameter(kOffsetRange, r);
         offsetRange_ = r;
     }
 
@@ -233,12 +243,12 @@ namespace mhplan
     MemeticSlimeMould::MemeticSlimeMould(const ob::SpaceInformationPtr &si, const std::string &name)
         : OffsetMemeticPlanner(si, name, 20)
     {
-        declareParam<double>("z", this, &MemeticSlimeMould::setZ, &MemeticSlimeMould::getZ, "0.:0.01:1.");
+        declareRanged<double>(params(), this, kZ, &MemeticSlimeMould::setZ, &MemeticSlimeMould::getZ);
     }
 
     void MemeticSlimeMould::setZ(double z)
     {
-        checkParameterRange("z", z, 0.0, 1.0);
+        checkParameter(kZ, z);
         z_ = z;
     }
 
@@ -313,21 +323,21 @@ namespace mhplan
 
     MemeticLRSMA::MemeticLRSMA(const ob::SpaceInformationPtr &si) : MemeticSlimeMould(si, "LRSMA-MEM")
     {
-        declareParam<double>("levy_step", this, &MemeticLRSMA::setLevyStep, &MemeticLRSMA::getLevyStep,
-                             "0.:0.01:1.");
-        declareParam<double>("rotation_fraction", this, &MemeticLRSMA::setRotationFraction,
-                             &MemeticLRSMA::getRotationFraction, "0.:0.05:1.");
+        declareRanged<double>(params(), this, kLevyStep, &MemeticLRSMA::setLevyStep,
+                              &MemeticLRSMA::getLevyStep);
+        declareRanged<double>(params(), this, kRotationFraction, &MemeticLRSMA::setRotationFraction,
+                              &MemeticLRSMA::getRotationFraction);
     }
 
     void MemeticLRSMA::setLevyStep(double s)
     {
-        checkParameterRange("levy_step", s, 0.0, 1.0);
+        checkParameter(kLevyStep, s);
         levyStep_ = s;
     }
 
     void MemeticLRSMA::setRotationFraction(double f)
     {
-        checkParameterRange("rotation_fraction", f, 0.0, 1.0);
+        checkParameter(kRotationFraction, f);
         rotationFraction_ = f;
     }
 

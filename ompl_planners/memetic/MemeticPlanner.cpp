@@ -2,7 +2,7 @@
 #include "mhplan/planners/memetic/MemeticPlanner.h"
 
 #include "mhplan/planners/common/PlannerSupport.h"
-#include "mhplan/planners/common/PopulationPlanner.h" // checkParameterRange
+#include "mhplan/base/Parameters.h"
 #include "mhplan/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
@@ -23,6 +23,23 @@ namespace og = ompl::geometric;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 1000};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000};
+        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295};
+        constexpr ParamRange kWalkNoise{"walk_noise", 0, 0.1, 10};
+        constexpr ParamRange kWalkWeight{"walk_weight", 1, 0.1, 10};
+        constexpr ParamRange kWalkExpansions{"walk_expansions", 1000, 1000, 100000000};
+        constexpr ParamRange kLatticeLevels{"lattice_levels", 1, 1, 16};
+        constexpr ParamRange kCoarseTurn{"coarse_turn", 0.01, 0.01, 3};
+        constexpr ParamRange kFineTurn{"fine_turn", 0.001, 0.001, 1};
+        constexpr ParamRange kPolishPasses{"polish_passes", 1, 1, 100000};
+        constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000};
+        constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000};
+        constexpr ParamRange kBisections{"bisections", 4, 1, 40};
+    } // namespace
+
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
                                    unsigned int populationSize)
         : ob::Planner(si, name), populationSize_(populationSize),
@@ -35,32 +52,32 @@ namespace mhplan
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
         stop_ = [this] { return stopRequested(); };
 
-        declareParam<unsigned int>("population_size", this, &MemeticPlanner::setPopulationSize,
-                                   &MemeticPlanner::getPopulationSize, "2:1:1000");
-        declareParam<unsigned int>("max_iterations", this, &MemeticPlanner::setMaxIterations,
-                                   &MemeticPlanner::getMaxIterations, "0:1:1000000");
-        declareParam<unsigned long>("seed", this, &MemeticPlanner::setSeed, &MemeticPlanner::getSeed,
-                                    "0:1:4294967295");
-        declareParam<double>("walk_noise", this, &MemeticPlanner::setWalkNoise, &MemeticPlanner::getWalkNoise,
-                             "0.:0.1:10.");
-        declareParam<double>("walk_weight", this, &MemeticPlanner::setWalkWeight,
-                             &MemeticPlanner::getWalkWeight, "1.:0.1:10.");
-        declareParam<unsigned int>("walk_expansions", this, &MemeticPlanner::setWalkExpansions,
-                                   &MemeticPlanner::getWalkExpansions, "1000:1000:100000000");
-        declareParam<unsigned int>("lattice_levels", this, &MemeticPlanner::setLatticeLevels,
-                                   &MemeticPlanner::getLatticeLevels, "1:1:16");
-        declareParam<double>("coarse_turn", this, &MemeticPlanner::setCoarseTurn,
-                             &MemeticPlanner::getCoarseTurn, "0.01:0.01:3.");
-        declareParam<double>("fine_turn", this, &MemeticPlanner::setFineTurn, &MemeticPlanner::getFineTurn,
-                             "0.001:0.001:1.");
-        declareParam<unsigned int>("polish_passes", this, &MemeticPlanner::setPolishPasses,
-                                   &MemeticPlanner::getPolishPasses, "1:1:100000");
-        declareParam<unsigned int>("elite_rewalks", this, &MemeticPlanner::setEliteRewalks,
-                                   &MemeticPlanner::getEliteRewalks, "0:1:1000");
-        declareParam<unsigned int>("stagnation", this, &MemeticPlanner::setStagnation,
-                                   &MemeticPlanner::getStagnation, "1:1:1000000");
-        declareParam<unsigned int>("bisections", this, &MemeticPlanner::setBisections,
-                                   &MemeticPlanner::getBisections, "4:1:40");
+        declareRanged<unsigned int>(params(), this, kPopulationSize, &MemeticPlanner::setPopulationSize,
+                                    &MemeticPlanner::getPopulationSize);
+        declareRanged<unsigned int>(params(), this, kMaxIterations, &MemeticPlanner::setMaxIterations,
+                                    &MemeticPlanner::getMaxIterations);
+        declareRanged<unsigned long>(params(), this, kSeed, &MemeticPlanner::setSeed,
+                                     &MemeticPlanner::getSeed);
+        declareRanged<double>(params(), this, kWalkNoise, &MemeticPlanner::setWalkNoise,
+                              &MemeticPlanner::getWalkNoise);
+        declareRanged<double>(params(), this, kWalkWeight, &MemeticPlanner::setWalkWeight,
+                              &MemeticPlanner::getWalkWeight);
+        declareRanged<unsigned int>(params(), this, kWalkExpansions, &MemeticPlanner::setWalkExpansions,
+                                    &MemeticPlanner::getWalkExpansions);
+        declareRanged<unsigned int>(params(), this, kLatticeLevels, &MemeticPlanner::setLatticeLevels,
+                                    &MemeticPlanner::getLatticeLevels);
+        declareRanged<double>(params(), this, kCoarseTurn, &MemeticPlanner::setCoarseTurn,
+                              &MemeticPlanner::getCoarseTurn);
+        declareRanged<double>(params(), this, kFineTurn, &MemeticPlanner::setFineTurn,
+                              &MemeticPlanner::getFineTurn);
+        declareRanged<unsigned int>(params(), this, kPolishPasses, &MemeticPlanner::setPolishPasses,
+                                    &MemeticPlanner::getPolishPasses);
+        declareRanged<unsigned int>(params(), this, kEliteRewalks, &MemeticPlanner::setEliteRewalks,
+                                    &MemeticPlanner::getEliteRewalks);
+        declareRanged<unsigned int>(params(), this, kStagnation, &MemeticPlanner::setStagnation,
+                                    &MemeticPlanner::getStagnation);
+        declareRanged<unsigned int>(params(), this, kBisections, &MemeticPlanner::setBisections,
+                                    &MemeticPlanner::getBisections);
 
         addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
@@ -81,19 +98,19 @@ namespace mhplan
 
     void MemeticPlanner::setPopulationSize(unsigned int n)
     {
-        checkParameterRange("population_size", n, 2, 1000);
+        checkParameter(kPopulationSize, n);
         populationSize_ = n;
     }
 
     void MemeticPlanner::setMaxIterations(unsigned int n)
     {
-        checkParameterRange("max_iterations", n, 0, 1000000);
+        checkParameter(kMaxIterations, n);
         maxIterations_ = n;
     }
 
     void MemeticPlanner::setSeed(unsigned long seed)
     {
-        checkParameterRange("seed", static_cast<double>(seed), 0.0, 4294967295.0);
+        checkParameter(kSeed, static_cast<double>(seed));
         seed_ = seed;
         if (problemReady_)
             clear();
@@ -101,61 +118,61 @@ namespace mhplan
 
     void MemeticPlanner::setWalkNoise(double noise)
     {
-        checkParameterRange("walk_noise", noise, 0.0, 10.0);
+        checkParameter(kWalkNoise, noise);
         walkNoise_ = noise;
     }
 
     void MemeticPlanner::setWalkWeight(double w)
     {
-        checkParameterRange("walk_weight", w, 1.0, 10.0);
+        checkParameter(kWalkWeight, w);
         walkWeight_ = w;
     }
 
     void MemeticPlanner::setWalkExpansions(unsigned int n)
     {
-        checkParameterRange("walk_expansions", n, 1000, 100000000);
+        checkParameter(kWalkExpansions, n);
         walkExpansions_ = n;
     }
 
     void MemeticPlanner::setLatticeLevels(unsigned int n)
     {
-        checkParameterRange("lattice_levels", n, 1, 16);
+        checkParameter(kLatticeLevels, n);
         latticeLevels_ = n;
     }
 
     void MemeticPlanner::setCoarseTurn(double x)
     {
-        checkParameterRange("coarse_turn", x, 0.01, 3.0);
+        checkParameter(kCoarseTurn, x);
         coarseTurn_ = x;
     }
 
     void MemeticPlanner::setFineTurn(double x)
     {
-        checkParameterRange("fine_turn", x, 0.001, 1.0);
+        checkParameter(kFineTurn, x);
         fineTurn_ = x;
     }
 
     void MemeticPlanner::setPolishPasses(unsigned int n)
     {
-        checkParameterRange("polish_passes", n, 1, 100000);
+        checkParameter(kPolishPasses, n);
         polishPasses_ = n;
     }
 
     void MemeticPlanner::setEliteRewalks(unsigned int n)
     {
-        checkParameterRange("elite_rewalks", n, 0, 1000);
+        checkParameter(kEliteRewalks, n);
         eliteRewalks_ = n;
     }
 
     void MemeticPlanner::setStagnation(unsigned int n)
     {
-        checkParameterRange("stagnation", n, 1, 1000000);
+        checkParameter(kStagnation, n);
         stagnation_ = n;
     }
 
     void MemeticPlanner::setBisections(unsigned int n)
     {
-        checkParameterRange("bisections", n, 4, 40);
+        checkParameter(kBisections, n);
         bisections_ = n;
     }
 

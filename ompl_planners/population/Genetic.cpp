@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/Genetic.h"
+#include "mhplan/base/Parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,25 +11,33 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1};
+        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1};
+        constexpr ParamRange kInsertDeleteRate{"insert_delete_rate", 0, 0.01, 0.5};
+        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100};
+        constexpr ParamRange kReplaceFraction{"replace_fraction", 0, 0.05, 1};
+    } // namespace
 
     Genetic::Genetic(const ob::SpaceInformationPtr &si, const std::string &name)
         : PopulationPlanner(si, name, PopulationDefaults{50, 100, 5, PathDecoding::Polyline})
     {
         setFitness("gms");
-        declareParam<double>("crossover_rate", this, &Genetic::setCrossoverRate, &Genetic::getCrossoverRate,
-                             "0.:0.05:1.");
-        declareParam<double>("mutation_rate", this, &Genetic::setMutationRate, &Genetic::getMutationRate,
-                             "0.:0.05:1.");
-        declareParam<double>("insert_delete_rate", this, &Genetic::setInsertDeleteRate,
-                             &Genetic::getInsertDeleteRate, "0.:0.01:0.5");
-        declareParam<unsigned int>("tournament_size", this, &Genetic::setTournamentSize,
-                                   &Genetic::getTournamentSize, "1:1:100");
-        declareParam<double>("replace_fraction", this, &Genetic::setReplaceFraction,
-                             &Genetic::getReplaceFraction, "0.:0.05:1.");
-        declareParam<bool>("node_improvement", this, &Genetic::setNodeImprovement,
-                           &Genetic::getNodeImprovement, "0,1");
-        declareParam<std::string>("initialisation", this, &Genetic::setInitialisation,
-                                  &Genetic::getInitialisation, "nodes,walk");
+        declareRanged<double>(params(), this, kCrossoverRate, &Genetic::setCrossoverRate,
+                              &Genetic::getCrossoverRate);
+        declareRanged<double>(params(), this, kMutationRate, &Genetic::setMutationRate,
+                              &Genetic::getMutationRate);
+        declareRanged<double>(params(), this, kInsertDeleteRate, &Genetic::setInsertDeleteRate,
+                              &Genetic::getInsertDeleteRate);
+        declareRanged<unsigned int>(params(), this, kTournamentSize, &Genetic::setTournamentSize,
+                                    &Genetic::getTournamentSize);
+        declareRanged<double>(params(), this, kReplaceFraction, &Genetic::setReplaceFraction,
+                              &Genetic::getReplaceFraction);
+        declareSwitch(params(), this, "node_improvement", &Genetic::setNodeImprovement,
+                      &Genetic::getNodeImprovement);
+        declareChoice(params(), this, "initialisation", &Genetic::setInitialisation,
+                      &Genetic::getInitialisation, "nodes,walk");
     }
 
     Genetic::~Genetic() = default;
@@ -44,33 +53,31 @@ namespace mhplan
 
     void Genetic::setCrossoverRate(double r)
     {
-        checkParameterRange("crossover_rate", r, 0.0, 1.0);
+        checkParameter(kCrossoverRate, r);
         crossoverRate_ = r;
     }
 
     void Genetic::setMutationRate(double r)
     {
-        checkParameterRange("mutation_rate", r, 0.0, 1.0);
+        checkParameter(kMutationRate, r);
         mutationRate_ = r;
     }
 
     void Genetic::setInsertDeleteRate(double r)
     {
-        checkParameterRange("insert_delete_rate", r, 0.0, 0.5);
+        checkParameter(kInsertDeleteRate, r);
         insertDeleteRate_ = r;
     }
 
     void Genetic::setTournamentSize(unsigned int k)
     {
-        if (k < 1 || k > 100)
-            throw std::invalid_argument("parameter 'tournament_size' must be in [1, 100]; got " +
-                                        std::to_string(k));
+        checkParameter(kTournamentSize, k);
         tournamentSize_ = k;
     }
 
     void Genetic::setReplaceFraction(double f)
     {
-        checkParameterRange("replace_fraction", f, 0.0, 1.0);
+        checkParameter(kReplaceFraction, f);
         replaceFraction_ = f;
     }
 

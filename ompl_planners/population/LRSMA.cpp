@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/LRSMA.h"
+#include "mhplan/base/Parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,59 +12,67 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kLevyBeta{"levy_beta", 0.1, 0.01, 1.99};
+        constexpr ParamRange kLevyStep{"levy_step", 0, 0.001, 1};
+        constexpr ParamRange kStagnationTolerance{"stagnation_tolerance", 0, 0.1, 1000000000};
+        constexpr ParamRange kStagnationLimit{"stagnation_limit", 1, 1, 1000};
+        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1};
+        constexpr ParamRange kTemperature{"temperature", 0.000000001, 1, 1000000000000};
+    } // namespace
 
     LRSMA::LRSMA(const ob::SpaceInformationPtr &si) : LRSMA(si, "LRSMA") {}
 
     LRSMA::LRSMA(const ob::SpaceInformationPtr &si, const std::string &name)
         : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Spline})
     {
-        declareParam<double>("levy_beta", this, &LRSMA::setLevyBeta, &LRSMA::getLevyBeta, "0.1:0.01:1.99");
-        declareParam<double>("levy_step", this, &LRSMA::setLevyStep, &LRSMA::getLevyStep, "0.:0.001:1.");
-        declareParam<double>("stagnation_tolerance", this, &LRSMA::setStagnationTolerance,
-                             &LRSMA::getStagnationTolerance, "0.:0.1:1000000000.");
-        declareParam<unsigned int>("stagnation_limit", this, &LRSMA::setStagnationLimit,
-                                   &LRSMA::getStagnationLimit, "1:1:1000");
-        declareParam<double>("rotation_fraction", this, &LRSMA::setRotationFraction,
-                             &LRSMA::getRotationFraction, "0.:0.05:1.");
-        declareParam<double>("temperature", this, &LRSMA::setTemperature, &LRSMA::getTemperature,
-                             "0.000000001:1.:1000000000000.");
-        declareParam<std::string>("rotation_product", this, &LRSMA::setRotationProduct,
-                                  &LRSMA::getRotationProduct, "elementwise,dot");
+        declareRanged<double>(params(), this, kLevyBeta, &LRSMA::setLevyBeta, &LRSMA::getLevyBeta);
+        declareRanged<double>(params(), this, kLevyStep, &LRSMA::setLevyStep, &LRSMA::getLevyStep);
+        declareRanged<double>(params(), this, kStagnationTolerance, &LRSMA::setStagnationTolerance,
+                              &LRSMA::getStagnationTolerance);
+        declareRanged<unsigned int>(params(), this, kStagnationLimit, &LRSMA::setStagnationLimit,
+                                    &LRSMA::getStagnationLimit);
+        declareRanged<double>(params(), this, kRotationFraction, &LRSMA::setRotationFraction,
+                              &LRSMA::getRotationFraction);
+        declareRanged<double>(params(), this, kTemperature, &LRSMA::setTemperature, &LRSMA::getTemperature);
+        declareChoice(params(), this, "rotation_product", &LRSMA::setRotationProduct,
+                      &LRSMA::getRotationProduct, "elementwise,dot");
     }
 
     void LRSMA::setLevyBeta(double beta)
     {
-        checkParameterRange("levy_beta", beta, 0.1, 1.99);
+        checkParameter(kLevyBeta, beta);
         beta_ = beta;
     }
 
     void LRSMA::setLevyStep(double step)
     {
-        checkParameterRange("levy_step", step, 0.0, 1.0);
+        checkParameter(kLevyStep, step);
         levyStep_ = step;
     }
 
     void LRSMA::setStagnationTolerance(double fmin)
     {
-        checkParameterRange("stagnation_tolerance", fmin, 0.0, 1e9);
+        checkParameter(kStagnationTolerance, fmin);
         fmin_ = fmin;
     }
 
     void LRSMA::setStagnationLimit(unsigned int tmax)
     {
-        checkParameterRange("stagnation_limit", tmax, 1, 1000);
+        checkParameter(kStagnationLimit, tmax);
         tmax_ = tmax;
     }
 
     void LRSMA::setRotationFraction(double pr)
     {
-        checkParameterRange("rotation_fraction", pr, 0.0, 1.0);
+        checkParameter(kRotationFraction, pr);
         pr_ = pr;
     }
 
     void LRSMA::setTemperature(double temp)
     {
-        checkParameterRange("temperature", temp, 1e-9, 1e12);
+        checkParameter(kTemperature, temp);
         temperature_ = temp;
     }
 

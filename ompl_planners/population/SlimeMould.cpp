@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/SlimeMould.h"
+#include "mhplan/base/Parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,11 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    namespace
+    {
+        constexpr ParamRange kZ{"z", 0, 0.01, 1};
+    } // namespace
+
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si)
         : SlimeMould(si, "SMA", PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
     {
@@ -30,12 +36,12 @@ namespace mhplan
 
     void SlimeMould::declareSlimeMouldParams()
     {
-        declareParam<double>("z", this, &SlimeMould::setZ, &SlimeMould::getZ, "0.:0.01:1.");
+        declareRanged<double>(params(), this, kZ, &SlimeMould::setZ, &SlimeMould::getZ);
     }
 
     void SlimeMould::setZ(double z)
     {
-        checkParameterRange("z", z, 0.0, 1.0);
+        checkParameter(kZ, z);
         z_ = z;
     }
 

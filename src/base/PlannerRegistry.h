@@ -23,6 +23,15 @@ namespace mhplan
         std::string origin;
         std::string description;
         PlannerAllocator allocate;
+        /** \brief The family the tests classify the planner by: "population" (a PopulationPlanner: fixed
+            waypoint encoding), "memetic" (variable-length feasible paths), "lattice" (grid searches),
+            "walk" (robot walks on a potential field); empty for OMPL's planners. */
+        std::string family{};
+        /** \brief True for an improved variant (not in the paper); false for a faithful planner. */
+        bool improved{false};
+        /** \brief True when the planner solves problems in any R^k (k >= 1); false when it is planar only
+            (it refuses other spaces at setup()). */
+        bool anyDimension{false};
     };
 
     /** \brief The allocator of planner type \e P constructed as P(si). */

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* PopulationPlanner: the switchable [GMS] operator step after each iteration (see the class doc): the path
+   operators on the operated individuals with greedy re-insertion, the replacement of the worst, and the
+   re-encoding of an operated polyline into m waypoints. */
+#include "mhplan/planners/common/PopulationPlanner.h"
+
+#include "mhplan/planners/common/Operators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace mhplan
+{
+    bool PopulationPlanner::applyGmsOperators()
+    {
+        double *x = nullptr, *f = nullptr;
+        if (spaceDim_ != 2 || !populationView(x, f))
+            return true; // setup() refuses this; never reached with the switches on
+        const unsigned int n = populationSize_, d = dimension();
+        const bool pathOps = gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_;
+        if (!gmsOps_)
+        {
+            const Box box{lower_[0], upper_[0], lower_[1], upper_[1]};
+            gmsOps_ = std::make_unique<PathOperators>(*fitness_, rng_, box,
+                                                      0.01 * std::max(box.width(), box.height()));
+            const std::size_t points = std::max<std::size_t>(
+                2 * (waypoints_ + 2), (decoding_ == PathDecoding::Spline ? splineSamples_ : 0) + 2);
+            gmsPath_.reserve(2 * points + 64);
+            gmsCandidate_.assign(d, 0.0);
+            gmsOrder_.resize(n);
+        }
+        unsigned int best = 0;
+        for (unsigned int i = 1; i < n; ++i)
+            if (f[i] < f[best])
+                best = i;
+        bool completed = true;
+        if (pathOps)
+            for (unsigned int i = 0; i < n && completed; ++i)
+                if (gmsScopeAll_ || i == best)
+                    completed = operateOn(x + std::size_t(i) * d, f[i]);
+        if (completed && gmsReplaceFraction_ > 0.0)
+        {
+            // Rank again (the operators may have changed fitness values), worst first.
+            for (unsigned int i = 1; i < n; ++i)
+                if (f[i] < f[best])
+                    best = i;
+            for (unsigned int i = 0; i < n; ++i)
+                gmsOrder_[i] = i;
+            // std::sort with an index tie-break: deterministic, and unlike std::stable_sort it allocates no
+            // temporary buffer.
+            std::sort(gmsOrder_.begin(), gmsOrder_.end(),
+                      [f](unsigned int a, unsigned int b) { return f[a] > f[b] || (f[a] == f[b] && a < b); });
+            const auto count = std::min<unsigned int>(
+                n - 1, static_cast<unsigned int>(std::ceil(gmsReplaceFraction_ * n - 1e-9)));
+            for (unsigned int k = 0, done = 0; k < n && done < count; ++k)
+            {
+                const unsigned int i = gmsOrder_[k];
+                if (i == best)
+                    continue;
+                if (stopRequested())
+                {
+                    completed = false;
+                    break;
+                }
+                double *xi = x + std::size_t(i) * d;
+                randomPosition(xi);
+                if (gmsRepair_)
+                    for (unsigned int w = 0; w < waypoints_; ++w)
+                    {
+                        Vec2 p(xi[2 * w], xi[2 * w + 1]);
+                        gmsOps_->repairNode(p);
+                        xi[2 * w] = p.x;
+                        xi[2 * w + 1] = p.y;
+                    }
+                clampToBounds(xi);
+                f[i] = evaluate(xi);
+                ++done;
+            }
+        }
+        populationChanged();
+        return completed;
+    }
+
+    bool PopulationPlanner::operateOn(double *x, double &fx)
+    {
+        decoder_.decode(x);
+        const PointsView path = decoder_.pathView();
+        gmsPath_.clear();
+        for (std::size_t i = 0; i < path.size(); ++i)
+            gmsPath_.emplace_back(path[i][0], path[i][1]);
+        if (gmsRepair_)
+        {
+            gmsOps_->repairNodes(gmsPath_);
+            gmsOps_->repairSegments(gmsPath_);
+        }
+        if (gmsRevise_)
+            gmsOps_->revise(gmsPath_);
+        if (gmsSimplify_)
+            gmsOps_->simplify(gmsPath_);
+        if (gmsImprove_)
+            gmsOps_->improveNodes(gmsPath_);
+        encodePath();
+        clampToBounds(gmsCandidate_.data());
+        if (stopRequested())
+            return false;
+        const double fc = evaluate(gmsCandidate_.data());
+        if (fc < fx)
+        {
+            std::copy(gmsCandidate_.begin(), gmsCandidate_.end(), x);
+            fx = fc;
+        }
+        return true;
+    }
+
+    void PopulationPlanner::encodePath()
+    {
+        const std::size_t m = waypoints_;
+        std::vector<Vec2> &p = gmsPath_;
+        if (p.size() < 2)
+            return;
+        if (p.size() - 2 <= m)
+        {
+            // Keep the interior points; halve the longest segment until there are m of them.
+            while (p.size() - 2 < m)
+            {
+                std::size_t longest = 1;
+                double len = -1.0;
+                for (std::size_t i = 1; i < p.size(); ++i)
+                {
+                    const double l = distance(p[i - 1], p[i]);
+                    if (l > len)
+                    {
+                        len = l;
+                        longest = i;
+                    }
+                }
+                const Vec2 mid = (p[longest - 1] + p[longest]) * 0.5;
+                p.insert(p.begin() + static_cast<std::ptrdiff_t>(longest), mid);
+            }
+            for (std::size_t w = 0; w < m; ++w)
+            {
+                gmsCandidate_[2 * w] = p[w + 1].x;
+                gmsCandidate_[2 * w + 1] = p[w + 1].y;
+            }
+            return;
+        }
+        // More interior points than waypoints: m points at equal arc length.
+        double total = 0.0;
+        for (std::size_t i = 1; i < p.size(); ++i)
+            total += distance(p[i - 1], p[i]);
+        std::size_t seg = 1;
+        double before = 0.0; // arc length at p[seg - 1]
+        for (std::size_t w = 0; w < m; ++w)
+        {
+            const double s = total * double(w + 1) / double(m + 1);
+            while (seg + 1 < p.size() && before + distance(p[seg - 1], p[seg]) < s)
+            {
+                before += distance(p[seg - 1], p[seg]);
+                ++seg;
+            }
+            const double l = distance(p[seg - 1], p[seg]);
+            const double u = l > 0.0 ? std::min(1.0, std::max(0.0, (s - before) / l)) : 0.0;
+            const Vec2 q = p[seg - 1] + (p[seg] - p[seg - 1]) * u;
+            gmsCandidate_[2 * w] = q.x;
+            gmsCandidate_[2 * w + 1] = q.y;
+        }
+    }
+
+} // namespace mhplan

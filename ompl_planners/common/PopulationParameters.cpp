@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* PopulationPlanner: its parameters (each range written once, in kRanges below) and their setters. */
+#include "mhplan/planners/common/PopulationPlanner.h"
+
+#include "mhplan/base/Parameters.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 10000};
+        constexpr ParamRange kIterations{"iterations", 1, 1, 1000000};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000};
+        constexpr ParamRange kWaypoints{"waypoints", 1, 1, 100};
+        constexpr ParamRange kSplineSamples{"spline_samples", 2, 1, 100000};
+        constexpr ParamRange kLengthWeight{"length_weight", 0, 1, 1000000};
+        constexpr ParamRange kPenaltyWeight{"penalty_weight", 0, 1, 1000000000};
+        constexpr ParamRange kDistanceWeight{"distance_weight", 0, 0.1, 1000000};
+        constexpr ParamRange kSafetyWeight{"safety_weight", 0, 0.1, 1000000};
+        constexpr ParamRange kSmoothnessWeight{"smoothness_weight", 0, 0.1, 1000000};
+        constexpr ParamRange kSafeDistance{"safe_distance", 0.000001, 0.1, 1000000};
+        constexpr ParamRange kInfeasibleLengthWeight{"infeasible_length_weight", 0, 0.1, 1000000};
+        constexpr ParamRange kCrossingWeight{"crossing_weight", 0, 0.1, 1000000};
+        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295};
+        constexpr ParamRange kStagnationRestart{"stagnation_restart", 0, 1, 1000000};
+        constexpr ParamRange kGmsReplaceFraction{"gms_replace_fraction", 0, 0.05, 1};
+    } // namespace
+
+    void PopulationPlanner::declareParameters()
+    {
+        declareRanged<unsigned int>(params(), this, kPopulationSize, &PopulationPlanner::setPopulationSize,
+                                    &PopulationPlanner::getPopulationSize);
+        declareRanged<unsigned int>(params(), this, kIterations, &PopulationPlanner::setIterations,
+                                    &PopulationPlanner::getIterations);
+        declareRanged<unsigned int>(params(), this, kMaxIterations, &PopulationPlanner::setMaxIterations,
+                                    &PopulationPlanner::getMaxIterations);
+        declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
+                                    &PopulationPlanner::getWaypoints);
+        declareChoice(params(), this, "decoding", &PopulationPlanner::setDecoding,
+                      &PopulationPlanner::getDecoding, "polyline,spline");
+        declareRanged<unsigned int>(params(), this, kSplineSamples, &PopulationPlanner::setSplineSamples,
+                                    &PopulationPlanner::getSplineSamples);
+        declareChoice(params(), this, "fitness", &PopulationPlanner::setFitness,
+                      &PopulationPlanner::getFitness, "auto,lrsma,gms");
+        declareRanged<double>(params(), this, kLengthWeight, &PopulationPlanner::setLengthWeight,
+                              &PopulationPlanner::getLengthWeight);
+        declareRanged<double>(params(), this, kPenaltyWeight, &PopulationPlanner::setPenaltyWeight,
+                              &PopulationPlanner::getPenaltyWeight);
+        declareRanged<double>(params(), this, kDistanceWeight, &PopulationPlanner::setDistanceWeight,
+                              &PopulationPlanner::getDistanceWeight);
+        declareRanged<double>(params(), this, kSafetyWeight, &PopulationPlanner::setSafetyWeight,
+                              &PopulationPlanner::getSafetyWeight);
+        declareRanged<double>(params(), this, kSmoothnessWeight, &PopulationPlanner::setSmoothnessWeight,
+                              &PopulationPlanner::getSmoothnessWeight);
+        declareRanged<double>(params(), this, kSafeDistance, &PopulationPlanner::setSafeDistance,
+                              &PopulationPlanner::getSafeDistance);
+        declareRanged<double>(params(), this, kInfeasibleLengthWeight,
+                              &PopulationPlanner::setInfeasibleLengthWeight,
+                              &PopulationPlanner::getInfeasibleLengthWeight);
+        declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
+                              &PopulationPlanner::getCrossingWeight);
+        declareRanged<unsigned long>(params(), this, kSeed, &PopulationPlanner::setSeed,
+                                     &PopulationPlanner::getSeed);
+        declareRanged<unsigned int>(params(), this, kStagnationRestart,
+                                    &PopulationPlanner::setStagnationRestart,
+                                    &PopulationPlanner::getStagnationRestart);
+        declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
+                      &PopulationPlanner::getGmsRepair);
+        declareSwitch(params(), this, "gms_revise", &PopulationPlanner::setGmsRevise,
+                      &PopulationPlanner::getGmsRevise);
+        declareSwitch(params(), this, "gms_simplify", &PopulationPlanner::setGmsSimplify,
+                      &PopulationPlanner::getGmsSimplify);
+        declareSwitch(params(), this, "gms_improve", &PopulationPlanner::setGmsImprove,
+                      &PopulationPlanner::getGmsImprove);
+        declareChoice(params(), this, "gms_scope", &PopulationPlanner::setGmsScope,
+                      &PopulationPlanner::getGmsScope, "best,all");
+        declareRanged<double>(params(), this, kGmsReplaceFraction, &PopulationPlanner::setGmsReplaceFraction,
+                              &PopulationPlanner::getGmsReplaceFraction);
+    }
+
+    void PopulationPlanner::setPopulationSize(unsigned int n)
+    {
+        checkParameter(kPopulationSize, n);
+        if (n != populationSize_)
+            invalidate();
+        populationSize_ = n;
+    }
+
+    void PopulationPlanner::setIterations(unsigned int t)
+    {
+        checkParameter(kIterations, t);
+        iterations_ = t;
+    }
+
+    void PopulationPlanner::setMaxIterations(unsigned int n)
+    {
+        checkParameter(kMaxIterations, n);
+        maxIterations_ = n;
+    }
+
+    void PopulationPlanner::setWaypoints(unsigned int m)
+    {
+        checkParameter(kWaypoints, m);
+        if (m != waypoints_)
+            invalidate();
+        waypoints_ = m;
+    }
+
+    void PopulationPlanner::setDecoding(const std::string &decoding)
+    {
+        const PathDecoding d = parsePathDecoding(decoding);
+        if (d != decoding_)
+            invalidate();
+        decoding_ = d;
+    }
+
+    void PopulationPlanner::setSplineSamples(unsigned int n)
+    {
+        checkParameter(kSplineSamples, n);
+        if (n != splineSamples_)
+            invalidate();
+        splineSamples_ = n;
+    }
+
+    void PopulationPlanner::setFitness(const std::string &fitness)
+    {
+        if (fitness != "auto")
+            parseFitnessKind(fitness); // validates
+        if (fitness != fitnessName_)
+            invalidate();
+        fitnessName_ = fitness;
+    }
+
+    void PopulationPlanner::setLengthWeight(double w)
+    {
+        checkParameter(kLengthWeight, w);
+        weights_.lengthWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setPenaltyWeight(double w)
+    {
+        checkParameter(kPenaltyWeight, w);
+        weights_.penaltyWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setDistanceWeight(double w)
+    {
+        checkParameter(kDistanceWeight, w);
+        weights_.distanceWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSafetyWeight(double w)
+    {
+        checkParameter(kSafetyWeight, w);
+        weights_.safetyWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSmoothnessWeight(double w)
+    {
+        checkParameter(kSmoothnessWeight, w);
+        weights_.smoothnessWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSafeDistance(double d)
+    {
+        checkParameter(kSafeDistance, d);
+        weights_.safeDistance = d;
+        invalidate();
+    }
+
+    void PopulationPlanner::setInfeasibleLengthWeight(double w)
+    {
+        checkParameter(kInfeasibleLengthWeight, w);
+        weights_.infeasibleLengthWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setCrossingWeight(double w)
+    {
+        checkParameter(kCrossingWeight, w);
+        weights_.crossingWeight = w;
+        invalidate();
+    }
+
+    void PopulationPlanner::setSeed(unsigned long seed)
+    {
+        checkParameter(kSeed, static_cast<double>(seed));
+        seed_ = seed;
+        invalidate();
+    }
+
+    void PopulationPlanner::setStagnationRestart(unsigned int n)
+    {
+        checkParameter(kStagnationRestart, n);
+        stagnationRestart_ = n;
+    }
+
+    void PopulationPlanner::setGmsRepair(bool on)
+    {
+        gmsRepair_ = on;
+        setup_ = false; // setup() checks the switches against the problem
+    }
+
+    void PopulationPlanner::setGmsRevise(bool on)
+    {
+        gmsRevise_ = on;
+        setup_ = false;
+    }
+
+    void PopulationPlanner::setGmsSimplify(bool on)
+    {
+        gmsSimplify_ = on;
+        setup_ = false;
+    }
+
+    void PopulationPlanner::setGmsImprove(bool on)
+    {
+        gmsImprove_ = on;
+        setup_ = false;
+    }
+
+    void PopulationPlanner::setGmsScope(const std::string &scope)
+    {
+        if (scope != "best" && scope != "all")
+            throw std::invalid_argument("parameter 'gms_scope' must be 'best' or 'all'; got '" + scope + "'");
+        gmsScopeAll_ = scope == "all";
+    }
+
+    void PopulationPlanner::setGmsReplaceFraction(double f)
+    {
+        checkParameter(kGmsReplaceFraction, f);
+        gmsReplaceFraction_ = f;
+        setup_ = false;
+    }
+
+    void PopulationPlanner::checkGmsSwitches()
+    {
+        if (!gmsOperatorsEnabled())
+            return;
+        std::string on;
+        for (const auto &s :
+             {std::make_pair("gms_repair", gmsRepair_), std::make_pair("gms_revise", gmsRevise_),
+              std::make_pair("gms_simplify", gmsSimplify_), std::make_pair("gms_improve", gmsImprove_),
+              std::make_pair("gms_replace_fraction", gmsReplaceFraction_ > 0.0)})
+            if (s.second)
+                on += (on.empty() ? "'" : ", '") + std::string(s.first) + "'";
+        if (!supportsGmsOperators())
+            refuseSetup(
+                "the [GMS] operator switches (" + on +
+                ") need an algorithm that exposes a waypoint population (SMA, LRSMA, MGO); this one does "
+                "not: switch them off");
+        if (spaceDim_ != 2)
+            refuseSetup(
+                "the [GMS] operator switches (" + on +
+                ") are planar (node/segment repair, simplification, improvement work on 2D points); the "
+                "space has dimension " +
+                std::to_string(spaceDim_) + ": switch them off");
+    }
+
+} // namespace mhplan

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the one parameter convention of mhplan's planners. A numeric parameter's range is written once, as
+   a ParamRange, and used both by the OMPL declaration (its range suggestion) and by the setter's check;
+   switches are bool ("0,1"; the registry also accepts true/false); choices are words ("a,b,c"). */
+#ifndef MHPLAN_BASE_PARAMETERS_H
+#define MHPLAN_BASE_PARAMETERS_H
+
+#include <ompl/base/GenericParam.h>
+
+#include <string>
+#include <type_traits>
+
+namespace mhplan
+{
+    /** \brief A numeric parameter: its name and its accepted closed interval [lo, hi], with the step OMPL's
+        range suggestion advertises ("lo:step:hi"). */
+    struct ParamRange
+    {
+        const char *name;
+        double lo;
+        double step;
+        double hi;
+    };
+
+    /** \brief The OMPL range suggestion "lo:step:hi" of \e range. */
+    std::string rangeSuggestion(const ParamRange &range);
+
+    /** \brief Throws std::invalid_argument "parameter 'name' must be in [lo, hi]; got value" unless
+        lo <= value <= hi. */
+    void checkParameterRange(const char *param, double value, double lo, double hi);
+
+    /** \brief The setter's check of a ParamRange (checkParameterRange with its name and bounds). */
+    inline void checkParameter(const ParamRange &range, double value)
+    {
+        checkParameterRange(range.name, value, range.lo, range.hi);
+    }
+
+    /** \brief A decimal string that reads back as exactly \e value (15 significant digits, 17 when needed) (OMPL prints double parameters
+        with six significant digits, which does not round-trip). */
+    std::string formatParameter(double value);
+
+    /** \brief \e text as a number for \e range; throws std::invalid_argument naming the parameter and its
+        range when \e text is not a number (the range itself is the setter's check). */
+    double parseParameter(const ParamRange &range, const std::string &text);
+
+    /** \brief Declare the numeric parameter \e range on \e params, of type \e T, with the member setter and
+        getter of \e owner (the setter checks the value with checkParameter(range, value)). A floating-point
+        parameter is read and printed exactly (parseParameter, formatParameter), so that setParam followed by
+        getParam gives the same string. */
+    template <typename T, typename Owner, typename Setter, typename Getter>
+    void declareRanged(ompl::base::ParamSet &params, Owner *owner, const ParamRange &range, Setter setter,
+                       Getter getter)
+    {
+        if constexpr (std::is_floating_point_v<T>)
+            params.declareParam<std::string>(
+                range.name,
+                [owner, setter, range](const std::string &text)
+                { (owner->*setter)(static_cast<T>(parseParameter(range, text))); },
+                [owner, getter] { return formatParameter(static_cast<double>((owner->*getter)())); });
+        else
+            params.declareParam<T>(
+                range.name, [owner, setter](T v) { (owner->*setter)(v); },
+                [owner, getter] { return (owner->*getter)(); });
+        params[range.name].setRangeSuggestion(rangeSuggestion(range));
+    }
+
+    /** \brief Declare the bool switch \e name ("0,1") on \e params with the member setter and getter of
+        \e owner. */
+    template <typename Owner, typename Setter, typename Getter>
+    void declareSwitch(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
+                       Getter getter)
+    {
+        params.declareParam<bool>(
+            name, [owner, setter](bool v) { (owner->*setter)(v); },
+            [owner, getter] { return (owner->*getter)(); });
+        params[name].setRangeSuggestion("0,1");
+    }
+
+    /** \brief Declare the word-valued parameter \e name with the accepted words \e choices ("a,b,c"); the
+        setter refuses any other word. */
+    template <typename Owner, typename Setter, typename Getter>
+    void declareChoice(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
+                       Getter getter, const std::string &choices)
+    {
+        params.declareParam<std::string>(
+            name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
+            [owner, getter] { return (owner->*getter)(); });
+        params[name].setRangeSuggestion(choices);
+    }
+} // namespace mhplan
+
+#endif
