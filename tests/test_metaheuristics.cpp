@@ -12,6 +12,8 @@
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
 
+#include "RegistrySupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -200,7 +202,8 @@ TEST_P(MetaheuristicPlanner, SameSeedSameTrace)
     EXPECT_NE(a.trace, c.trace);
 }
 
-INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::Values("SMA", "LRSMA", "MGO", "GA"));
+// Every faithful population planner the registry knows.
+INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::ValuesIn(test::faithful("population")));
 
 // ---------------------------------------------------------------------------------------------------------
 // Quality on every shipped seed world with the papers' settings, 20 fixed seeds.
@@ -336,4 +339,16 @@ TEST_P(MetaheuristicQuality, PapersSettingsOnEverySeedWorld)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicQuality, ::testing::Values("SMA", "LRSMA", "MGO", "GA"));
+// Every faithful population planner the registry knows; one without an expectation table fails (at()).
+INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicQuality, ::testing::ValuesIn(test::faithful("population")));
+
+TEST(MetaheuristicQuality, EveryExpectationNamesARegisteredFaithfulPopulationPlanner)
+{
+    // A misspelt or removed name in the table fails here instead of being skipped.
+    for (const auto &kv : expectations())
+    {
+        ASSERT_TRUE(PlannerRegistry::builtin().has(kv.first)) << kv.first;
+        EXPECT_EQ(PlannerRegistry::builtin().get(kv.first).family, "population") << kv.first;
+        EXPECT_FALSE(PlannerRegistry::builtin().get(kv.first).improved) << kv.first;
+    }
+}

@@ -24,6 +24,8 @@
 
 #include "AllocationCounter.h"
 
+#include "RegistrySupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -192,7 +194,8 @@ TEST_P(NdPlanner, FindsAValidPathAroundTheHypersphere)
 }
 
 INSTANTIATE_TEST_SUITE_P(Planners, NdPlanner,
-                         ::testing::Combine(::testing::Values("SMA", "LRSMA", "MGO"),
+                         ::testing::Combine(::testing::ValuesIn(test::mhplanPlanners(
+                                                [](const PlannerEntry &e) { return e.anyDimension; }, "N-D")),
                                             ::testing::Values(3u, 6u), ::testing::Bool()),
                          [](const auto &info)
                          {
@@ -365,7 +368,8 @@ TEST_P(NdRefusal, SE2StateSpaceIsRefusedAtSetup)
     EXPECT_FALSE(ss->getProblemDefinition()->hasSolution());
 }
 
-INSTANTIATE_TEST_SUITE_P(Planners, NdRefusal, ::testing::Values("SMA", "LRSMA", "MGO", "GA"));
+// Every population planner (any dimension or planar) refuses a space that is not a RealVectorStateSpace.
+INSTANTIATE_TEST_SUITE_P(Planners, NdRefusal, ::testing::ValuesIn(test::ofFamily("population")));
 
 TEST(NdRefusal, GeneticAlgorithmIsPlanarOnly)
 {
@@ -379,19 +383,38 @@ TEST(NdRefusal, GeneticAlgorithmIsPlanarOnly)
     EXPECT_FALSE(p->isSetup());
 }
 
-TEST(NdRefusal, MemeticVariantsArePlanarOnly)
+TEST(NdRefusal, EveryPlanarPopulationOrMemeticPlannerRefusesR3ByName)
 {
-    // The memetic variants' walks, pull moves and crossover joints are planar: R^3 is refused at setup.
-    for (const char *name : {"GA-MEM", "SMA-MEM", "LRSMA-MEM", "MGO-MEM"})
+    // What the registry's anyDimension = false promises: R^3 is refused at setup, naming the planner and
+    // the dimension.
+    const std::vector<std::string> planar = test::mhplanPlanners(
+        [](const PlannerEntry &e)
+        { return !e.anyDimension && (e.family == "population" || e.family == "memetic"); },
+        "planar");
+    for (const std::string &name : planar)
     {
         ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
         og::SimpleSetupPtr ss = sphereProblem(3, true);
         ob::PlannerPtr p = makePlanner(ss, name, 1, 1);
         const std::string msg = thrownMessage([&] { ss->setup(); });
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-        EXPECT_EQ(
-            msg.rfind(std::string(name) + ": needs a 2-dimensional ompl::base::RealVectorStateSpace", 0), 0u)
-            << msg;
+        EXPECT_EQ(msg.rfind(name + ": ", 0), 0u) << msg;
+        EXPECT_NE(msg.find("dimension 3"), std::string::npos) << msg;
+        EXPECT_FALSE(p->isSetup()) << name;
+    }
+}
+
+TEST(NdRefusal, MemeticVariantsArePlanarOnly)
+{
+    // The memetic variants' walks, pull moves and crossover joints are planar: R^3 is refused at setup.
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        og::SimpleSetupPtr ss = sphereProblem(3, true);
+        ob::PlannerPtr p = makePlanner(ss, name, 1, 1);
+        const std::string msg = thrownMessage([&] { ss->setup(); });
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        EXPECT_EQ(msg.rfind(name + ": needs a 2-dimensional ompl::base::RealVectorStateSpace", 0), 0u) << msg;
         EXPECT_NE(msg.find("of dimension 3"), std::string::npos) << msg;
         EXPECT_FALSE(p->isSetup());
     }

@@ -23,6 +23,8 @@
 
 #include "AllocationCounter.h"
 
+#include "RegistrySupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -105,7 +107,7 @@ namespace
 TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-    for (const std::string name : {"SMA", "LRSMA", "MGO", "GA"})
+    for (const std::string &name : test::faithful("population"))
     {
         const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
         auto *pp = dynamic_cast<PopulationPlanner *>(p.get());
@@ -152,7 +154,7 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
 TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
 {
     std::map<std::string, std::string> names;
-    for (const std::string name : {"SMA", "LRSMA", "MGO", "SMA-GMS", "LRSMA-GMS", "MGO-GMS"})
+    for (const std::string &name : test::ofFamily("population"))
     {
         const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
         EXPECT_EQ(p->getName(), name);

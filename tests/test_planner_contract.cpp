@@ -9,6 +9,7 @@
 #include "mhplan/registry/Registry.h"
 #include "mhplan/collision/Validity.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/planners/common/PopulationPlanner.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -16,11 +17,15 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
+#include "RegistrySupport.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 using namespace mhplan;
@@ -29,10 +34,86 @@ namespace og = ompl::geometric;
 
 namespace
 {
+    /** \brief A planner defined here, outside the library, the way a user adds one: derive from
+        PopulationPlanner and write the three hooks. Its first individual is the straight line from start to
+        goal, the others and every later iteration are uniform random restarts. It proves that the contract
+        below runs on any registered planner: it is registered in contractRegistry() and nowhere else. */
+    class StraightLineRestarts : public PopulationPlanner
+    {
+      public:
+        explicit StraightLineRestarts(const ob::SpaceInformationPtr &si)
+            : PopulationPlanner(si, "StraightLineRestarts",
+                                PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
+        {
+        }
+
+      protected:
+        bool initialisePopulation() override
+        {
+            x_.resize(dimension());
+            const unsigned int k = spaceDimension(), m = dimension() / k;
+            for (unsigned int i = 0; i < getPopulationSize(); ++i)
+            {
+                if (stopRequested())
+                    return false;
+                if (i == 0)
+                    for (unsigned int w = 0; w < m; ++w)
+                        for (unsigned int j = 0; j < k; ++j)
+                            x_[w * k + j] =
+                                startCoordinates()[j] + (goalCoordinates()[j] - startCoordinates()[j]) *
+                                                            double(w + 1) / double(m + 1);
+                else
+                    randomPosition(x_.data());
+                evaluate(x_.data());
+            }
+            return true;
+        }
+        bool iterate(unsigned int) override
+        {
+            for (unsigned int i = 0; i < getPopulationSize(); ++i)
+            {
+                if (stopRequested())
+                    return false;
+                randomPosition(x_.data());
+                evaluate(x_.data());
+            }
+            return true;
+        }
+        void clearPopulation() override { x_.clear(); }
+
+      private:
+        std::vector<double> x_;
+    };
+
+    /** \brief The registry the contract runs on: every built-in mhplan planner, plus the planner above
+        (one registration line, as in ompl_planners/Registration.cpp). */
+    const PlannerRegistry &contractRegistry()
+    {
+        static const PlannerRegistry registry = []
+        {
+            PlannerRegistry r;
+            const PlannerRegistry &builtin = PlannerRegistry::builtin();
+            for (const std::string &name : builtin.names())
+                if (builtin.get(name).origin == "mhplan")
+                    r.add(builtin.get(name));
+            r.add({"StraightLineRestarts", "mhplan", "test planner: straight line, then random restarts",
+                   allocatorFor<StraightLineRestarts>(), "population", false, true});
+            return r;
+        }();
+        return registry;
+    }
+
+    /** \brief Every planner of the contract registry. */
+    std::vector<std::string> contractPlanners()
+    {
+        return contractRegistry().names();
+    }
+
+    /** \brief Every planner of ompl_planners/ the built-in registry knows (origin "mhplan"): population
+        planners with their improved variants, the memetic variants, lattice searches and potential-field
+        walks. */
     std::vector<std::string> mhplanPlanners()
     {
-        // Every planner of ompl_planners/ the registry knows (origin "mhplan"): population planners with
-        // their improved variants, the memetic variants, lattice searches and potential-field walks.
         std::vector<std::string> out;
         const PlannerRegistry &registry = PlannerRegistry::builtin();
         for (const std::string &name : registry.names())
@@ -61,7 +142,7 @@ namespace
         iterations are node expansions, and a search needs many of them to reach the goal. */
     bool isLatticeSearch(const std::string &planner)
     {
-        return planner == "AStar" || planner == "ThetaStar";
+        return test::familyOf(planner) == "lattice";
     }
 
     /** \brief Robot walks on the potential field (APF, BFO and ATBFO in their default online mode): not
@@ -72,7 +153,7 @@ namespace
         need a validity checker that computes clearance (the field's obstacle distance). */
     bool isWalk(const std::string &planner)
     {
-        return planner == "APF" || planner == "BFO" || planner == "ATBFO";
+        return test::familyOf(planner) == "walk";
     }
 
     /** \brief Fitness evaluations, or node expansions for a planner without a fitness. */
@@ -96,14 +177,14 @@ class PlannerContract : public ::testing::TestWithParam<std::string>
   protected:
     static ob::PlannerPtr makePlanner(const std::string &name)
     {
-        return PlannerRegistry::builtin().get(name).allocate(seedProblem()->getSpaceInformation());
+        return contractRegistry().get(name).allocate(seedProblem()->getSpaceInformation());
     }
 
     void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_WARN); }
 
     ob::PlannerPtr make(const og::SimpleSetupPtr &ss, std::map<std::string, std::string> params = {})
     {
-        ob::PlannerPtr p = PlannerRegistry::builtin().get(GetParam()).allocate(ss->getSpaceInformation());
+        ob::PlannerPtr p = contractRegistry().get(GetParam()).allocate(ss->getSpaceInformation());
         if (p->params().hasParam("seed"))
             params.emplace("seed", "11");
         applyPlannerParameters(*p, params);
@@ -281,7 +362,7 @@ TEST_P(PlannerContract, InvalidParametersAreRefusedByName)
     // Through the registry the same refusal becomes an InputError naming planner and parameter.
     try
     {
-        PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(), {{"population_size", "1"}});
+        contractRegistry().create(GetParam(), ss->getSpaceInformation(), {{"population_size", "1"}});
         ADD_FAILURE() << "population_size = 1 accepted";
     }
     catch (const InputError &e)
@@ -521,4 +602,31 @@ TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
     EXPECT_GT(path.length(), std::hypot(8.0, 8.0));
 }
 
-INSTANTIATE_TEST_SUITE_P(Planners, PlannerContract, ::testing::ValuesIn(mhplanPlanners()));
+// Every registered mhplan planner, and the test's own planner.
+INSTANTIATE_TEST_SUITE_P(Planners, PlannerContract, ::testing::ValuesIn(contractPlanners()));
+
+TEST(PlannerContractRegistry, HoldsEveryBuiltinMhplanPlannerAndTheTestsOwn)
+{
+    std::vector<std::string> expected = mhplanPlanners();
+    expected.push_back("StraightLineRestarts");
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(contractPlanners(), expected);
+    EXPECT_FALSE(PlannerRegistry::builtin().has("StraightLineRestarts"));
+}
+
+TEST(PlannerRegistryTags, EveryMhplanPlannerHasAKnownFamily)
+{
+    // The tests classify a planner by its family (population, memetic, lattice, walk): a planner without
+    // one, or with a misspelt one, would silently miss the checks of its kind.
+    const std::set<std::string> families{"population", "memetic", "lattice", "walk"};
+    std::set<std::string> seen;
+    for (const std::string &name : mhplanPlanners())
+    {
+        const PlannerEntry &e = PlannerRegistry::builtin().get(name);
+        EXPECT_EQ(families.count(e.family), 1u) << name << " has family '" << e.family << "'";
+        seen.insert(e.family);
+        // An improved variant says so in its description; a faithful planner does not.
+        EXPECT_EQ(e.description.find("improved") != std::string::npos, e.improved) << name;
+    }
+    EXPECT_EQ(seen, families);
+}
