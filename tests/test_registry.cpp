@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
    and every registered planner solves a seed world through the shared exact validity checking. */
+#include "mhplan/base/Parameters.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/io/WorldIO.h"
@@ -11,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <limits>
 
 using namespace mhplan;
@@ -124,6 +127,30 @@ TEST(Registry, RangeChecks)
 
 // Every registered planner, run on a seed world through the shared validity checker and exact motion
 // validator, returns a path that an independent exact check finds collision-free, or no exact solution.
+TEST(Parameters, RangeWrittenOnceAndNumbersPrintedExactly)
+{
+    constexpr ParamRange weight{"penalty_weight", 0, 1, 1e9};
+    EXPECT_EQ(rangeSuggestion(weight), "0:1:1000000000");
+    EXPECT_NO_THROW(checkParameter(weight, 1e9));
+    try
+    {
+        checkParameter(weight, -1);
+        ADD_FAILURE() << "-1 accepted";
+    }
+    catch (const std::invalid_argument &e)
+    {
+        EXPECT_EQ(std::string(e.what()), "parameter 'penalty_weight' must be in [0, 1000000000]; got -1");
+    }
+    // OMPL's own printing of a double parameter keeps six digits (1234567 -> 1.23457e+06); ours reads back.
+    for (const double v : {1234567.0, 0.1, 1.0 / 3.0, 1e-9, 4294967295.0, 0.0})
+        EXPECT_EQ(std::strtod(formatParameter(v).c_str(), nullptr), v) << formatParameter(v);
+    EXPECT_EQ(formatParameter(1234567.0), "1234567");
+    EXPECT_EQ(formatParameter(0.1), "0.1");
+    EXPECT_EQ(parseParameter(weight, "2.5"), 2.5);
+    EXPECT_THROW(parseParameter(weight, "2.5x"), std::invalid_argument);
+    EXPECT_THROW(parseParameter(weight, ""), std::invalid_argument);
+}
+
 TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);

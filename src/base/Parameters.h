@@ -35,8 +35,8 @@ namespace mhplan
         checkParameterRange(range.name, value, range.lo, range.hi);
     }
 
-    /** \brief A decimal string that reads back as exactly \e value (15 significant digits, 17 when needed) (OMPL prints double parameters
-        with six significant digits, which does not round-trip). */
+    /** \brief A decimal string that reads back as exactly \e value (15 significant digits, 17 when needed)
+       (OMPL prints double parameters with six significant digits, which does not round-trip). */
     std::string formatParameter(double value);
 
     /** \brief \e text as a number for \e range; throws std::invalid_argument naming the parameter and its
