@@ -401,7 +401,7 @@ namespace mhplan
 
     BfoController::BfoController(bool adaptiveTumble) : adaptive_(adaptiveTumble)
     {
-        params_.add("S", &colony_, 2.0, 100000.0, true);
+        params_.add("S", &colonySize_, 2.0, 100000.0, true);
         params_.add("Nc", &chemotactic_, 1.0, 100000.0, true);
         params_.add("Ns", &swim_, 0.0, 100000.0, true);
         params_.add("Nre", &reproduction_, 1.0, 100000.0, true);
@@ -428,17 +428,7 @@ namespace mhplan
         sensed_.clear();
         sensed_.reserve(world.circles.size() + world.polygons.size() + sim.scenario().movingObstacles.size() +
                         n + 1);
-        const auto s = static_cast<std::size_t>(colony_);
-        x_.assign(s, Vec2());
-        dir_.assign(s, Vec2());
-        scratchX_.assign(s, Vec2());
-        scratchDir_.assign(s, Vec2());
-        j_.assign(s, 0.0);
-        health_.assign(s, 0.0);
-        scratchJ_.assign(s, 0.0);
-        keep_.assign(s, 0);
-        scratchKeep_.assign(s, 0);
-        order_.assign(s, 0);
+        colony_.reserve(2, static_cast<unsigned int>(colonySize_));
         evaluations_ = decisions_ = 0.0;
     }
 
@@ -509,83 +499,59 @@ namespace mhplan
         return constrain(robot_ + Vec2(std::cos(angle), std::sin(angle)) * r);
     }
 
+    /** \brief The colony's view of a decision: J, the sector, the sensing disc and bounds. */
+    class BfoController::Adapter : public ColonyProblem
+    {
+      public:
+        explicit Adapter(BfoController &c) : c_(c) {}
+        double cost(const double *x) override { return c_.cost(*c_.sim_, Vec2(x[0], x[1])); }
+        void randomPosition(double *x) override { store(c_.randomBacterium(), x); }
+        void constrain(double *x) override { store(c_.constrain(Vec2(x[0], x[1])), x); }
+        /** \brief Delta ~ U(-1, 1)^2 drawn y first, then x (the order this controller has always drawn in,
+            as GCC evaluated its constructor arguments), redrawn while |Delta|^2 < 1e-24; Delta / |Delta|. */
+        void randomDirection(double *phi, unsigned int /*dim*/, ompl::RNG &rng) override
+        {
+            Vec2 delta;
+            while (squaredNorm(delta) < 1e-24)
+            {
+                const double y = rng.uniformReal(-1.0, 1.0);
+                const double x = rng.uniformReal(-1.0, 1.0);
+                delta = Vec2(x, y);
+            }
+            store(unit(delta), phi);
+        }
+
+      private:
+        static void store(const Vec2 &v, double *x)
+        {
+            x[0] = v.x;
+            x[1] = v.y;
+        }
+        BfoController &c_;
+    };
+
     void BfoController::runColony(const Simulation &sim)
     {
-        const auto s = static_cast<unsigned int>(x_.size());
-        const auto nc = static_cast<unsigned int>(chemotactic_);
-        const auto ns = static_cast<unsigned int>(swim_);
-        const auto nre = static_cast<unsigned int>(reproduction_);
-        const auto ned = static_cast<unsigned int>(elimination_);
-        const auto fImprov = static_cast<unsigned int>(improvement_);
+        ColonySettings &cs = colonySettings_;
+        cs.chemotacticSteps = static_cast<unsigned int>(chemotactic_);
+        cs.swimLength = static_cast<unsigned int>(swim_);
+        cs.reproductionSteps = static_cast<unsigned int>(reproduction_);
+        cs.eliminationEvents = static_cast<unsigned int>(elimination_);
+        cs.eliminationProbability = dispersal_;
+        cs.stepSize = stepSize_;
+        cs.adaptiveTumble = adaptive_;
+        cs.improvementThreshold = static_cast<unsigned int>(improvement_);
+        cs.cellToCell = false;
+        sim_ = &sim;
         bestKnown_ = false;
-        for (unsigned int b = 0; b < s; ++b)
+        Adapter adapter(*this);
+        // Every bacterium is evaluated where it starts; a dispersed one when it next moves.
+        colony_.start(2, static_cast<unsigned int>(colonySize_), adapter);
+        colony_.evaluateAll(adapter);
+        while (colony_.step(adapter, *rng_) != BacterialColony::Step::RunComplete)
         {
-            x_[b] = randomBacterium();
-            j_[b] = cost(sim, x_[b]);
-            keep_[b] = 0;
         }
-        for (unsigned int l = 0; l < ned; ++l)
-        {
-            for (unsigned int k = 0; k < nre; ++k)
-            {
-                std::fill(health_.begin(), health_.end(), 0.0);
-                for (unsigned int c = 0; c < nc; ++c)
-                    for (unsigned int b = 0; b < s; ++b)
-                    {
-                        if (std::isnan(j_[b]))
-                            j_[b] = cost(sim, x_[b]);
-                        double last = j_[b];
-                        if (!(adaptive_ && keep_[b]))
-                        {
-                            Vec2 delta;
-                            while (squaredNorm(delta) < 1e-24)
-                                delta = Vec2(rng_->uniformReal(-1.0, 1.0), rng_->uniformReal(-1.0, 1.0));
-                            dir_[b] = unit(delta);
-                        }
-                        // Tumble (unconditional), then swim while J improves.
-                        x_[b] = constrain(x_[b] + dir_[b] * stepSize_);
-                        j_[b] = cost(sim, x_[b]);
-                        unsigned int improvements = 0;
-                        for (unsigned int m = 0; j_[b] < last; ++m)
-                        {
-                            ++improvements;
-                            last = j_[b];
-                            if (m == ns)
-                                break;
-                            x_[b] = constrain(x_[b] + dir_[b] * stepSize_);
-                            j_[b] = cost(sim, x_[b]);
-                        }
-                        health_[b] += j_[b];
-                        keep_[b] = adaptive_ && improvements > fImprov ? 1 : 0;
-                    }
-                // Reproduction: the healthier half (ties by index) splits, the rest dies.
-                std::iota(order_.begin(), order_.end(), 0u);
-                std::sort(order_.begin(), order_.end(),
-                          [this](unsigned int a, unsigned int c)
-                          { return health_[a] < health_[c] || (health_[a] == health_[c] && a < c); });
-                const unsigned int survivors = s - s / 2;
-                for (unsigned int t = 0; t < s; ++t)
-                {
-                    const unsigned int src = order_[t < survivors ? t : t - survivors];
-                    scratchX_[t] = x_[src];
-                    scratchDir_[t] = dir_[src];
-                    scratchJ_[t] = j_[src];
-                    scratchKeep_[t] = keep_[src];
-                }
-                x_.swap(scratchX_);
-                dir_.swap(scratchDir_);
-                j_.swap(scratchJ_);
-                keep_.swap(scratchKeep_);
-            }
-            // Elimination-dispersal: a dispersed bacterium is evaluated when it next moves.
-            for (unsigned int b = 0; b < s; ++b)
-                if (rng_->uniform01() < dispersal_)
-                {
-                    x_[b] = randomBacterium();
-                    j_[b] = std::nan("");
-                    keep_[b] = 0;
-                }
-        }
+        sim_ = nullptr;
     }
 
     void BfoController::decide(const Simulation &sim, std::size_t i)

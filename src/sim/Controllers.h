@@ -4,6 +4,7 @@
 #ifndef MHPLAN_CONTROLLERS_H
 #define MHPLAN_CONTROLLERS_H
 
+#include "mhplan/planners/field/BacterialColony.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/Simulation.h"
 
@@ -241,8 +242,9 @@ namespace mhplan
         double cost(const Simulation &sim, const Vec2 &p);
         /** \brief True when the robot disc can sweep the segment [a, b] (static world and sensed discs). */
         bool segmentFree(const Simulation &sim, const Vec2 &a, const Vec2 &b) const;
-        /** \brief One BFO run from robot i's position; leaves the best position in best_. */
+        /** \brief One BFO run (colony_) from robot i's position; leaves the best position in best_. */
         void runColony(const Simulation &sim);
+        class Adapter;
         /** \brief Draw a bacterium in the sector; \e x is constrained to the sensing disc and bounds. */
         Vec2 randomBacterium();
         Vec2 constrain(const Vec2 &x) const;
@@ -250,7 +252,7 @@ namespace mhplan
         void decide(const Simulation &sim, std::size_t i);
 
         bool adaptive_;
-        double colony_{100}, chemotactic_{8}, swim_{6}, reproduction_{2}, elimination_{1};
+        double colonySize_{100}, chemotactic_{8}, swim_{6}, reproduction_{2}, elimination_{1};
         double dispersal_{0.15}, stepSize_{0.1}, xi_{0.1}, eta_{0.06}, d0_{1.5}, lambda_{0.2};
         double sensing_{1.2}, improvement_{3}, sectorDegrees_{45.0}, predict_{1.0};
 
@@ -258,11 +260,11 @@ namespace mhplan
         std::vector<Vec2> waypoint_;
         std::vector<std::uint8_t> hasWaypoint_;
         std::vector<SensedObstacle> sensed_;
-        // The colony: positions, cached J, health, directions, keep flags, reproduction scratch.
-        std::vector<Vec2> x_, dir_, scratchX_, scratchDir_;
-        std::vector<double> j_, health_, scratchJ_;
-        std::vector<std::uint8_t> keep_, scratchKeep_;
-        std::vector<unsigned int> order_;
+        /** \brief The colony's settings, copied from the parameters at each decision. */
+        ColonySettings colonySettings_;
+        BacterialColony colony_{colonySettings_};
+        /** \brief The simulation of the decision in progress (for the colony's cost). */
+        const Simulation *sim_{nullptr};
         // The decision in progress.
         Vec2 robot_, goal_;
         double radius_{0.0};
