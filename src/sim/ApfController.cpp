@@ -16,15 +16,18 @@ namespace mhplan
 
     ApfController::ApfController(bool adaptive) : adaptive_(adaptive)
     {
-        params_.add("C_a", &attraction_, 0.0, 100.0);
-        params_.add("C_o", &obstacleGain_, 0.0, 100.0);
-        params_.add("C_r", &robotGain_, 0.0, 100.0);
-        params_.add("rho", &rho_, 0.01, 100.0);
+        params_.add("C_a", &attraction_, 0.0, 100.0, false, "attraction gain (1/s)");
+        params_.add("C_o", &obstacleGain_, 0.0, 100.0, false, "obstacle repulsion gain (m^2/s)");
+        params_.add("C_r", &robotGain_, 0.0, 100.0, false, "robot repulsion gain (m^2/s)");
+        params_.add("rho", &rho_, 0.01, 100.0, false, "range of the repulsion (m)");
         if (adaptive_)
         {
-            params_.add("phi_M", &coneDegrees_, 0.0, 180.0);
-            params_.add("k_a", &adaptiveGain_, 0.0, 100.0);
-            params_.add("horizon", &horizon_, 0.0, 100.0);
+            params_.add("phi_M", &coneDegrees_, 0.0, 180.0, false,
+                        "half angle of the rotation cone (degrees)");
+            params_.add("k_a", &adaptiveGain_, 0.0, 100.0, false,
+                        "adaptive gain factor (robot repulsion grows by k_a per crowding robot)");
+            params_.add("horizon", &horizon_, 0.0, 100.0, false,
+                        "prediction horizon of the crowding count (s)");
         }
     }
 

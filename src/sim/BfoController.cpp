@@ -16,21 +16,29 @@ namespace mhplan
 
     BfoController::BfoController(bool adaptiveTumble) : adaptive_(adaptiveTumble)
     {
-        params_.add("S", &colonySize_, 2.0, 100000.0, true);
-        params_.add("Nc", &chemotactic_, 1.0, 100000.0, true);
-        params_.add("Ns", &swim_, 0.0, 100000.0, true);
-        params_.add("Nre", &reproduction_, 1.0, 100000.0, true);
-        params_.add("Ned", &elimination_, 1.0, 100000.0, true);
-        params_.add("Ped", &dispersal_, 0.0, 1.0);
-        params_.add("C", &stepSize_, 1e-6, 1e6);
-        params_.add("xi", &xi_, 0.0, 1e6);
-        params_.add("eta", &eta_, 0.0, 1e6);
-        params_.add("d0", &d0_, 1e-6, 1e6);
-        params_.add("lambda", &lambda_, 1e-6, 1e6);
-        params_.add("D_sense", &sensing_, 1e-6, 1e6);
-        params_.add("F_improv", &improvement_, 0.0, 100000.0, true);
-        params_.add("sector_angle", &sectorDegrees_, 0.0, 180.0);
-        params_.add("predict", &predict_, 0.0, 1.0, true);
+        params_.add("S", &colonySize_, 2.0, 100000.0, true, "S, bacteria per decision");
+        params_.add("Nc", &chemotactic_, 1.0, 100000.0, true, "Nc, chemotactic steps per reproduction");
+        params_.add("Ns", &swim_, 0.0, 100000.0, true, "Ns, maximal swim length");
+        params_.add("Nre", &reproduction_, 1.0, 100000.0, true,
+                    "Nre, reproductions per elimination-dispersal event");
+        params_.add("Ned", &elimination_, 1.0, 100000.0, true,
+                    "Ned, elimination-dispersal events per decision");
+        params_.add("Ped", &dispersal_, 0.0, 1.0, false,
+                    "Ped, dispersal probability per bacterium and event");
+        params_.add("C", &stepSize_, 1e-6, 1e6, false, "C, chemotactic step (m)");
+        params_.add("xi", &xi_, 0.0, 1e6, false, "xi, attraction weight of J");
+        params_.add("eta", &eta_, 0.0, 1e6, false, "eta, repulsion weight of J");
+        params_.add("d0", &d0_, 1e-6, 1e6, false, "d0, range of the repulsion in J (m)");
+        params_.add("lambda", &lambda_, 1e-6, 1e6, false,
+                    "lambda, the robot step toward the best bacterium (m)");
+        params_.add("D_sense", &sensing_, 1e-6, 1e6, false,
+                    "D_sense, sensing range: obstacles sensed and bacteria confined (m)");
+        params_.add("F_improv", &improvement_, 0.0, 100000.0, true,
+                    "F_improv, improvements that keep a direction (atbfo)");
+        params_.add("sector_angle", &sectorDegrees_, 0.0, 180.0, false,
+                    "half angle of the sector the bacteria start in (degrees)");
+        params_.add("predict", &predict_, 0.0, 1.0, true,
+                    "1 = grow moving discs by their travel while the robot drives lambda (segment tests)");
     }
 
     void BfoController::reset(const Simulation &sim, ompl::RNG &rng)

@@ -4,6 +4,8 @@
 
 #include "mhplan/sim/detail/Sensing.h"
 
+#include "mhplan/base/PlannerRegistry.h"
+
 #include <cstdlib>
 
 #include <algorithm>
@@ -22,9 +24,20 @@ namespace mhplan
     // ---------------------------------------------------------------------------------------------------
     // Parameters and the shared base
 
-    void ControllerParameters::add(const std::string &name, double *value, double lo, double hi, bool integer)
+    void ControllerParameters::add(const std::string &name, double *value, double lo, double hi, bool integer,
+                                   const std::string &description)
     {
-        entries_[name] = Entry{value, lo, hi, integer};
+        // The range written once, as planners declare theirs (OMPL range suggestion).
+        const std::string range = formatNumber(lo) + (integer ? ":1:" : ":") + formatNumber(hi);
+        entries_[name] = Entry{value, lo, hi, integer, formatNumber(*value), range, description};
+    }
+
+    std::vector<ControllerParameterInfo> ControllerParameters::describe() const
+    {
+        std::vector<ControllerParameterInfo> out;
+        for (const auto &kv : entries_)
+            out.push_back({kv.first, kv.second.defaultValue, kv.second.range, kv.second.description});
+        return out;
     }
 
     std::string ControllerParameters::list() const
@@ -46,7 +59,7 @@ namespace mhplan
         char *end = nullptr;
         const double v = value.empty() ? std::nan("") : std::strtod(value.c_str(), &end);
         const bool parsed = end != nullptr && *end == '\0' && std::isfinite(v);
-        if (!parsed || v < e.lo || v > e.hi || (e.integer && v != std::floor(v)))
+        if (!parsed || !checkAgainstRange(value, e.range).empty() || (e.integer && v != std::floor(v)))
             throw InputError("controller '" + controller + "' parameter '" + name + "': value '" + value +
                              "' is out of range; expected " + (e.integer ? "an integer" : "a number") +
                              " in [" + formatNumber(e.lo) + ", " + formatNumber(e.hi) + "]");
@@ -63,8 +76,9 @@ namespace mhplan
 
     ControllerBase::ControllerBase()
     {
-        params_.add("safety_brake", &safetyBrake_, 0.0, 1.0, true);
-        params_.add("brake_margin", &brakeMargin_, 0.0, 1.0);
+        params_.add("safety_brake", &safetyBrake_, 0.0, 1.0, true,
+                    "1 = limit the speed so a step never closes a gap to a static obstacle, wall or robot");
+        params_.add("brake_margin", &brakeMargin_, 0.0, 1.0, false, "distance the safety brake keeps (m)");
     }
 
     void ControllerBase::setParameter(const std::string &name, const std::string &value)

@@ -5,6 +5,8 @@
 #include "mhplan/sim/detail/Sensing.h"
 
 #include <functional>
+#include <iomanip>
+#include <ostream>
 
 #include <algorithm>
 #include <cmath>
@@ -51,5 +53,40 @@ namespace mhplan
         for (const std::string &n : controllerNames(registry))
             known += (known.empty() ? "" : ", ") + n;
         throw InputError("unknown controller '" + name + "'; known controllers: " + known);
+    }
+
+    std::vector<ControllerParameterInfo> controllerParameters(const std::string &name,
+                                                              const PlannerRegistry &registry)
+    {
+        const ControllerPtr c = makeController(name, registry);
+        const auto *base = dynamic_cast<const ControllerBase *>(c.get());
+        return base != nullptr ? base->parameterTable().describe() : std::vector<ControllerParameterInfo>{};
+    }
+
+    void printControllers(std::ostream &out, const std::vector<std::string> &names,
+                          const PlannerRegistry &registry)
+    {
+        std::vector<std::string> list = names;
+        std::string planExample;
+        if (list.empty())
+        {
+            list = {"dapf", "aapf", "bfo", "atbfo"};
+            if (!registry.names().empty())
+                planExample = kPlanPrefix + registry.names().front();
+        }
+        auto print = [&](const std::string &title, const std::string &controller)
+        {
+            out << title << "\n";
+            for (const ControllerParameterInfo &p : controllerParameters(controller, registry))
+                out << "    " << std::left << std::setw(28) << p.name << " default " << std::setw(12)
+                    << p.defaultValue << " range " << std::setw(16) << p.range << " " << p.description
+                    << "\n";
+        };
+        for (const std::string &n : list)
+            print(n, n);
+        if (!planExample.empty())
+            print("plan:<PLANNER> (any planner of `mhplan planners`; planner.<name>=value sets the planner's "
+                  "parameters)",
+                  planExample);
     }
 } // namespace mhplan

@@ -9,6 +9,7 @@
 #include "mhplan/sim/Simulation.h"
 
 #include <cstdint>
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,20 +26,37 @@ namespace mhplan
     ControllerPtr makeController(const std::string &name,
                                  const PlannerRegistry &registry = PlannerRegistry::builtin());
 
-    /** \brief Numeric controller parameters by name: each bound to a member, with a closed range and an
-        integer flag. set() throws InputError naming the controller, the parameter, the range and the value
-        given (and listing the parameters for an unknown name). */
+    /** \brief One declared controller parameter as `mhplan` lists it (like a planner's: name, default, OMPL
+        range suggestion, what it does). */
+    struct ControllerParameterInfo
+    {
+        std::string name;
+        std::string defaultValue;
+        /** \brief OMPL's range suggestion form: "lo:hi" for numbers, "lo:1:hi" for integers. */
+        std::string range;
+        std::string description;
+    };
+
+    /** \brief Numeric controller parameters by name: each bound to a member, declared once with its range,
+        an integer flag and what it does; the range is kept as an OMPL range suggestion and values are checked
+        by checkAgainstRange, as planners' parameters are (applyPlannerParameters). set() throws InputError
+        naming the controller, the parameter, the range and the value given (and listing the parameters for
+        an unknown name). */
     class ControllerParameters
     {
       public:
-        /** \brief Declare parameter \e name bound to \e value with the range [lo, hi]. */
-        void add(const std::string &name, double *value, double lo, double hi, bool integer = false);
+        /** \brief Declare parameter \e name bound to \e value (its current value is the default) with the
+            range [lo, hi], described by \e description. */
+        void add(const std::string &name, double *value, double lo, double hi, bool integer,
+                 const std::string &description);
         /** \brief True when \e name is declared. */
         bool has(const std::string &name) const { return entries_.count(name) != 0; }
         /** \brief Parse and set; \e controller is used in messages. */
         void set(const std::string &controller, const std::string &name, const std::string &value);
         /** \brief Every parameter and its current value. */
         std::map<std::string, std::string> values() const;
+        /** \brief Every parameter's declaration, by name. */
+        std::vector<ControllerParameterInfo> describe() const;
         /** \brief The declared names, comma separated (for messages). */
         std::string list() const;
 
@@ -48,9 +66,22 @@ namespace mhplan
             double *value;
             double lo, hi;
             bool integer;
+            std::string defaultValue, range, description;
         };
         std::map<std::string, Entry> entries_;
     };
+
+    /** \brief The declared parameters of controller \e name (as makeController accepts it; "plan:<PLANNER>"
+        lists the follower's own parameters, not the planner's: those are planner.<name>, see
+        `mhplan planners`). Throws InputError for an unknown controller. */
+    std::vector<ControllerParameterInfo>
+    controllerParameters(const std::string &name,
+                         const PlannerRegistry &registry = PlannerRegistry::builtin());
+
+    /** \brief Print the controllers \e names (all field controllers and "plan:<PLANNER>" when empty) with
+        their parameters, defaults, ranges and descriptions, in the layout of `mhplan planners`. */
+    void printControllers(std::ostream &out, const std::vector<std::string> &names = {},
+                          const PlannerRegistry &registry = PlannerRegistry::builtin());
 
     /** \brief An obstacle as a controller senses it (a view: no ownership). */
     struct SensedObstacle
@@ -106,6 +137,8 @@ namespace mhplan
 
         void setParameter(const std::string &name, const std::string &value) override;
         std::map<std::string, std::string> parameters() const override { return params_.values(); }
+        /** \brief The declared parameters (names, defaults, ranges, descriptions). */
+        const ControllerParameters &parameterTable() const { return params_; }
 
       protected:
         /** \brief Apply the safety brake (if on) to the world-frame velocity \e v of robot \e i; \e limited

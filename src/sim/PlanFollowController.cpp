@@ -53,15 +53,23 @@ namespace mhplan
         : planner_(std::move(planner)), registry_(&registry)
     {
         registry_->get(planner_); // InputError listing the planners for an unknown one
-        params_.add("plan_time", &planTime_, 0.001, 600.0);
-        params_.add("lookahead", &lookahead_, 0.01, 100.0);
-        params_.add("slowdown", &slowdown_, 0.0, 100.0);
-        params_.add("sense_range", &senseRange_, 0.0, 1000.0);
-        params_.add("margin", &margin_, 0.0, 100.0);
-        params_.add("goal_tolerance", &goalTolerance_, 0.001, 1000.0);
-        params_.add("replan_interval", &replanInterval_, 0.0, 1000.0);
-        params_.add("clearance", &clearance_, 0.0, 100.0);
-        params_.add("predict_time", &predictTime_, 0.0, 100.0);
+        params_.add("plan_time", &planTime_, 0.001, 600.0, false,
+                    "planning budget per plan (s of wall clock)");
+        params_.add("lookahead", &lookahead_, 0.01, 100.0, false,
+                    "pure-pursuit lookahead along the path (m)");
+        params_.add("slowdown", &slowdown_, 0.0, 100.0, false,
+                    "slow down linearly within this distance of the path end (m)");
+        params_.add("sense_range", &senseRange_, 0.0, 1000.0, false,
+                    "moving obstacles and robots within this range can block the path (m)");
+        params_.add("margin", &margin_, 0.0, 100.0, false, "inflation of a blocking disc in a replan (m)");
+        params_.add("goal_tolerance", &goalTolerance_, 0.001, 1000.0, false,
+                    "replan when the goal moved this far from the path end (m)");
+        params_.add("replan_interval", &replanInterval_, 0.0, 1000.0, false,
+                    "least time between two replans (s)");
+        params_.add("clearance", &clearance_, 0.0, 100.0, false,
+                    "extra radius when planning on the static world (m)");
+        params_.add("predict_time", &predictTime_, 0.0, 100.0, false,
+                    "how far ahead blocking discs are predicted (s)");
     }
 
     void PlanFollowController::setParameter(const std::string &name, const std::string &value)
