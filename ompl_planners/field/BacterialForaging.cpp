@@ -47,8 +47,9 @@ namespace mhplan
     BacterialForaging::BacterialForaging(const ob::SpaceInformationPtr &si, bool adaptiveTumble)
         : PopulationPlanner(si, adaptiveTumble ? "ATBFO" : "BFO",
                             PopulationDefaults{100, 30, 3, PathDecoding::Polyline}),
-          adaptiveTumble_(adaptiveTumble), onlineBestCost_(kInf)
+          adapter_(std::make_unique<Adapter>(*this)), onlineBestCost_(kInf)
     {
+        colonySettings_.adaptiveTumble = adaptiveTumble;
         // BFO has no coefficient schedule: the base's schedule length T does not apply.
         params().remove("iterations");
         declareBfoParams();
@@ -132,67 +133,67 @@ namespace mhplan
     void BacterialForaging::setChemotacticSteps(unsigned int n)
     {
         checkParameter(kChemotacticSteps, n);
-        chemotacticSteps_ = n;
+        colonySettings_.chemotacticSteps = n;
     }
 
     void BacterialForaging::setSwimLength(unsigned int n)
     {
         checkParameter(kSwimLength, n);
-        swimLength_ = n;
+        colonySettings_.swimLength = n;
     }
 
     void BacterialForaging::setReproductionSteps(unsigned int n)
     {
         checkParameter(kReproductionSteps, n);
-        reproductionSteps_ = n;
+        colonySettings_.reproductionSteps = n;
     }
 
     void BacterialForaging::setEliminationEvents(unsigned int n)
     {
         checkParameter(kEliminationEvents, n);
-        eliminationEvents_ = n;
+        colonySettings_.eliminationEvents = n;
     }
 
     void BacterialForaging::setEliminationProbability(double p)
     {
         checkParameter(kEliminationProbability, p);
-        eliminationProbability_ = p;
+        colonySettings_.eliminationProbability = p;
     }
 
     void BacterialForaging::setStepSize(double c)
     {
         checkParameter(kStepSize, c);
-        stepSize_ = c;
+        colonySettings_.stepSize = c;
     }
 
     void BacterialForaging::setImprovementThreshold(unsigned int f)
     {
         checkParameter(kImprovementThreshold, f);
-        improvementThreshold_ = f;
+        colonySettings_.improvementThreshold = f;
     }
 
     void BacterialForaging::setAttractDepth(double v)
     {
         checkParameter(kAttractDepth, v);
-        attractDepth_ = v;
+        colonySettings_.attractDepth = v;
     }
 
     void BacterialForaging::setAttractWidth(double v)
     {
         checkParameter(kAttractWidth, v);
-        attractWidth_ = v;
+        colonySettings_.attractWidth = v;
     }
 
     void BacterialForaging::setRepelHeight(double v)
     {
         checkParameter(kRepelHeight, v);
-        repelHeight_ = v;
+        colonySettings_.repelHeight = v;
     }
 
     void BacterialForaging::setRepelWidth(double v)
     {
         checkParameter(kRepelWidth, v);
-        repelWidth_ = v;
+        colonySettings_.repelWidth = v;
     }
 
     void BacterialForaging::fieldChanged()
@@ -279,45 +280,23 @@ namespace mhplan
     // ---------------------------------------------------------------------------------------------------
     // The colony (6.1, 6.2), shared by both modes
 
+    /** \brief The colony's view of the planner: J, where bacteria land, the region and the stop test. */
+    class BacterialForaging::Adapter : public ColonyProblem
+    {
+      public:
+        explicit Adapter(BacterialForaging &planner) : planner_(planner) {}
+        double cost(const double *x) override { return planner_.rawCost(x); }
+        void randomPosition(double *x) override { planner_.randomBacterium(x); }
+        void constrain(double *x) override { planner_.constrain(x); }
+        bool halt() override { return planner_.halt(); }
+
+      private:
+        BacterialForaging &planner_;
+    };
+
     void BacterialForaging::startColony(unsigned int d)
     {
-        dim_ = d;
-        colony_ = getPopulationSize();
-        const std::size_t n = std::size_t(colony_) * dim_;
-        x_.assign(n, 0.0);
-        dir_.assign(n, 0.0);
-        scratchX_.assign(n, 0.0);
-        scratchDir_.assign(n, 0.0);
-        trial_.assign(dim_, 0.0);
-        cost_.assign(colony_, kInf);
-        scratchCost_.assign(colony_, kInf);
-        health_.assign(colony_, 0.0);
-        known_.assign(colony_, 0);
-        keep_.assign(colony_, 0);
-        scratchKnown_.assign(colony_, 0);
-        scratchKeep_.assign(colony_, 0);
-        order_.resize(colony_);
-        for (unsigned int i = 0; i < colony_; ++i)
-            randomBacterium(row(x_, i));
-        cursor_ = chemo_ = repro_ = elim_ = 0;
-        colonyReady_ = true;
-    }
-
-    void BacterialForaging::randomDirection(double *phi)
-    {
-        double n2 = 0.0;
-        while (n2 < 1e-24)
-        {
-            n2 = 0.0;
-            for (unsigned int j = 0; j < dim_; ++j)
-            {
-                phi[j] = rng_.uniformReal(-1.0, 1.0);
-                n2 += phi[j] * phi[j];
-            }
-        }
-        const double inv = 1.0 / std::sqrt(n2);
-        for (unsigned int j = 0; j < dim_; ++j)
-            phi[j] *= inv;
+        colony_.start(d, getPopulationSize(), *adapter_);
     }
 
     void BacterialForaging::randomBacterium(double *x)
@@ -364,6 +343,7 @@ namespace mhplan
             return evaluate(x);
         const Vec2 p(x[0], x[1]);
         double j = potential_->cost(p);
+        onlineEvaluations_ = potential_->evaluations();
         // What the robot cannot see (behind an obstacle) it does not sense: +infinity.
         if (j < kInf && !potential_->segmentFree(robot_, p))
             j = kInf;
@@ -376,160 +356,23 @@ namespace mhplan
         return j;
     }
 
-    double BacterialForaging::cellToCell(const double *x, unsigned int self) const
-    {
-        if (!cellToCell_)
-            return 0.0;
-        double sum = 0.0;
-        for (unsigned int k = 0; k < colony_; ++k)
-        {
-            if (k == self)
-                continue;
-            const double *y = row(x_, k);
-            double d2 = 0.0;
-            for (unsigned int j = 0; j < dim_; ++j)
-                d2 += (x[j] - y[j]) * (x[j] - y[j]);
-            sum +=
-                -attractDepth_ * std::exp(-attractWidth_ * d2) + repelHeight_ * std::exp(-repelWidth_ * d2);
-        }
-        return sum;
-    }
-
-    bool BacterialForaging::moveBacterium(unsigned int i)
-    {
-        double *xi = row(x_, i);
-        if (!known_[i])
-        {
-            if (halt())
-                return false;
-            cost_[i] = rawCost(xi);
-            known_[i] = 1;
-        }
-        double jLast = cost_[i] + cellToCell(xi, i);
-        double *phi = row(dir_, i);
-        if (!(adaptiveTumble_ && keep_[i]))
-            randomDirection(phi);
-
-        // Tumble: one unconditional step along phi.
-        for (unsigned int j = 0; j < dim_; ++j)
-            trial_[j] = xi[j] + stepSize_ * phi[j];
-        constrain(trial_.data());
-        if (halt())
-            return false;
-        double raw = rawCost(trial_.data());
-        double jNow = raw + cellToCell(trial_.data(), i);
-        std::copy(trial_.begin(), trial_.end(), xi);
-        cost_[i] = raw;
-
-        // Swim while the last move improved J, at most Ns further moves.
-        unsigned int improvements = 0, swims = 0;
-        while (jNow < jLast)
-        {
-            ++improvements;
-            jLast = jNow;
-            if (swims == swimLength_ || halt())
-                break;
-            ++swims;
-            for (unsigned int j = 0; j < dim_; ++j)
-                trial_[j] = xi[j] + stepSize_ * phi[j];
-            constrain(trial_.data());
-            raw = rawCost(trial_.data());
-            jNow = raw + cellToCell(trial_.data(), i);
-            std::copy(trial_.begin(), trial_.end(), xi);
-            cost_[i] = raw;
-        }
-        health_[i] += jNow;
-        keep_[i] = adaptiveTumble_ && improvements > improvementThreshold_ ? 1 : 0;
-        return true;
-    }
-
-    BacterialForaging::StepResult BacterialForaging::chemotacticStep()
-    {
-        while (cursor_ < colony_)
-        {
-            const bool done = moveBacterium(cursor_);
-            if (online_)
-                onlineEvaluations_ = potential_->evaluations();
-            if (!done)
-                return StepResult::Interrupted;
-            ++cursor_;
-        }
-        cursor_ = 0;
-        if (++chemo_ < chemotacticSteps_)
-            return StepResult::StepDone;
-        chemo_ = 0;
-        reproduce();
-        if (++repro_ < reproductionSteps_)
-            return StepResult::StepDone;
-        repro_ = 0;
-        disperse();
-        if (++elim_ < eliminationEvents_)
-            return StepResult::StepDone;
-        elim_ = 0;
-        return StepResult::RunComplete;
-    }
-
-    void BacterialForaging::reproduce()
-    {
-        std::iota(order_.begin(), order_.end(), 0u);
-        std::stable_sort(order_.begin(), order_.end(),
-                         [this](unsigned int a, unsigned int b) { return health_[a] < health_[b]; });
-        // The healthier half splits; for odd S the median bacterium survives without splitting.
-        const unsigned int split = colony_ / 2, survivors = colony_ - split;
-        for (unsigned int s = 0; s < colony_; ++s)
-        {
-            const unsigned int src = s < survivors ? order_[s] : order_[s - survivors];
-            std::copy_n(row(x_, src), dim_, row(scratchX_, s));
-            std::copy_n(row(dir_, src), dim_, row(scratchDir_, s));
-            scratchCost_[s] = cost_[src];
-            scratchKnown_[s] = known_[src];
-            scratchKeep_[s] = keep_[src];
-        }
-        x_.swap(scratchX_);
-        dir_.swap(scratchDir_);
-        cost_.swap(scratchCost_);
-        known_.swap(scratchKnown_);
-        keep_.swap(scratchKeep_);
-        std::fill(health_.begin(), health_.end(), 0.0);
-    }
-
-    void BacterialForaging::disperse()
-    {
-        for (unsigned int i = 0; i < colony_; ++i)
-            if (rng_.uniform01() < eliminationProbability_)
-            {
-                randomBacterium(row(x_, i));
-                known_[i] = 0;
-                keep_[i] = 0;
-            }
-    }
-
     // ---------------------------------------------------------------------------------------------------
     // Global mode (6.4): the PopulationPlanner hooks
 
     bool BacterialForaging::initialisePopulation()
     {
         startColony(dimension());
-        for (unsigned int i = 0; i < colony_; ++i)
-        {
-            if (stopRequested())
-                return false;
-            cost_[i] = rawCost(row(x_, i));
-            known_[i] = 1;
-        }
-        return true;
+        return colony_.evaluateAll(*adapter_);
     }
 
     bool BacterialForaging::iterate(unsigned int /*t*/)
     {
-        return chemotacticStep() != StepResult::Interrupted;
+        return colony_.step(*adapter_, rng_) != BacterialColony::Step::Interrupted;
     }
 
     void BacterialForaging::clearPopulation()
     {
-        colonyReady_ = false;
-        cursor_ = chemo_ = repro_ = elim_ = 0;
-        colony_ = 0;
+        colony_.reset();
     }
 
     // ---------------------------------------------------------------------------------------------------
@@ -561,8 +404,10 @@ namespace mhplan
             "%s: online, seed %lu, S = %u, Nc = %u, Ns = %u, Nre = %u, Ned = %u, C = %g, lambda = %g, "
             "%s repulsion%s",
             getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), getPopulationSize(),
-            chemotacticSteps_, swimLength_, reproductionSteps_, eliminationEvents_, stepSize_, robotStep_,
-            toString(potential_->usedMode()).c_str(), adaptiveTumble_ ? ", adaptive tumble" : "");
+            colonySettings_.chemotacticSteps, colonySettings_.swimLength, colonySettings_.reproductionSteps,
+            colonySettings_.eliminationEvents, colonySettings_.stepSize, robotStep_,
+            toString(potential_->usedMode()).c_str(),
+            colonySettings_.adaptiveTumble ? ", adaptive tumble" : "");
         finishWalkIfAtGoal();
         return true;
     }
@@ -632,10 +477,10 @@ namespace mhplan
                 startColony(2);
                 runActive_ = true;
             }
-            StepResult r = StepResult::StepDone;
-            while (r == StepResult::StepDone)
-                r = chemotacticStep();
-            if (r == StepResult::Interrupted)
+            BacterialColony::Step r = BacterialColony::Step::StepDone;
+            while (r == BacterialColony::Step::StepDone)
+                r = colony_.step(*adapter_, rng_);
+            if (r == BacterialColony::Step::Interrupted)
                 break; // the run resumes at the same bacterium next time
             runActive_ = false;
             moveRobot();

@@ -4,6 +4,7 @@
 #define MHPLAN_BACTERIAL_FORAGING_H
 
 #include "mhplan/planners/common/PopulationPlanner.h"
+#include "mhplan/planners/field/BacterialColony.h"
 #include "mhplan/planners/field/PotentialField.h"
 
 #include <atomic>
@@ -92,43 +93,43 @@ namespace mhplan
         std::string getMode() const { return online_ ? "online" : "global"; }
         /** \brief Nc, chemotactic steps per reproduction (1..100000). */
         void setChemotacticSteps(unsigned int n);
-        unsigned int getChemotacticSteps() const { return chemotacticSteps_; }
+        unsigned int getChemotacticSteps() const { return colonySettings_.chemotacticSteps; }
         /** \brief Ns, maximal swim length (0..100000). */
         void setSwimLength(unsigned int n);
-        unsigned int getSwimLength() const { return swimLength_; }
+        unsigned int getSwimLength() const { return colonySettings_.swimLength; }
         /** \brief Nre, reproduction steps per elimination-dispersal event (1..100000). */
         void setReproductionSteps(unsigned int n);
-        unsigned int getReproductionSteps() const { return reproductionSteps_; }
+        unsigned int getReproductionSteps() const { return colonySettings_.reproductionSteps; }
         /** \brief Ned, elimination-dispersal events per run (1..100000). */
         void setEliminationEvents(unsigned int n);
-        unsigned int getEliminationEvents() const { return eliminationEvents_; }
+        unsigned int getEliminationEvents() const { return colonySettings_.eliminationEvents; }
         /** \brief Ped, probability of dispersal per bacterium and event (0..1). */
         void setEliminationProbability(double p);
-        double getEliminationProbability() const { return eliminationProbability_; }
+        double getEliminationProbability() const { return colonySettings_.eliminationProbability; }
         /** \brief C, the chemotactic step size (1e-6..1000). */
         void setStepSize(double c);
-        double getStepSize() const { return stepSize_; }
+        double getStepSize() const { return colonySettings_.stepSize; }
         /** \brief ATBFO's adaptive tumble on or off. */
-        void setAdaptiveTumble(bool on) { adaptiveTumble_ = on; }
-        bool getAdaptiveTumble() const { return adaptiveTumble_; }
+        void setAdaptiveTumble(bool on) { colonySettings_.adaptiveTumble = on; }
+        bool getAdaptiveTumble() const { return colonySettings_.adaptiveTumble; }
         /** \brief F_improv: a direction is kept when a step makes more improvements (0..100000). */
         void setImprovementThreshold(unsigned int f);
-        unsigned int getImprovementThreshold() const { return improvementThreshold_; }
+        unsigned int getImprovementThreshold() const { return colonySettings_.improvementThreshold; }
         /** \brief Passino's cell-to-cell attraction/repulsion term on or off. */
-        void setCellToCell(bool on) { cellToCell_ = on; }
-        bool getCellToCell() const { return cellToCell_; }
+        void setCellToCell(bool on) { colonySettings_.cellToCell = on; }
+        bool getCellToCell() const { return colonySettings_.cellToCell; }
         /** \brief d_att (0..1e6). */
         void setAttractDepth(double v);
-        double getAttractDepth() const { return attractDepth_; }
+        double getAttractDepth() const { return colonySettings_.attractDepth; }
         /** \brief w_att (0..1e6). */
         void setAttractWidth(double v);
-        double getAttractWidth() const { return attractWidth_; }
+        double getAttractWidth() const { return colonySettings_.attractWidth; }
         /** \brief h_rep (0..1e6). */
         void setRepelHeight(double v);
-        double getRepelHeight() const { return repelHeight_; }
+        double getRepelHeight() const { return colonySettings_.repelHeight; }
         /** \brief w_rep (0..1e6). */
         void setRepelWidth(double v);
-        double getRepelWidth() const { return repelWidth_; }
+        double getRepelWidth() const { return colonySettings_.repelWidth; }
         /** \brief lambda, the robot's step (1e-6..1e6). */
         void setRobotStep(double v);
         double getRobotStep() const { return robotStep_; }
@@ -153,12 +154,6 @@ namespace mhplan
         void clearPopulation() override;
 
       private:
-        enum class StepResult
-        {
-            Interrupted,
-            StepDone,
-            RunComplete
-        };
         enum class WalkState
         {
             Walking,
@@ -175,18 +170,9 @@ namespace mhplan
 
         /** \brief Size the colony for dimension \e d and draw every bacterium (not evaluated yet). */
         void startColony(unsigned int d);
-        /** \brief One chemotactic step of the remaining bacteria, then reproduction / dispersal when due. */
-        StepResult chemotacticStep();
-        /** \brief Tumble and swim of bacterium i; false when the termination condition stopped it before
-            its tumble was evaluated (nothing changed then). */
-        bool moveBacterium(unsigned int i);
-        void reproduce();
-        void disperse();
-        double cellToCell(const double *x, unsigned int self) const;
         double rawCost(const double *x);
         void randomBacterium(double *x);
         void constrain(double *x) const;
-        void randomDirection(double *phi);
 
         ompl::base::PlannerStatus solveOnline(const ompl::base::PlannerTerminationCondition &ptc);
         bool prepareOnline();
@@ -194,41 +180,19 @@ namespace mhplan
         void finishWalkIfAtGoal();
         ompl::base::PlannerStatus reportOnline();
 
-        double *row(std::vector<double> &v, unsigned int i) { return v.data() + std::size_t(i) * dim_; }
-        const double *row(const std::vector<double> &v, unsigned int i) const
-        {
-            return v.data() + std::size_t(i) * dim_;
-        }
-
         // Parameters.
         bool online_{true};
-        unsigned int chemotacticSteps_{8};
-        unsigned int swimLength_{6};
-        unsigned int reproductionSteps_{2};
-        unsigned int eliminationEvents_{1};
-        double eliminationProbability_{0.15};
-        double stepSize_{0.1};
-        bool adaptiveTumble_{false};
-        unsigned int improvementThreshold_{3};
-        bool cellToCell_{false};
-        double attractDepth_{0.1};
-        double attractWidth_{0.2};
-        double repelHeight_{0.1};
-        double repelWidth_{10.0};
+        /** \brief Passino's loops and ATBFO's adaptive tumble, read by colony_. */
+        ColonySettings colonySettings_;
         double robotStep_{0.2};
         double goalTolerance_{0.0};
         double sectorAngle_{45.0};
         unsigned int maxSteps_{2000};
 
-        // The colony (both modes): positions, cached raw J (valid when known_), health, ATBFO directions.
-        unsigned int dim_{0};
-        unsigned int colony_{0};
-        std::vector<double> x_, dir_, trial_, scratchX_, scratchDir_;
-        std::vector<double> cost_, health_, scratchCost_;
-        std::vector<std::uint8_t> known_, keep_, scratchKnown_, scratchKeep_;
-        std::vector<unsigned int> order_;
-        unsigned int cursor_{0}, chemo_{0}, repro_{0}, elim_{0};
-        bool colonyReady_{false};
+        // The colony (both modes), searching through adapter_.
+        class Adapter;
+        std::unique_ptr<Adapter> adapter_;
+        BacterialColony colony_{colonySettings_};
 
         // Online walk.
         const ompl::base::PlannerTerminationCondition *onlinePtc_{nullptr};

@@ -4,10 +4,12 @@
 #ifndef MHPLAN_CONTROLLERS_H
 #define MHPLAN_CONTROLLERS_H
 
+#include "mhplan/planners/field/BacterialColony.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/Simulation.h"
 
 #include <cstdint>
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,20 +26,37 @@ namespace mhplan
     ControllerPtr makeController(const std::string &name,
                                  const PlannerRegistry &registry = PlannerRegistry::builtin());
 
-    /** \brief Numeric controller parameters by name: each bound to a member, with a closed range and an
-        integer flag. set() throws InputError naming the controller, the parameter, the range and the value
-        given (and listing the parameters for an unknown name). */
+    /** \brief One declared controller parameter as `mhplan` lists it (like a planner's: name, default, OMPL
+        range suggestion, what it does). */
+    struct ControllerParameterInfo
+    {
+        std::string name;
+        std::string defaultValue;
+        /** \brief OMPL's range suggestion form: "lo:hi" for numbers, "lo:1:hi" for integers. */
+        std::string range;
+        std::string description;
+    };
+
+    /** \brief Numeric controller parameters by name: each bound to a member, declared once with its range,
+        an integer flag and what it does; the range is kept as an OMPL range suggestion and values are checked
+        by checkAgainstRange, as planners' parameters are (applyPlannerParameters). set() throws InputError
+        naming the controller, the parameter, the range and the value given (and listing the parameters for
+        an unknown name). */
     class ControllerParameters
     {
       public:
-        /** \brief Declare parameter \e name bound to \e value with the range [lo, hi]. */
-        void add(const std::string &name, double *value, double lo, double hi, bool integer = false);
+        /** \brief Declare parameter \e name bound to \e value (its current value is the default) with the
+            range [lo, hi], described by \e description. */
+        void add(const std::string &name, double *value, double lo, double hi, bool integer,
+                 const std::string &description);
         /** \brief True when \e name is declared. */
         bool has(const std::string &name) const { return entries_.count(name) != 0; }
         /** \brief Parse and set; \e controller is used in messages. */
         void set(const std::string &controller, const std::string &name, const std::string &value);
         /** \brief Every parameter and its current value. */
         std::map<std::string, std::string> values() const;
+        /** \brief Every parameter's declaration, by name. */
+        std::vector<ControllerParameterInfo> describe() const;
         /** \brief The declared names, comma separated (for messages). */
         std::string list() const;
 
@@ -47,9 +66,22 @@ namespace mhplan
             double *value;
             double lo, hi;
             bool integer;
+            std::string defaultValue, range, description;
         };
         std::map<std::string, Entry> entries_;
     };
+
+    /** \brief The declared parameters of controller \e name (as makeController accepts it; "plan:<PLANNER>"
+        lists the follower's own parameters, not the planner's: those are planner.<name>, see
+        `mhplan planners`). Throws InputError for an unknown controller. */
+    std::vector<ControllerParameterInfo>
+    controllerParameters(const std::string &name,
+                         const PlannerRegistry &registry = PlannerRegistry::builtin());
+
+    /** \brief Print the controllers \e names (all field controllers and "plan:<PLANNER>" when empty) with
+        their parameters, defaults, ranges and descriptions, in the layout of `mhplan planners`. */
+    void printControllers(std::ostream &out, const std::vector<std::string> &names = {},
+                          const PlannerRegistry &registry = PlannerRegistry::builtin());
 
     /** \brief An obstacle as a controller senses it (a view: no ownership). */
     struct SensedObstacle
@@ -105,6 +137,8 @@ namespace mhplan
 
         void setParameter(const std::string &name, const std::string &value) override;
         std::map<std::string, std::string> parameters() const override { return params_.values(); }
+        /** \brief The declared parameters (names, defaults, ranges, descriptions). */
+        const ControllerParameters &parameterTable() const { return params_; }
 
       protected:
         /** \brief Apply the safety brake (if on) to the world-frame velocity \e v of robot \e i; \e limited
@@ -241,8 +275,9 @@ namespace mhplan
         double cost(const Simulation &sim, const Vec2 &p);
         /** \brief True when the robot disc can sweep the segment [a, b] (static world and sensed discs). */
         bool segmentFree(const Simulation &sim, const Vec2 &a, const Vec2 &b) const;
-        /** \brief One BFO run from robot i's position; leaves the best position in best_. */
+        /** \brief One BFO run (colony_) from robot i's position; leaves the best position in best_. */
         void runColony(const Simulation &sim);
+        class Adapter;
         /** \brief Draw a bacterium in the sector; \e x is constrained to the sensing disc and bounds. */
         Vec2 randomBacterium();
         Vec2 constrain(const Vec2 &x) const;
@@ -250,7 +285,7 @@ namespace mhplan
         void decide(const Simulation &sim, std::size_t i);
 
         bool adaptive_;
-        double colony_{100}, chemotactic_{8}, swim_{6}, reproduction_{2}, elimination_{1};
+        double colonySize_{100}, chemotactic_{8}, swim_{6}, reproduction_{2}, elimination_{1};
         double dispersal_{0.15}, stepSize_{0.1}, xi_{0.1}, eta_{0.06}, d0_{1.5}, lambda_{0.2};
         double sensing_{1.2}, improvement_{3}, sectorDegrees_{45.0}, predict_{1.0};
 
@@ -258,11 +293,11 @@ namespace mhplan
         std::vector<Vec2> waypoint_;
         std::vector<std::uint8_t> hasWaypoint_;
         std::vector<SensedObstacle> sensed_;
-        // The colony: positions, cached J, health, directions, keep flags, reproduction scratch.
-        std::vector<Vec2> x_, dir_, scratchX_, scratchDir_;
-        std::vector<double> j_, health_, scratchJ_;
-        std::vector<std::uint8_t> keep_, scratchKeep_;
-        std::vector<unsigned int> order_;
+        /** \brief The colony's settings, copied from the parameters at each decision. */
+        ColonySettings colonySettings_;
+        BacterialColony colony_{colonySettings_};
+        /** \brief The simulation of the decision in progress (for the colony's cost). */
+        const Simulation *sim_{nullptr};
         // The decision in progress.
         Vec2 robot_, goal_;
         double radius_{0.0};
