@@ -80,9 +80,10 @@ namespace mhplan::bench
                     {
                         if (!params.IsMap())
                             r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        r.uniqueKeys(params, field + ".params");
                         for (const auto &kv : params)
                         {
-                            const std::string key = kv.first.as<std::string>();
+                            const std::string key = r.key(kv.first, field + ".params");
                             p.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
                         }
                     }
@@ -136,9 +137,10 @@ namespace mhplan::bench
                     {
                         if (!params.IsMap())
                             r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        r.uniqueKeys(params, field + ".params");
                         for (const auto &kv : params)
                         {
-                            const std::string key = kv.first.as<std::string>();
+                            const std::string key = r.key(kv.first, field + ".params");
                             spec.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
                         }
                     }

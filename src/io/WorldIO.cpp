@@ -54,8 +54,9 @@ namespace mhplan
                      r.number(r.require(n, "ymin", "bounds"), "bounds.ymin"),
                      r.number(r.require(n, "ymax", "bounds"), "bounds.ymax")};
             }
-            if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
-                r.fail(n, "bounds", "needs xmin < xmax and ymin < ymax");
+            const std::string problem = boundsProblem(b);
+            if (!problem.empty())
+                r.fail(n, "bounds", problem);
             return b;
         }
 
@@ -64,7 +65,7 @@ namespace mhplan
             const std::string base = "obstacles[" + std::to_string(index) + "]";
             if (!item.IsMap() || item.size() != 1)
                 r.fail(item, base, "expected one of {circle: ...}, {rectangle: ...}, {polygon: ...}");
-            const std::string kind = item.begin()->first.as<std::string>();
+            const std::string kind = r.key(item.begin()->first, base);
             const YAML::Node n = item.begin()->second;
             const std::string field = base + "." + kind;
             if (kind == "circle")
@@ -72,7 +73,8 @@ namespace mhplan
                 r.allowKeys(n, field, {"center", "radius"});
                 Circle c;
                 c.center = r.point(r.require(n, "center", field), field + ".center");
-                c.radius = r.number(r.require(n, "radius", field), field + ".radius");
+                c.radius = r.number(r.require(n, "radius", field), field + ".radius", -kMaxCoordinate,
+                                    kMaxCoordinate);
                 if (!(c.radius > 0.0))
                     r.fail(n["radius"], field + ".radius", "must be > 0 (got " + n["radius"].Scalar() + ")");
                 world.circles.push_back(c);
@@ -218,6 +220,28 @@ namespace mhplan
         }
     } // namespace
 
+    std::string boundsProblem(const Box &b)
+    {
+        const double c[4] = {b.xmin, b.xmax, b.ymin, b.ymax};
+        for (double v : c)
+            if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
+            {
+                std::ostringstream msg;
+                msg << "coordinates must be finite and within +-" << kMaxCoordinate << " (got " << v << ")";
+                return msg.str();
+            }
+        if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
+            return "needs xmin < xmax and ymin < ymax";
+        if (b.width() < kMinExtent || b.height() < kMinExtent)
+        {
+            std::ostringstream msg;
+            msg << "the extent " << b.width() << " x " << b.height() << " is degenerate (at least "
+                << kMinExtent << " in x and y)";
+            return msg.str();
+        }
+        return "";
+    }
+
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
     {
         const YAML::Node root = loadYamlMapping(textIn, fileName, "world file", "environments/README.md");
@@ -244,7 +268,8 @@ namespace mhplan
         if (root["robot"].IsDefined())
         {
             r.allowKeys(root["robot"], "robot", {"radius"});
-            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius");
+            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius",
+                                         -kMaxCoordinate, kMaxCoordinate);
             if (world.robotRadius < 0.0)
                 r.fail(root["robot"]["radius"], "robot.radius",
                        "must be >= 0 (got " + root["robot"]["radius"].Scalar() + ")");

@@ -26,7 +26,13 @@ namespace mhplan
 
         [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
                                const std::string &what) const;
-        /** \brief \e map must be a mapping whose keys are all in \e keys (the message lists them). */
+        /** \brief A mapping key, which must be a scalar (a list or mapping as a key is refused). */
+        std::string key(const YAML::Node &keyNode, const std::string &field) const;
+        /** \brief \e map must be a mapping of scalar keys, each given once (a repeated key is refused,
+            naming both lines). */
+        void uniqueKeys(const YAML::Node &map, const std::string &field) const;
+        /** \brief \e map must be a mapping whose keys are all in \e keys (the message lists them), each
+            given once (a repeated key is refused, naming both lines). */
         void allowKeys(const YAML::Node &map, const std::string &field,
                        const std::set<std::string> &keys) const;
         /** \brief map[key], which must be present and not null. */

@@ -203,9 +203,10 @@ namespace mhplan
             const YAML::Node ref = root["reference"];
             if (!ref.IsMap())
                 r.fail(ref, "reference", "expected a mapping of names to numbers");
+            r.uniqueKeys(ref, "reference");
             for (const auto &kv : ref)
             {
-                const std::string key = kv.first.as<std::string>();
+                const std::string key = r.key(kv.first, "reference");
                 sc.reference[key] = r.number(kv.second, "reference." + key);
             }
         }
