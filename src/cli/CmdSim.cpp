@@ -163,7 +163,6 @@ namespace mhplan::cli
                 std::cout << " " << kv.first << "=" << std::setprecision(10) << kv.second;
             std::cout << "\n";
         }
-        std::cout << "seed:       " << r.seed << "\n";
 
         if (args.has("csv"))
         {

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -136,6 +137,13 @@ namespace mhplan
             const bool hasRows = n["rows"].IsDefined();
             if (hasFile == hasRows)
                 r.fail(n, "grid", "give exactly one of 'file' (a .map or .pgm) and 'rows'");
+            const bool pgmFile = hasFile && n["file"].IsScalar() && extensionOf(n["file"].Scalar()) == "pgm";
+            for (const char *key : {"threshold", "negate"})
+                if (n[key].IsDefined() && !pgmFile)
+                    r.fail(n[key], std::string("grid.") + key,
+                           "applies only to a .pgm grid file (line " +
+                               std::to_string(n[key].Mark().line + 1) + "), not to " +
+                               (hasRows ? "'rows'" : "a .map file"));
             OccupancyGrid grid;
             if (hasRows)
             {
@@ -163,21 +171,23 @@ namespace mhplan
                 if (!path.empty() && path[0] != '/')
                     path = directoryOf(r.file()) + "/" + path;
                 const std::string ext = extensionOf(path);
+                if (ext != "map" && ext != "pgm")
+                    r.fail(n["file"], "grid.file", "expected a .map or .pgm file, got '" + path + "'");
+                double threshold = 0.5;
+                bool negate = false;
+                if (ext == "pgm")
+                {
+                    threshold = n["threshold"].IsDefined() ? r.number(n["threshold"], "grid.threshold") : 0.5;
+                    if (!(threshold > 0.0 && threshold < 1.0))
+                        r.fail(n["threshold"], "grid.threshold", "must be in (0, 1)");
+                    negate = n["negate"].IsDefined() && r.boolean(n["negate"], "grid.negate");
+                }
                 try
                 {
                     if (ext == "map")
                         grid = loadMovingAIMap(path, cell);
-                    else if (ext == "pgm")
-                    {
-                        const double threshold =
-                            n["threshold"].IsDefined() ? r.number(n["threshold"], "grid.threshold") : 0.5;
-                        if (!(threshold > 0.0 && threshold < 1.0))
-                            r.fail(n["threshold"], "grid.threshold", "must be in (0, 1)");
-                        const bool negate = n["negate"].IsDefined() && r.boolean(n["negate"], "grid.negate");
-                        grid = loadPgm(path, cell, threshold, negate);
-                    }
                     else
-                        r.fail(n["file"], "grid.file", "expected a .map or .pgm file, got '" + path + "'");
+                        grid = loadPgm(path, cell, threshold, negate);
                 }
                 catch (const InputError &e)
                 {
@@ -193,6 +203,9 @@ namespace mhplan
                         moved.setBlocked(ix, iy, grid.blocked(ix, iy));
                 grid = std::move(moved);
             }
+            const std::string problem = boundsProblem(grid.bounds());
+            if (!problem.empty())
+                r.fail(n, "grid", "the grid's extent (cell_size times the cells, from origin): " + problem);
             return std::make_shared<const OccupancyGrid>(std::move(grid));
         }
 
@@ -331,6 +344,9 @@ namespace mhplan
 
     World loadWorld(const std::string &path)
     {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec))
+            throw InputError(path + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
         std::ifstream in(path);
         if (!in)
             throw InputError(path + ": cannot open world file");
@@ -351,8 +367,10 @@ namespace mhplan
             return w;
         }
         if (ext != "yaml" && ext != "yml")
-            throw InputError(path + ": unknown world file type '." + ext +
-                             "'; accepted: .yaml, .yml, .map, .pgm");
+            throw InputError(path + ": " +
+                             (ext.empty() ? std::string("the file name has no extension")
+                                          : "unknown world file type '." + ext + "'") +
+                             "; accepted: .yaml, .yml, .map, .pgm");
         std::stringstream buffer;
         buffer << in.rdbuf();
         return parseWorldYaml(buffer.str(), path);
