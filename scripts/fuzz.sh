@@ -3,6 +3,7 @@
 # Build the libFuzzer targets (tests/fuzz, clang with ASan + UBSan) in their own build directory and run
 # one of them, or all one after the other, for SECONDS each on one core.
 #   scripts/fuzz.sh TARGET|all SECONDS      e.g. scripts/fuzz.sh world_yaml 600, scripts/fuzz.sh all 30
+# MHPLAN_FUZZ_RUNS=N stops a target after N executions (SECONDS stays the cap).
 # Targets: world_yaml map pgm grid_rows scen scenario campaign cli_values.
 # Seed corpora come from the shipped files (environments/, benchmarks/, tests/data/) and the kept crashing
 # inputs (tests/data/fuzz_regressions/); the growing corpus stays in $BUILD_DIR/corpus/TARGET. A finding
@@ -86,7 +87,7 @@ for t in "${RUN[@]}"; do
   ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}" \
   UBSAN_OPTIONS="${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}" \
     "$BUILD_DIR/tests/fuzz/fuzz_$t" -max_total_time="$SECONDS_EACH" -rss_limit_mb=2048 -malloc_limit_mb=512 \
-    -timeout=20 -max_len=8192 -print_final_stats=1 -artifact_prefix="$artifacts" "$corpus" "$seedDir" \
+    -timeout=20 -max_len=8192 -print_final_stats=1 ${MHPLAN_FUZZ_RUNS:+-runs=$MHPLAN_FUZZ_RUNS} -artifact_prefix="$artifacts" "$corpus" "$seedDir" \
     > "$log" 2>&1
   rc=$?
   set -e

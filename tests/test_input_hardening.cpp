@@ -4,6 +4,13 @@
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/io/GridIO.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/registry/Registry.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 
 #include <gtest/gtest.h>
 
@@ -128,4 +135,57 @@ TEST(GridChecks, HeadersCannotMakeTheReaderAllocate)
     e = inputError([&] { mhplan::parseMovingAIMap(header, "h.map"); });
     EXPECT_TRUE(contains(e, "\\x02")) << e;
     EXPECT_FALSE(contains(e, "\x02")) << e;
+}
+
+namespace
+{
+    /** \brief Collects OMPL's console messages of level ERROR. */
+    class ErrorLog : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+        {
+            if (level == ompl::msg::LOG_ERROR)
+                errors.push_back(text);
+        }
+        std::vector<std::string> errors;
+    };
+} // namespace
+
+// Issue 19: on a space they cannot plan in, the lattice and potential-field planners refuse at setup() with
+// an ompl::Exception and log the reason through OMPL_ERROR (as README.md says of every mhplan planner).
+TEST(PlannerSetup, UnsupportedSpaceThrowsAndLogs)
+{
+    for (const std::string name : {"AStar", "ThetaStar", "APF", "BFO", "ATBFO"})
+    {
+        auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
+        space->setBounds(0.0, 1.0);
+        auto ss = std::make_shared<ompl::geometric::SimpleSetup>(space);
+        ss->setStateValidityChecker([](const ompl::base::State *) { return true; });
+        ompl::base::ScopedState<> start(space), goal(space);
+        start = std::vector<double>{0.1, 0.1, 0.1};
+        goal = std::vector<double>{0.9, 0.9, 0.9};
+        ss->setStartAndGoalStates(start, goal);
+        ss->setPlanner(mhplan::PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+        ErrorLog log;
+        ompl::msg::OutputHandler *previous = ompl::msg::getOutputHandler();
+        const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+        ompl::msg::useOutputHandler(&log);
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        std::string thrown;
+        try
+        {
+            ss->setup();
+        }
+        catch (const ompl::Exception &e)
+        {
+            thrown = e.what();
+        }
+        ompl::msg::useOutputHandler(previous);
+        ompl::msg::setLogLevel(level);
+        EXPECT_NE(thrown.find(name), std::string::npos) << name << ": " << thrown;
+        EXPECT_NE(thrown.find("2D RealVectorStateSpace"), std::string::npos) << name << ": " << thrown;
+        ASSERT_FALSE(log.errors.empty()) << name << " logged no error";
+        EXPECT_NE(log.errors.back().find(name), std::string::npos) << log.errors.back();
+    }
 }
