@@ -24,7 +24,7 @@ if ! cmake --build "$BUILD_DIR" -j "$JOBS" > "$BUILD_DIR/build-output.txt" 2>&1;
   exit 1
 fi
 grep -E "warning:" "$BUILD_DIR/build-output.txt" >&2 || true
-export ASAN_OPTIONS="detect_leaks=1:strict_init_order=1:detect_stack_use_after_return=0:abort_on_error=0"
+export ASAN_OPTIONS="detect_leaks=1:fast_unwind_on_malloc=0:strict_init_order=1:detect_stack_use_after_return=0:abort_on_error=0"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # The sanitizer build runs about 3-5 times slower: tests with wall-clock limits scale them by this factor.

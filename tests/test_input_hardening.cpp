@@ -5,6 +5,7 @@
 #include "mhplan/io/GridIO.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace
@@ -188,4 +190,32 @@ TEST(PlannerSetup, UnsupportedSpaceThrowsAndLogs)
         ASSERT_FALSE(log.errors.empty()) << name << " logged no error";
         EXPECT_NE(log.errors.back().find(name), std::string::npos) << log.errors.back();
     }
+}
+
+// Issue 19: resource limits are stated and enforced with a message, not run into.
+TEST(Limits, TimeStepPolygonAndFileSize)
+{
+    const std::string scenario = "bounds: [0, 10, 0, 10]\nrobots: [{name: r, start: [1, 1], goal: [9, 9]}]\n";
+    std::string e =
+        inputError([&] { mhplan::parseScenarioYaml(scenario + "simulation: {dt: 1e-9}\n", "s.yaml"); });
+    EXPECT_TRUE(contains(e, "s.yaml:3: field 'simulation.dt'") && contains(e, "at least")) << e;
+    e = inputError(
+        [&]
+        { mhplan::parseScenarioYaml(scenario + "simulation: {dt: 0.0001, time_limit: 1e7}\n", "s.yaml"); });
+    EXPECT_TRUE(contains(e, "simulation.dt") && contains(e, "steps")) << e;
+
+    // A polygon of kMaxPolygonVertices + 1 vertices (a convex one, so only the limit refuses it).
+    std::ostringstream poly;
+    poly << "bounds: [-10, 10, -10, 10]\nobstacles:\n  - polygon: {points: [";
+    const std::size_t n = mhplan::kMaxPolygonVertices + 1;
+    for (std::size_t i = 0; i < n; ++i)
+        poly << (i ? ", " : "") << "[" << 5.0 * std::cos(2.0 * M_PI * i / n) << ", "
+             << 5.0 * std::sin(2.0 * M_PI * i / n) << "]";
+    poly << "]}\n";
+    e = inputError([&] { mhplan::parseWorldYaml(poly.str(), "p.yaml"); });
+    EXPECT_TRUE(contains(e, "p.yaml:3") && contains(e, "at most 2000")) << e;
+
+    const std::string big = "bounds: [0, 10, 0, 10]\n" + std::string(mhplan::kMaxYamlBytes, '#');
+    e = inputError([&] { mhplan::parseWorldYaml(big, "big.yaml"); });
+    EXPECT_TRUE(contains(e, "big.yaml") && contains(e, "limited to")) << e;
 }

@@ -112,6 +112,10 @@ namespace mhplan
                 const YAML::Node pts = r.require(n, "points", field);
                 if (!pts.IsSequence() || pts.size() < 3)
                     r.fail(pts, field + ".points", "expected a list of at least 3 points");
+                if (pts.size() > kMaxPolygonVertices)
+                    r.fail(pts, field + ".points",
+                           std::to_string(pts.size()) + " vertices; a polygon may have at most " +
+                               std::to_string(kMaxPolygonVertices) + " (split it into several polygons)");
                 std::vector<Vec2> v;
                 for (std::size_t i = 0; i < pts.size(); ++i)
                     v.push_back(r.point(pts[i], field + ".points[" + std::to_string(i) + "]"));
@@ -371,6 +375,11 @@ namespace mhplan
                              (ext.empty() ? std::string("the file name has no extension")
                                           : "unknown world file type '." + ext + "'") +
                              "; accepted: .yaml, .yml, .map, .pgm");
+        const auto size = std::filesystem::file_size(path, ec);
+        if (!ec && size > kMaxYamlBytes)
+            throw InputError(path + ": the world file is " + std::to_string(size) +
+                             " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                             " bytes (4 MiB; large grids belong in .map or .pgm files)");
         std::stringstream buffer;
         buffer << in.rdbuf();
         return parseWorldYaml(buffer.str(), path);

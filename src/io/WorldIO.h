@@ -15,6 +15,9 @@ namespace mhplan
     /** \brief The largest coordinate (in absolute value) of bounds, obstacles and query points, and the
         largest radius; beyond it lengths lose the precision the planners and the optimum solver need. */
     constexpr double kMaxCoordinate = 1e9;
+    /** \brief The most vertices of one polygon (its simplicity check is quadratic: 2,000 vertices take
+        about 50 ms). */
+    constexpr std::size_t kMaxPolygonVertices = 2000;
     /** \brief The smallest extent of the bounds in x and y. */
     constexpr double kMinExtent = 1e-6;
 

@@ -12,6 +12,10 @@ namespace mhplan
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
                                const std::string &help)
     {
+        if (text.size() > kMaxYamlBytes)
+            throw InputError(fileName + ": the " + what + " is " + std::to_string(text.size()) +
+                             " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                             " bytes (4 MiB; large grids belong in .map or .pgm files)");
         YAML::Node root;
         try
         {

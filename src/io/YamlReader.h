@@ -7,13 +7,19 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <set>
 #include <string>
 
 namespace mhplan
 {
-    /** \brief Parse one YAML document that must be a mapping; InputError "FILE:LINE:COL: malformed YAML: ..."
-        or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
+    /** \brief The largest YAML input file (world, scenario, campaign): 4 MiB. yaml-cpp holds several KB per
+        node, so a 50 MB world of circles would take gigabytes; larger worlds belong in grid files (.map,
+        .pgm), which are read row by row. */
+    constexpr std::size_t kMaxYamlBytes = std::size_t{4} << 20;
+
+    /** \brief Parse one YAML document that must be a mapping (at most kMaxYamlBytes); InputError
+       "FILE:LINE:COL: malformed YAML: ..." or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
                                const std::string &help);
 
