@@ -82,7 +82,10 @@ namespace mhplan::bench
             }
             const auto &properties = planner->getPlannerProgressProperties();
             for (std::size_t k = 0; k < p.progress.size(); ++k)
-                if (properties.count(p.progress[k]) == 0)
+                if (std::none_of(
+                        properties.begin(), properties.end(),
+                        [&](const auto &kv) // "best cost" names "best cost REAL" (type word optional)
+                        { return kv.first == p.progress[k] || kv.first.rfind(p.progress[k] + " ", 0) == 0; }))
                 {
                     std::string known;
                     for (const auto &kv : properties)
