@@ -5,6 +5,7 @@ Runs with Debian's /usr/bin/python3 (matplotlib, numpy, yaml)."""
 
 import argparse
 import os
+import sqlite3
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -18,14 +19,25 @@ def main(argv=None):
     parser.add_argument("-o", "--output", default="report", help="output directory (default: report)")
     parser.add_argument("--worlds", default=None, help="directory that relative world_file paths are relative to")
     args = parser.parse_args(argv)
-    if not os.path.isfile(args.database):
-        print("mhplan report: error: no such database file '%s'" % args.database, file=sys.stderr)
+    def fail(message):
+        print("mhplan report: error: %s" % message, file=sys.stderr)
         return 1
+
+    if not os.path.isfile(args.database):
+        return fail("no such database file '%s'" % args.database)
+    with open(args.database, "rb") as f:
+        if f.read(16) != b"SQLite format 3\x00":
+            return fail("'%s' is not an SQLite database (written by mhplan bench)" % args.database)
+    if os.path.exists(args.output) and not os.path.isdir(args.output):
+        return fail("the output '%s' exists and is not a directory" % args.output)
     try:
         index = write_report(args.database, args.output, args.worlds)
     except ValueError as e:
-        print("mhplan report: error: %s" % e, file=sys.stderr)
-        return 1
+        return fail(e)
+    except sqlite3.Error as e:
+        return fail("cannot read the database '%s': %s" % (args.database, e))
+    except OSError as e:
+        return fail("cannot write '%s': %s" % (e.filename or args.output, e.strerror or e))
     print(index)
     return 0
 

@@ -9,6 +9,8 @@
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/io/YamlReader.h"
 
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -46,7 +48,56 @@ namespace mhplan::bench
             return true;
         }
 
-        void readPlanners(const YamlReader &r, const YAML::Node &n, Campaign &c)
+        /** \brief The planner of \e p exists in \e registry, takes its parameters (names, ranges, integers)
+            and reports the progress properties asked for; checked on a plain 2D space, so that a campaign
+            (and --list) refuses a bad entry with its file, line and field before any run. */
+        void checkPlannerSpec(const YamlReader &r, const YAML::Node &node, const std::string &field,
+                              const PlannerSpec &p, const PlannerRegistry &registry)
+        {
+            if (!registry.has(p.planner))
+            {
+                std::string known;
+                for (const auto &name : registry.names())
+                    known += (known.empty() ? "" : " ") + name;
+                r.fail(node.IsMap() ? node["planner"] : node, node.IsMap() ? field + ".planner" : field,
+                       "unknown planner '" + p.planner + "'; registered planners: " + known);
+            }
+            static const ompl::base::SpaceInformationPtr si = []
+            {
+                auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+                space->setBounds(0.0, 1.0);
+                auto info = std::make_shared<ompl::base::SpaceInformation>(space);
+                info->setStateValidityChecker([](const ompl::base::State *) { return true; });
+                info->setup();
+                return info;
+            }();
+            ompl::base::PlannerPtr planner = registry.get(p.planner).allocate(si);
+            try
+            {
+                applyPlannerParameters(*planner, p.params);
+            }
+            catch (const InputError &e)
+            {
+                r.fail(node["params"], field + ".params", e.what());
+            }
+            const auto &properties = planner->getPlannerProgressProperties();
+            for (std::size_t k = 0; k < p.progress.size(); ++k)
+                if (std::none_of(
+                        properties.begin(), properties.end(),
+                        [&](const auto &kv) // "best cost" names "best cost REAL" (type word optional)
+                        { return kv.first == p.progress[k] || kv.first.rfind(p.progress[k] + " ", 0) == 0; }))
+                {
+                    std::string known;
+                    for (const auto &kv : properties)
+                        known += (known.empty() ? "'" : ", '") + kv.first + "'";
+                    r.fail(node["progress"][k], field + ".progress[" + std::to_string(k) + "]",
+                           "planner '" + p.planner + "' has no progress property '" + p.progress[k] +
+                               "'; its properties: " + (known.empty() ? std::string("(none)") : known));
+                }
+        }
+
+        void readPlanners(const YamlReader &r, const YAML::Node &n, Campaign &c,
+                          const PlannerRegistry &registry)
         {
             if (!n.IsSequence() || n.size() == 0)
                 r.fail(n, "planners", "expected a non-empty list of {planner, name, params}");
@@ -80,13 +131,15 @@ namespace mhplan::bench
                     {
                         if (!params.IsMap())
                             r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        r.uniqueKeys(params, field + ".params");
                         for (const auto &kv : params)
                         {
-                            const std::string key = kv.first.as<std::string>();
+                            const std::string key = r.key(kv.first, field + ".params");
                             p.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
                         }
                     }
                 }
+                checkPlannerSpec(r, n[i], field, p, registry);
                 if (p.displayName.empty())
                     p.displayName = p.planner;
                 if (!plainName(p.displayName))
@@ -136,9 +189,10 @@ namespace mhplan::bench
                     {
                         if (!params.IsMap())
                             r.fail(params, field + ".params", "expected a mapping of parameter: value");
+                        r.uniqueKeys(params, field + ".params");
                         for (const auto &kv : params)
                         {
-                            const std::string key = kv.first.as<std::string>();
+                            const std::string key = r.key(kv.first, field + ".params");
                             spec.params[key] = r.nonEmptyText(kv.second, field + ".params." + key);
                         }
                     }
@@ -297,7 +351,7 @@ namespace mhplan::bench
             readWorlds(r, root["worlds"], c);
             if (!root["planners"].IsDefined())
                 r.fail(root, "planners", "missing");
-            readPlanners(r, root["planners"], c);
+            readPlanners(r, root["planners"], c, registry);
         }
         if (simulations)
             readSimulations(r, root["simulations"], c, registry);

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR="${1:-${MHPLAN_BUILD_DIR:-build}}"
 
 PACKAGES=(
-  g++ cmake make
+  g++ cmake make clang
   libompl-dev libfcl-dev libeigen3-dev libyaml-cpp-dev
   libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev

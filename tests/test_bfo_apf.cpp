@@ -22,6 +22,7 @@
 #include "mhplan/registry/Registry.h"
 #include "mhplan/collision/Validity.h"
 
+#include <ompl/util/Exception.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -229,7 +230,7 @@ TEST_F(BfoApf, PlannersRefuseACheckerWithoutClearance)
             ss.setup();
             FAIL() << name << " accepted a checker without clearance";
         }
-        catch (const std::invalid_argument &e)
+        catch (const ompl::Exception &e)
         {
             EXPECT_NE(std::string(e.what()).find("clearance"), std::string::npos) << e.what();
         }

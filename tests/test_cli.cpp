@@ -137,3 +137,135 @@ TEST(Cli, OptimumAndGapAreReported)
     EXPECT_TRUE(contains(r.out, "optimum:   14.4197868")) << r.out;
     EXPECT_TRUE(contains(r.out, "gap:")) << r.out;
 }
+
+// Issue 19: the defects found by trying malformed input, each refused with a clear message and rc 1.
+TEST(Cli, RefusesWhatTheHardeningPassFound)
+{
+    const std::string dup = tempPath("dup.yaml");
+    std::ofstream(dup)
+        << "bounds: [0, 10, 0, 10]\nobstacles:\n  - circle: {center: [5, 5], radius: 1, radius: 2}\n";
+    const std::string dupBounds = tempPath("dup_bounds.yaml");
+    std::ofstream(dupBounds) << "bounds: [0, 10, 0, 10]\nname: x\nbounds: [0, 20, 0, 20]\n";
+    const std::string rowsThreshold = tempPath("rows_threshold.yaml");
+    std::ofstream(rowsThreshold) << "grid:\n  rows: ['....', '....']\n  threshold: 0.3\n";
+    const std::string huge = tempPath("huge.yaml");
+    std::ofstream(huge) << "bounds: [-1e308, 1e308, -1e308, 1e308]\nobstacles:\n"
+                           "  - circle: {center: [0, 0], radius: 1e307}\n";
+    const std::string tiny = tempPath("tiny.yaml");
+    std::ofstream(tiny) << "bounds: [0, 1e-300, 0, 1e-300]\n";
+    struct Case
+    {
+        std::string args;
+        std::vector<std::string> expect;
+    };
+    const std::vector<Case> cases = {
+        {"plan bfo_case1 --planner RRTstar --set range=nan", {"parameter 'range'", "out of range", "finite"}},
+        {"plan bfo_case1 --planner SMA --set z=nan", {"parameter 'z'", "out of range"}},
+        {"plan bfo_case1 --planner APF --set step_size=nan", {"parameter 'step_size'", "out of range"}},
+        {"plan bfo_case1 --planner SMA --set population_size=2.5",
+         {"population_size", "an integer in [2, 10000]"}},
+        {"plan bfo_case1 --planner RRTstar --set range=1e999", {"parameter 'range'", "out of range"}},
+        {"plan bfo_case1 --time inf", {"--time", "finite number", "'inf'"}},
+        {"plan bfo_case1 --time nan", {"--time", "finite number"}},
+        {"plan bfo_case1 --start nan,1 --goal 9,9", {"--start", "not a finite number"}},
+        {"compare bfo_case1 --planners \"\"", {"--planners names no planner"}},
+        {"compare bfo_case1 --planners ,", {"--planners names no planner"}},
+        {"generate circles --radius 100 --bounds 0,10,0,10", {"--radius", "does not fit inside the bounds"}},
+        {"generate circles --bounds 0,1e-300,0,1", {"degenerate"}},
+        {"generate circles --bounds -1e308,1e308,0,10", {"within +-1e+09"}},
+        {"generate grid --width 100000 --height 100000", {"grid too large", "67108864"}},
+        {"generate maze --width 5000 --height 5000", {"grid cells allowed"}},
+        {"plan " + dup, {dup + ":3", "duplicate key 'radius'", "first given on line 3"}},
+        {"plan " + dupBounds, {dupBounds + ":3", "duplicate key 'bounds'", "first given on line 1"}},
+        {"plan " + rowsThreshold, {rowsThreshold + ":3", "grid.threshold", "only to a .pgm"}},
+        {"plan " + huge, {huge + ":1", "bounds", "within +-1e+09"}},
+        {"optimum " + huge, {huge + ":1", "bounds"}},
+        {"plan " + tiny, {tiny + ":1", "degenerate"}},
+        {"plan " + testing::TempDir(), {"is a directory, not a world file"}},
+    };
+    for (const auto &c : cases)
+    {
+        const Result r = run(c.args);
+        EXPECT_EQ(r.code, 1) << c.args << "\n" << r.out;
+        for (const auto &e : c.expect)
+            EXPECT_TRUE(contains(r.out, e)) << c.args << ": output lacks '" << e << "':\n" << r.out;
+        EXPECT_FALSE(contains(r.out, "internal error")) << c.args << "\n" << r.out;
+    }
+    // One prefix per message.
+    const Result unknown = run("worlds --nonsense");
+    EXPECT_EQ(unknown.code, 1);
+    EXPECT_TRUE(contains(unknown.out, "mhplan worlds: error: unknown option '--nonsense'")) << unknown.out;
+    const Result gen = run("generate circles --radius 100");
+    EXPECT_FALSE(contains(gen.out, "error: generate:")) << gen.out;
+}
+
+namespace
+{
+    /** \brief The value printed after \e key (e.g. "seed:"), up to the end of its line. */
+    std::string valueAfter(const std::string &out, const std::string &key)
+    {
+        const auto at = out.find(key);
+        if (at == std::string::npos)
+            return "";
+        const auto begin = out.find_first_not_of(' ', at + key.size());
+        return out.substr(begin, out.find('\n', begin) - begin);
+    }
+
+    /** \brief Everything from "length:" on except the timing line. */
+    std::string pathPart(const std::string &out)
+    {
+        const auto at = out.find("length:");
+        return at == std::string::npos ? std::string() : out.substr(at);
+    }
+} // namespace
+
+// Issue 19: the seed printed by a run without --seed is a 32-bit seed that --seed accepts and that gives the
+// same run (iteration-bounded planner: no wall-clock dependence).
+TEST(Cli, ThePrintedSeedReproducesTheRun)
+{
+    const std::string args = "plan bfo_case1 --planner SMA --time 100 --set max_iterations=30";
+    const Result first = run(args);
+    ASSERT_EQ(first.code, 0) << first.out;
+    const std::string seed = valueAfter(first.out, "seed:");
+    ASSERT_FALSE(seed.empty()) << first.out;
+    const unsigned long long value = std::stoull(seed);
+    EXPECT_GE(value, 1u);
+    EXPECT_LE(value, 4294967295ULL);
+    const Result again = run(args + " --seed " + seed);
+    ASSERT_EQ(again.code, 0) << again.out;
+    EXPECT_EQ(pathPart(first.out), pathPart(again.out));
+    EXPECT_FALSE(pathPart(first.out).empty());
+
+    // sim prints one seed, and it reproduces the run.
+    const std::string sim = "sim mapf_2robots --controller bfo --time-limit 20";
+    const Result s1 = run(sim);
+    ASSERT_NE(s1.code, 1) << s1.out;
+    const auto seeds = [](const std::string &out)
+    {
+        std::size_t n = 0;
+        for (auto at = out.find("seed:"); at != std::string::npos; at = out.find("seed:", at + 1))
+            ++n;
+        return n;
+    };
+    EXPECT_EQ(seeds(s1.out), 1u) << s1.out;
+    const std::string simSeed = valueAfter(s1.out, "seed:");
+    const Result s2 = run(sim + " --seed " + simSeed);
+    const auto table = [](const std::string &out) { return out.substr(0, out.find("wall time:")); };
+    EXPECT_EQ(table(s1.out).substr(table(s1.out).find("robot ")),
+              table(s2.out).substr(table(s2.out).find("robot ")));
+
+    // compare: a printed seed that --seed accepts.
+    const Result c = run("compare bfo_case1 --planners SMA --runs 1 --time 0.2");
+    ASSERT_EQ(c.code, 0) << c.out;
+    const std::string cs = c.out.substr(5, c.out.find(',') - 5);
+    EXPECT_EQ(run("compare bfo_case1 --planners SMA --runs 1 --time 0.2 --seed " + cs).code, 0);
+}
+
+// Issue 19: a gap is printed only for an exact, collision-free path.
+TEST(Cli, GapOnlyForExactValidPaths)
+{
+    const Result r = run("plan bfo_case1 --planner ThetaStar --set resolution=10000 --time 1");
+    EXPECT_EQ(r.code, 3) << r.out;
+    EXPECT_TRUE(contains(r.out, "gap:       - (no exact path)")) << r.out;
+    EXPECT_FALSE(contains(r.out, " %")) << r.out;
+}

@@ -299,12 +299,13 @@ TEST(GridIO, MovingAIErrorsNameFileAndLine)
         {"type octile\nheight two\nwidth 3\nmap\n...\n...\n", "t.map:2:", "height"},
         {"type octile\nheight 0\nwidth 3\nmap\n", "t.map:2:", "positive"},
         {"type octile\nheight 2\nwidth -3\nmap\n", "t.map:3:", "positive"},
-        {"type octile\nheight 2\n", "t.map:3:", "end of file"},
+        // End of file: the last line of the file, never one past it (issue 19).
+        {"type octile\nheight 2\n", "t.map:2:", "end of file"},
         {"type octile\nheight 2\nwidth 3\nmapp\n...\n...\n", "t.map:4:", "'map'"},
         {"type octile\nheight 2\nheight 3\nmap\n", "t.map:3:", "duplicate"},
         {head + "...\n....\n", "t.map:6:", "expected width 3"},
         {head + "..\n...\n", "t.map:5:", "expected width 3"},
-        {head + "...\n", "t.map:6:", "missing map rows"},
+        {head + "...\n", "t.map:5:", "missing map rows"},
         {head + "...\n.x.\n", "t.map:6:", "column 2"},
         {head + "...\n...\n@@@\n", "t.map:7:", "after"},
     };
@@ -332,7 +333,7 @@ TEST(GridIO, MovingAIErrorsNameFileAndLine)
     }
     catch (const InputError &e)
     {
-        EXPECT_NE(std::string(e.what()).find("grid_missing_rows.map:7:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("grid_missing_rows.map:6:"), std::string::npos) << e.what();
     }
     EXPECT_THROW(loadMovingAIMap(kData + "/grid_no_such_file.map"), InputError);
     std::istringstream ok(head + "...\n...\n");

@@ -11,6 +11,7 @@
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/planners/common/PopulationPlanner.h"
 
+#include <ompl/util/Exception.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -584,7 +585,7 @@ TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
             make(ss);
             ADD_FAILURE() << GetParam() << " accepted a validity checker without clearance";
         }
-        catch (const std::invalid_argument &e)
+        catch (const ompl::Exception &e)
         {
             EXPECT_NE(std::string(e.what()).find(GetParam() + ":"), std::string::npos) << e.what();
             EXPECT_NE(std::string(e.what()).find("clearance"), std::string::npos) << e.what();

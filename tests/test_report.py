@@ -198,6 +198,29 @@ class ReportTest(unittest.TestCase):
             self.assertEqual(proc.returncode, 1)
             self.assertIn("no such database", proc.stderr)
 
+    def test_bad_files_give_one_line_naming_the_file(self):
+        # Issue 19: a non-SQLite file, an output under /proc, an output that is a file: one line, rc 1.
+        script = os.path.join(ROOT, "analysis", "report.py")
+        with tempfile.TemporaryDirectory() as tmp:
+            text = os.path.join(tmp, "notes.db")
+            with open(text, "w") as f:
+                f.write("just some text\n")
+            dbpath = build_database(tmp)
+            existing = os.path.join(tmp, "existing.txt")
+            with open(existing, "w") as f:
+                f.write("x")
+            cases = [([text, "-o", os.path.join(tmp, "r1")], text, "not an SQLite database"),
+                     ([dbpath, "-o", "/proc/mhplan_report"], "/proc/mhplan_report", "cannot write"),
+                     ([dbpath, "-o", existing], existing, "not a directory")]
+            for args, named, what in cases:
+                proc = subprocess.run(["/usr/bin/python3", script] + args, capture_output=True, text=True)
+                self.assertEqual(proc.returncode, 1, proc.stderr)
+                lines = proc.stderr.strip().splitlines()
+                self.assertEqual(len(lines), 1, proc.stderr)
+                self.assertIn(named, lines[0])
+                self.assertIn(what, lines[0])
+                self.assertNotIn("Traceback", proc.stderr)
+
 
 # --- simulation experiments ("Moving worlds") -------------------------------------------------------------
 

@@ -9,6 +9,7 @@
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 
 #include <algorithm>
 #include <cmath>
@@ -100,18 +101,24 @@ namespace mhplan
 
     void PotentialField::requireClearance(const ob::SpaceInformation &si, const std::string &who)
     {
+        // Logged through OMPL's console as well as thrown, as every mhplan planner's setup() does.
+        const auto refuse = [&](const std::string &what)
+        {
+            OMPL_ERROR("%s", what.c_str());
+            throw ompl::Exception(what);
+        };
         const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si.getStateSpace().get());
         if (space == nullptr || space->getDimension() != 2)
-            throw std::invalid_argument(who + ": the potential field needs a 2D RealVectorStateSpace");
+            refuse(who + ": the potential field needs a 2D RealVectorStateSpace");
         const ob::StateValidityCheckerPtr &checker = si.getStateValidityChecker();
         if (!checker)
-            throw std::invalid_argument(who + ": the potential field needs a state validity checker");
+            refuse(who + ": the potential field needs a state validity checker");
         if (checker->getSpecs().clearanceComputationType == ob::StateValidityCheckerSpecs::NONE)
-            throw std::invalid_argument(
-                who + ": the state validity checker does not compute clearance "
-                      "(StateValidityCheckerSpecs::clearanceComputationType == NONE); the potential field's "
-                      "obstacle distance d(P) is the checker's clearance(), so it needs a checker that "
-                      "reports it (e.g. mhplan::WorldValidityChecker)");
+            refuse(who +
+                   ": the state validity checker does not compute clearance "
+                   "(StateValidityCheckerSpecs::clearanceComputationType == NONE); the potential field's "
+                   "obstacle distance d(P) is the checker's clearance(), so it needs a checker that "
+                   "reports it (e.g. mhplan::WorldValidityChecker)");
     }
 
     void PotentialField::configure(const PotentialFieldParameters &params, RepulsionMode mode,

@@ -133,8 +133,8 @@ namespace mhplan
         PotentialField(const PotentialField &) = delete;
         PotentialField &operator=(const PotentialField &) = delete;
 
-        /** \brief Throws std::invalid_argument, naming \e who, unless the space is a 2D RealVectorStateSpace
-            and the validity checker computes clearance. */
+        /** \brief Logs (OMPL_ERROR) and throws ompl::Exception, naming \e who, unless the space is a 2D
+           RealVectorStateSpace and the validity checker computes clearance. */
         static void requireClearance(const ompl::base::SpaceInformation &si, const std::string &who);
 
         /** \brief Set gains and mode and inspect the validity checker (call after the problem's setup). */

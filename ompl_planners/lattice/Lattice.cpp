@@ -11,6 +11,7 @@
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Exception.h>
 #include <ompl/util/String.h>
 
 #include <algorithm>
@@ -294,6 +295,20 @@ namespace mhplan
         }
         OMPL_INFORM("%s: %d x %d lattice, spacing %g", getName().c_str(), lattice_.width(), lattice_.height(),
                     lattice_.spacing());
+    }
+
+    void LatticePlanner::setup()
+    {
+        ob::Planner::setup();
+        const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get());
+        if (space == nullptr || space->getDimension() != 2)
+        {
+            const std::string what = getName() + ": needs a 2D RealVectorStateSpace, got '" +
+                                     si_->getStateSpace()->getName() + "' of dimension " +
+                                     std::to_string(si_->getStateSpace()->getDimension());
+            OMPL_ERROR("%s", what.c_str());
+            throw ompl::Exception(what);
+        }
     }
 
     bool LatticePlanner::prepareProblem(const ob::PlannerTerminationCondition &ptc, ob::PlannerStatus &status)

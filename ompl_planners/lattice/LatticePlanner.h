@@ -49,6 +49,8 @@ namespace mhplan
         ~LatticePlanner() override;
 
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+        /** \brief Refuses (OMPL_ERROR, then ompl::Exception) a space other than a 2D RealVectorStateSpace. */
+        void setup() override;
         void clear() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 

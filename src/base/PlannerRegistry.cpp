@@ -4,6 +4,7 @@
 #include "mhplan/base/World.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -21,7 +22,28 @@ namespace mhplan
             char *end = nullptr;
             errno = 0;
             out = std::strtod(s.c_str(), &end);
-            return errno == 0 && end == s.c_str() + s.size();
+            return errno == 0 && end == s.c_str() + s.size() && std::isfinite(out);
+        }
+
+        /** \brief "nan", "inf", "-inf", "1e999" and the like: a number that is not finite. */
+        bool notFinite(const std::string &s)
+        {
+            if (s.empty())
+                return false;
+            char *end = nullptr;
+            const double v = std::strtod(s.c_str(), &end);
+            return end == s.c_str() + s.size() && !std::isfinite(v);
+        }
+
+        /** \brief An integer range "lo:step:hi" (all three integers, as OMPL declares integer parameters). */
+        bool integerRange(const std::vector<std::string> &parts)
+        {
+            if (parts.size() != 3)
+                return false;
+            for (const auto &p : parts)
+                if (p.empty() || p.find_first_not_of("+-0123456789") != std::string::npos)
+                    return false;
+            return true;
         }
 
         std::vector<std::string> split(const std::string &s, char sep)
@@ -83,10 +105,10 @@ namespace mhplan
             if ((parts.size() != 2 && parts.size() != 3) || !parseDouble(parts.front(), lo) ||
                 !parseDouble(parts.back(), hi))
                 return ""; // not a numeric range: nothing to enforce
-            if (!parseDouble(value, v))
-                return "a number in [" + parts.front() + ", " + parts.back() + "]";
-            if (v < lo || v > hi)
-                return "a number in [" + parts.front() + ", " + parts.back() + "]";
+            const bool integer = integerRange(parts);
+            const std::string what = integer ? "an integer in [" : "a finite number in [";
+            if (!parseDouble(value, v) || v < lo || v > hi || (integer && v != std::floor(v)))
+                return what + parts.front() + ", " + parts.back() + "]";
             return "";
         }
         const std::vector<std::string> options = split(range, ',');
@@ -120,8 +142,10 @@ namespace mhplan
             const std::string range = ps[kv.first].getRangeSuggestion();
             // The planner's own current value is always accepted (some OMPL defaults sit outside their
             // declared range suggestion, e.g. PRM's max_nearest_neighbors).
-            const std::string problem =
+            std::string problem =
                 kv.second == ps[kv.first].getValue() ? std::string() : checkAgainstRange(kv.second, range);
+            if (problem.empty() && notFinite(kv.second))
+                problem = "a finite number";
             if (!problem.empty())
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
                                  kv.second + "' is out of range; expected " + problem);
@@ -133,7 +157,7 @@ namespace mhplan
             {
                 ok = ps.setParam(kv.first, value);
             }
-            catch (const std::invalid_argument &e)
+            catch (const std::exception &e)
             {
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
                                  "': " + e.what());

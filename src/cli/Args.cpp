@@ -2,6 +2,7 @@
 #include "mhplan/cli/Args.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -95,8 +96,9 @@ namespace mhplan::cli
         char *end = nullptr;
         errno = 0;
         const double v = std::strtod(it->second.c_str(), &end);
-        if (it->second.empty() || errno != 0 || end != it->second.c_str() + it->second.size())
-            throw InputError("mhplan " + command_ + ": option --" + name + " expects a number, got '" +
+        if (it->second.empty() || errno != 0 || end != it->second.c_str() + it->second.size() ||
+            !std::isfinite(v))
+            throw InputError("mhplan " + command_ + ": option --" + name + " expects a finite number, got '" +
                              it->second + "'");
         return v;
     }
@@ -134,8 +136,9 @@ namespace mhplan::cli
             char *end = nullptr;
             errno = 0;
             const double v = std::strtod(item.c_str(), &end);
-            if (item.empty() || errno != 0 || end != item.c_str() + item.size())
-                throw InputError("option " + name + ": '" + item + "' is not a number (in '" + text + "')");
+            if (item.empty() || errno != 0 || end != item.c_str() + item.size() || !std::isfinite(v))
+                throw InputError("option " + name + ": '" + item + "' is not a finite number (in '" + text +
+                                 "')");
             out.push_back(v);
         }
         return out;

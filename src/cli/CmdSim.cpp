@@ -90,6 +90,10 @@ namespace mhplan::cli
             if (!(limit > 0.0) || std::isinf(limit))
                 throw InputError("mhplan sim: --time-limit must be > 0 seconds (got " +
                                  args.get("time-limit") + ")");
+            if (limit / scenario.settings.dt > 1e7)
+                throw InputError("mhplan sim: --time-limit " + args.get("time-limit") + " at dt " +
+                                 std::to_string(scenario.settings.dt) +
+                                 " s would take more than 10^7 steps (the limit of a scenario)");
             scenario.settings.timeLimit = limit;
         }
         GifOptions gif;
@@ -163,7 +167,6 @@ namespace mhplan::cli
                 std::cout << " " << kv.first << "=" << std::setprecision(10) << kv.second;
             std::cout << "\n";
         }
-        std::cout << "seed:       " << r.seed << "\n";
 
         if (args.has("csv"))
         {

@@ -102,9 +102,13 @@ namespace mhplan::cli
         if (args.has("seed") && (seed <= 0 || seed > 0xFFFFFFFFLL))
             throw InputError("mhplan " + args.command() + ": --seed must be in [1, 4294967295] (got " +
                              args.get("seed") + ")");
-        if (args.has("seed"))
-            ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
-        return ompl::RNG::getSeed();
+        // Without --seed, OMPL's own first seed (from the clock; on 64-bit Linux wider than 32 bits) is
+        // folded into [1, 2^32 - 1] and set, so that the printed seed, given as --seed, reproduces the run.
+        const std::uint_fast32_t used =
+            args.has("seed") ? static_cast<std::uint_fast32_t>(seed)
+                             : static_cast<std::uint_fast32_t>(ompl::RNG::getSeed() % 0xFFFFFFFFULL + 1);
+        ompl::RNG::setSeed(used);
+        return used;
     }
 
     OptimumOrReason optimumOrReason(const World &world, const Query &query)
@@ -174,11 +178,19 @@ namespace mhplan::cli
         const double length = polylineLength(pts);
         std::cout << std::setprecision(9) << "length:    " << length << "\n";
         const OptimumOrReason optimum = optimumOrReason(world, query);
+        const bool exactPath = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
         if (optimum.result.found)
-            std::cout << "optimum:   " << optimum.result.length << " (" << optimum.result.method << ")\n"
-                      << std::setprecision(4)
-                      << "gap:       " << 100.0 * optimalityGap(length, optimum.result) << " %\n"
-                      << std::setprecision(9);
+        {
+            std::cout << "optimum:   " << optimum.result.length << " (" << optimum.result.method << ")\n";
+            // A gap means something only for a path that reaches the goal and is collision-free.
+            if (exactPath && collisionFree)
+                std::cout << std::setprecision(4)
+                          << "gap:       " << 100.0 * optimalityGap(length, optimum.result) << " %\n"
+                          << std::setprecision(9);
+            else
+                std::cout << "gap:       - ("
+                          << (exactPath ? "the path is not collision-free" : "no exact path") << ")\n";
+        }
         else
             std::cout << "optimum:   not available (" << optimum.reason << ")\n";
         std::cout << "valid:     " << (collisionFree ? "yes" : "NO") << " (exact segment check)\n";
@@ -351,6 +363,9 @@ namespace mhplan::cli
             throw InputError("mhplan compare: --runs must be in [1, 1000] (got " + args.get("runs") + ")");
         std::vector<std::string> planners =
             args.has("planners") ? splitList(args.get("planners")) : defaultComparePlanners();
+        if (planners.empty())
+            throw InputError("mhplan compare: --planners names no planner (got '" + args.get("planners") +
+                             "'); give a comma-separated list, e.g. RRTstar,SMA");
         for (const auto &p : planners)
             PlannerRegistry::builtin().get(p); // refuse unknown names before any work
         std::vector<std::string> files;

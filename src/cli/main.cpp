@@ -104,7 +104,13 @@ int main(int argc, char **argv)
     }
     catch (const mhplan::InputError &e)
     {
-        std::cerr << "mhplan " << name << ": error: " << e.what() << "\n";
+        // Messages from the option parser already start with "mhplan NAME: ": print that prefix once.
+        std::string what = e.what();
+        const std::string prefix = "mhplan " + name + ": ";
+        for (const std::string &p : {prefix, name + ": "})
+            if (what.compare(0, p.size(), p) == 0)
+                what = what.substr(p.size());
+        std::cerr << prefix << "error: " << what << "\n";
         return 1;
     }
     catch (const std::exception &e)

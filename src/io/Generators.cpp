@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/Generators.h"
 
+#include "mhplan/io/GridIO.h"
+#include "mhplan/io/WorldIO.h"
+
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <random>
@@ -12,18 +16,26 @@ namespace mhplan
     {
         void checkCommon(const GeneratorOptions &o, bool geometric)
         {
-            if (!(o.bounds.xmin < o.bounds.xmax) || !(o.bounds.ymin < o.bounds.ymax))
-                throw InputError("generate: bounds need xmin < xmax and ymin < ymax");
-            if (o.robotRadius < 0.0)
-                throw InputError("generate: --radius must be >= 0 (got " + std::to_string(o.robotRadius) +
-                                 ")");
+            const std::string bounds = boundsProblem(o.bounds);
+            if (!bounds.empty())
+                throw InputError("generate: --bounds: " + bounds);
+            if (!(o.robotRadius >= 0.0) || !std::isfinite(o.robotRadius))
+                throw InputError("generate: --radius must be finite and >= 0 (got " +
+                                 std::to_string(o.robotRadius) + ")");
+            if (geometric && 2.0 * o.robotRadius >= std::min(o.bounds.width(), o.bounds.height()))
+                throw InputError("generate: --radius " + std::to_string(o.robotRadius) +
+                                 ": the robot does not fit inside the bounds");
             if (geometric && (!(o.minSize > 0.0) || o.maxSize < o.minSize))
                 throw InputError("generate: sizes need 0 < --min-size <= --max-size (got " +
                                  std::to_string(o.minSize) + ", " + std::to_string(o.maxSize) + ")");
             if (!geometric && (o.width < 2 || o.height < 2 || o.width > 100000 || o.height > 100000))
                 throw InputError("generate: --width and --height must be in [2, 100000]");
-            if (!geometric && !(o.cellSize > 0.0))
-                throw InputError("generate: --cell-size must be > 0");
+            if (!geometric && static_cast<long long>(o.width) * o.height > kMaxGridCells)
+                throw InputError("generate: grid too large: " + std::to_string(o.width) + " x " +
+                                 std::to_string(o.height) + " cells (at most " +
+                                 std::to_string(kMaxGridCells) + " cells)");
+            if (!geometric && (!(o.cellSize > 0.0) || !std::isfinite(o.cellSize)))
+                throw InputError("generate: --cell-size must be finite and > 0");
         }
 
         Query cornerQuery(const GeneratorOptions &o)
@@ -125,6 +137,10 @@ namespace mhplan
     World generateMaze(const GeneratorOptions &o)
     {
         checkCommon(o, false);
+        if ((2LL * o.width + 1) * (2LL * o.height + 1) > kMaxGridCells)
+            throw InputError("generate maze: a " + std::to_string(o.width) + " x " +
+                             std::to_string(o.height) + " maze needs more than the " +
+                             std::to_string(kMaxGridCells) + " grid cells allowed");
         PortableRandom rng(o.seed);
         const int mw = o.width;
         const int mh = o.height;

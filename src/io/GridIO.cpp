@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/GridIO.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -69,11 +71,21 @@ namespace mhplan
             long long v = 0;
             std::string rest;
             if (!(ss >> k) || k != key || !(ss >> v) || (ss >> rest))
-                throw InputError(where(fileName, lineNo) + "expected '" + key + " <N>', got '" + line + "'");
+                throw InputError(where(fileName, lineNo) + "expected '" + key + " <N>', got '" +
+                                 printableText(line) + "'");
             if (v <= 0 || v > std::numeric_limits<int>::max() / 2)
                 throw InputError(where(fileName, lineNo) + key + " must be a positive integer, got " +
                                  std::to_string(v));
             return static_cast<int>(v);
+        }
+
+        /** \brief A grid may hold at most kMaxGridCells cells (see GridIO.h). */
+        void checkGridCells(long long width, long long height, const std::string &fileName, int lineNo)
+        {
+            if (width * height > kMaxGridCells)
+                throw InputError(where(fileName, lineNo) + "grid too large: " + std::to_string(width) +
+                                 " x " + std::to_string(height) + " cells (at most " +
+                                 std::to_string(kMaxGridCells) + " cells)");
         }
 
         /** \brief 0 free, 1 blocked, -1 unknown. */
@@ -105,6 +117,27 @@ namespace mhplan
         }
     } // namespace
 
+    std::string printableText(const std::string &s)
+    {
+        std::string out;
+        for (std::size_t i = 0; i < s.size() && i < 60; ++i)
+        {
+            const unsigned char c = static_cast<unsigned char>(s[i]);
+            if (c >= 0x20 && c < 0x7f)
+                out += static_cast<char>(c);
+            else
+            {
+                static const char *hex = "0123456789abcdef";
+                out += "\\x";
+                out += hex[c >> 4];
+                out += hex[c & 15];
+            }
+        }
+        if (s.size() > 60)
+            out += "...";
+        return out;
+    }
+
     OccupancyGrid parseMovingAIMap(std::istream &in, const std::string &fileName, double cellSize)
     {
         checkCellSize(cellSize);
@@ -117,11 +150,11 @@ namespace mhplan
             std::istringstream ss(line);
             std::string k, v, rest;
             if (!(ss >> k >> v) || k != "type" || (ss >> rest))
-                throw InputError(where(fileName, reader.line()) + "expected 'type octile', got '" + line +
-                                 "'");
+                throw InputError(where(fileName, reader.line()) + "expected 'type octile', got '" +
+                                 printableText(line) + "'");
             if (v != "octile")
-                throw InputError(where(fileName, reader.line()) + "unsupported map type '" + v +
-                                 "' (only 'octile')");
+                throw InputError(where(fileName, reader.line()) + "unsupported map type '" +
+                                 printableText(v) + "' (only 'octile')");
         }
 
         int height = 0;
@@ -131,7 +164,7 @@ namespace mhplan
         {
             if (!reader.next(line))
                 throw InputError(
-                    where(fileName, reader.line() + 1) +
+                    where(fileName, std::max(1, reader.line())) +
                     "unexpected end of file in the header, expected 'height <H>' and 'width <W>'");
             const std::string key = trimmed(line).rfind("width", 0) == 0 ? "width" : "height";
             int &target = key == "width" ? width : height;
@@ -141,21 +174,24 @@ namespace mhplan
         }
 
         if (!reader.next(line))
-            throw InputError(where(fileName, reader.line() + 1) + "unexpected end of file, expected 'map'");
+            throw InputError(where(fileName, reader.line()) + "unexpected end of file, expected 'map'");
         if (trimmed(line) != "map")
-            throw InputError(where(fileName, reader.line()) + "expected 'map', got '" + line + "'");
+            throw InputError(where(fileName, reader.line()) + "expected 'map', got '" + printableText(line) +
+                             "'");
 
-        OccupancyGrid grid(width, height, cellSize);
+        checkGridCells(width, height, fileName, reader.line());
+        // The rows are read before the grid exists: memory grows with the input, never with what the
+        // header declares.
+        std::vector<std::uint8_t> cells;
         for (int row = 0; row < height; ++row)
         {
             if (!reader.next(line))
-                throw InputError(where(fileName, reader.line() + 1) + "missing map rows: expected " +
+                throw InputError(where(fileName, reader.line()) + "missing map rows: expected " +
                                  std::to_string(height) + ", found " + std::to_string(row));
-            if (static_cast<int>(line.size()) != width)
+            if (static_cast<long long>(line.size()) != width)
                 throw InputError(where(fileName, reader.line()) + "row " + std::to_string(row + 1) + " has " +
                                  std::to_string(line.size()) + " characters, expected width " +
                                  std::to_string(width));
-            const int iy = grid.rowToIy(row);
             for (int col = 0; col < width; ++col)
             {
                 const int v = movingAICell(line[static_cast<std::size_t>(col)]);
@@ -164,8 +200,15 @@ namespace mhplan
                                      ": unknown map character " +
                                      printable(line[static_cast<std::size_t>(col)]) +
                                      " (free: . G S; blocked: @ O T W)");
-                grid.setBlocked(col, iy, v == 1);
+                cells.push_back(static_cast<std::uint8_t>(v));
             }
+        }
+        OccupancyGrid grid(width, height, cellSize);
+        for (int row = 0; row < height; ++row)
+        {
+            const int iy = grid.rowToIy(row);
+            for (int col = 0; col < width; ++col)
+                grid.setBlocked(col, iy, cells[static_cast<std::size_t>(row) * width + col] != 0);
         }
         while (reader.next(line))
         {
@@ -228,7 +271,7 @@ namespace mhplan
                 {
                     if (!std::isdigit(static_cast<unsigned char>(ch)) || v > 1000000000LL)
                         throw InputError(where(fileName_, startLine) + "expected " + what +
-                                         " (a non-negative integer), got '" + tok + "'");
+                                         " (a non-negative integer), got '" + printableText(tok) + "'");
                     v = v * 10 + (ch - '0');
                 }
                 return v;
@@ -309,20 +352,20 @@ namespace mhplan
         if (width <= 0 || height <= 0)
             throw InputError(where(fileName, widthLine) + "PGM width and height must be positive, got " +
                              std::to_string(width) + " x " + std::to_string(height));
-        if (width * height > (1LL << 31))
-            throw InputError(where(fileName, widthLine) + "PGM image too large: " + std::to_string(width) +
-                             " x " + std::to_string(height));
+        checkGridCells(width, height, fileName, widthLine);
         const long long maxval = reader.integer("maxval");
         if (maxval <= 0 || maxval > 65535)
             throw InputError(where(fileName, reader.tokenLine()) + "PGM maxval must be in [1, 65535], got " +
                              std::to_string(maxval));
 
-        OccupancyGrid grid(static_cast<int>(width), static_cast<int>(height), cellSize);
         const double cut = threshold * static_cast<double>(maxval);
         auto isBlocked = [&](long long v)
         { return negate ? static_cast<double>(v) > cut : static_cast<double>(v) < cut; };
 
+        // The pixels are read before the grid exists: memory grows with the input, never with what the
+        // header declares.
         const std::size_t n = static_cast<std::size_t>(width * height);
+        std::vector<std::uint8_t> cells;
         if (magic == "P2")
         {
             for (std::size_t k = 0; k < n; ++k)
@@ -333,34 +376,52 @@ namespace mhplan
                     throw InputError(where(fileName, reader.tokenLine()) + "pixel " + std::to_string(k + 1) +
                                      " value " + std::to_string(v) + " exceeds maxval " +
                                      std::to_string(maxval));
-                const int col = static_cast<int>(k % static_cast<std::size_t>(width));
-                const int row = static_cast<int>(k / static_cast<std::size_t>(width));
-                grid.setBlocked(col, grid.rowToIy(row), isBlocked(v));
+                cells.push_back(isBlocked(v) ? 1 : 0);
             }
         }
         else
         {
             reader.singleWhitespace();
             const std::size_t bytesPer = maxval > 255 ? 2 : 1;
-            std::vector<unsigned char> raster(n * bytesPer);
-            in.read(reinterpret_cast<char *>(raster.data()), static_cast<std::streamsize>(raster.size()));
-            const std::size_t got = static_cast<std::size_t>(in.gcount());
-            if (got != raster.size())
-                throw InputError(where(fileName, reader.line()) + "truncated P5 raster: expected " +
-                                 std::to_string(raster.size()) + " bytes, found " + std::to_string(got));
-            for (std::size_t k = 0; k < n; ++k)
+            const std::size_t expected = n * bytesPer;
+            std::vector<unsigned char> chunk(std::min<std::size_t>(expected, 1 << 16));
+            std::size_t got = 0;
+            while (got < expected)
             {
-                long long v = raster[k * bytesPer];
-                if (bytesPer == 2)
-                    v = (v << 8) | raster[k * bytesPer + 1]; // 16-bit PGM is big-endian
-                if (v > maxval)
-                    throw InputError(fileName + ": P5 pixel " + std::to_string(k + 1) + " value " +
-                                     std::to_string(v) + " exceeds maxval " + std::to_string(maxval) +
-                                     " (byte offset " + std::to_string(k * bytesPer) + " of the raster)");
-                const int col = static_cast<int>(k % static_cast<std::size_t>(width));
-                const int row = static_cast<int>(k / static_cast<std::size_t>(width));
-                grid.setBlocked(col, grid.rowToIy(row), isBlocked(v));
+                const std::size_t want = std::min(chunk.size(), expected - got);
+                in.read(reinterpret_cast<char *>(chunk.data()), static_cast<std::streamsize>(want));
+                const std::size_t read = static_cast<std::size_t>(in.gcount());
+                if (read % bytesPer != 0 || read == 0)
+                {
+                    got += read;
+                    break;
+                }
+                for (std::size_t b = 0; b < read; b += bytesPer)
+                {
+                    long long v = chunk[b];
+                    if (bytesPer == 2)
+                        v = (v << 8) | chunk[b + 1]; // 16-bit PGM is big-endian
+                    const std::size_t k = (got + b) / bytesPer;
+                    if (v > maxval)
+                        throw InputError(fileName + ": P5 pixel " + std::to_string(k + 1) + " value " +
+                                         std::to_string(v) + " exceeds maxval " + std::to_string(maxval) +
+                                         " (byte offset " + std::to_string(got + b) + " of the raster)");
+                    cells.push_back(isBlocked(v) ? 1 : 0);
+                }
+                got += read;
+                if (read < want)
+                    break;
             }
+            if (got != expected)
+                throw InputError(where(fileName, reader.line()) + "truncated P5 raster: expected " +
+                                 std::to_string(expected) + " bytes, found " + std::to_string(got));
+        }
+        OccupancyGrid grid(static_cast<int>(width), static_cast<int>(height), cellSize);
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            const int col = static_cast<int>(k % static_cast<std::size_t>(width));
+            const int row = static_cast<int>(k / static_cast<std::size_t>(width));
+            grid.setBlocked(col, grid.rowToIy(row), cells[k] != 0);
         }
         return grid;
     }

@@ -10,6 +10,15 @@
 
 namespace mhplan
 {
+    /** \brief The largest grid a reader accepts (8192 x 8192 cells, 64 MiB of cells): a larger .map, .pgm,
+        inline grid or generated grid is refused with a message that states this limit. A reader's memory
+        grows with its input, never with the size a header declares. */
+    constexpr long long kMaxGridCells = 1LL << 26;
+
+    /** \brief Input text safe to echo in a message: printable ASCII kept, other bytes as \xHH, cut after 60
+        characters. */
+    std::string printableText(const std::string &s);
+
     /** \brief Parse a MovingAI octile map ("type octile", "height H", "width W", "map", then H rows of W
         characters: '.', 'G', 'S' free; '@', 'O', 'T', 'W' blocked). Throws InputError naming \e fileName and
         the line on any problem (bad header, wrong row length, unknown character, missing rows). */

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -54,8 +55,9 @@ namespace mhplan
                      r.number(r.require(n, "ymin", "bounds"), "bounds.ymin"),
                      r.number(r.require(n, "ymax", "bounds"), "bounds.ymax")};
             }
-            if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
-                r.fail(n, "bounds", "needs xmin < xmax and ymin < ymax");
+            const std::string problem = boundsProblem(b);
+            if (!problem.empty())
+                r.fail(n, "bounds", problem);
             return b;
         }
 
@@ -64,7 +66,7 @@ namespace mhplan
             const std::string base = "obstacles[" + std::to_string(index) + "]";
             if (!item.IsMap() || item.size() != 1)
                 r.fail(item, base, "expected one of {circle: ...}, {rectangle: ...}, {polygon: ...}");
-            const std::string kind = item.begin()->first.as<std::string>();
+            const std::string kind = r.key(item.begin()->first, base);
             const YAML::Node n = item.begin()->second;
             const std::string field = base + "." + kind;
             if (kind == "circle")
@@ -72,7 +74,8 @@ namespace mhplan
                 r.allowKeys(n, field, {"center", "radius"});
                 Circle c;
                 c.center = r.point(r.require(n, "center", field), field + ".center");
-                c.radius = r.number(r.require(n, "radius", field), field + ".radius");
+                c.radius = r.number(r.require(n, "radius", field), field + ".radius", -kMaxCoordinate,
+                                    kMaxCoordinate);
                 if (!(c.radius > 0.0))
                     r.fail(n["radius"], field + ".radius", "must be > 0 (got " + n["radius"].Scalar() + ")");
                 world.circles.push_back(c);
@@ -109,6 +112,10 @@ namespace mhplan
                 const YAML::Node pts = r.require(n, "points", field);
                 if (!pts.IsSequence() || pts.size() < 3)
                     r.fail(pts, field + ".points", "expected a list of at least 3 points");
+                if (pts.size() > kMaxPolygonVertices)
+                    r.fail(pts, field + ".points",
+                           std::to_string(pts.size()) + " vertices; a polygon may have at most " +
+                               std::to_string(kMaxPolygonVertices) + " (split it into several polygons)");
                 std::vector<Vec2> v;
                 for (std::size_t i = 0; i < pts.size(); ++i)
                     v.push_back(r.point(pts[i], field + ".points[" + std::to_string(i) + "]"));
@@ -134,6 +141,13 @@ namespace mhplan
             const bool hasRows = n["rows"].IsDefined();
             if (hasFile == hasRows)
                 r.fail(n, "grid", "give exactly one of 'file' (a .map or .pgm) and 'rows'");
+            const bool pgmFile = hasFile && n["file"].IsScalar() && extensionOf(n["file"].Scalar()) == "pgm";
+            for (const char *key : {"threshold", "negate"})
+                if (n[key].IsDefined() && !pgmFile)
+                    r.fail(n[key], std::string("grid.") + key,
+                           "applies only to a .pgm grid file (line " +
+                               std::to_string(n[key].Mark().line + 1) + "), not to " +
+                               (hasRows ? "'rows'" : "a .map file"));
             OccupancyGrid grid;
             if (hasRows)
             {
@@ -161,21 +175,23 @@ namespace mhplan
                 if (!path.empty() && path[0] != '/')
                     path = directoryOf(r.file()) + "/" + path;
                 const std::string ext = extensionOf(path);
+                if (ext != "map" && ext != "pgm")
+                    r.fail(n["file"], "grid.file", "expected a .map or .pgm file, got '" + path + "'");
+                double threshold = 0.5;
+                bool negate = false;
+                if (ext == "pgm")
+                {
+                    threshold = n["threshold"].IsDefined() ? r.number(n["threshold"], "grid.threshold") : 0.5;
+                    if (!(threshold > 0.0 && threshold < 1.0))
+                        r.fail(n["threshold"], "grid.threshold", "must be in (0, 1)");
+                    negate = n["negate"].IsDefined() && r.boolean(n["negate"], "grid.negate");
+                }
                 try
                 {
                     if (ext == "map")
                         grid = loadMovingAIMap(path, cell);
-                    else if (ext == "pgm")
-                    {
-                        const double threshold =
-                            n["threshold"].IsDefined() ? r.number(n["threshold"], "grid.threshold") : 0.5;
-                        if (!(threshold > 0.0 && threshold < 1.0))
-                            r.fail(n["threshold"], "grid.threshold", "must be in (0, 1)");
-                        const bool negate = n["negate"].IsDefined() && r.boolean(n["negate"], "grid.negate");
-                        grid = loadPgm(path, cell, threshold, negate);
-                    }
                     else
-                        r.fail(n["file"], "grid.file", "expected a .map or .pgm file, got '" + path + "'");
+                        grid = loadPgm(path, cell, threshold, negate);
                 }
                 catch (const InputError &e)
                 {
@@ -191,6 +207,9 @@ namespace mhplan
                         moved.setBlocked(ix, iy, grid.blocked(ix, iy));
                 grid = std::move(moved);
             }
+            const std::string problem = boundsProblem(grid.bounds());
+            if (!problem.empty())
+                r.fail(n, "grid", "the grid's extent (cell_size times the cells, from origin): " + problem);
             return std::make_shared<const OccupancyGrid>(std::move(grid));
         }
 
@@ -218,6 +237,28 @@ namespace mhplan
         }
     } // namespace
 
+    std::string boundsProblem(const Box &b)
+    {
+        const double c[4] = {b.xmin, b.xmax, b.ymin, b.ymax};
+        for (double v : c)
+            if (!std::isfinite(v) || std::fabs(v) > kMaxCoordinate)
+            {
+                std::ostringstream msg;
+                msg << "coordinates must be finite and within +-" << kMaxCoordinate << " (got " << v << ")";
+                return msg.str();
+            }
+        if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
+            return "needs xmin < xmax and ymin < ymax";
+        if (b.width() < kMinExtent || b.height() < kMinExtent)
+        {
+            std::ostringstream msg;
+            msg << "the extent " << b.width() << " x " << b.height() << " is degenerate (at least "
+                << kMinExtent << " in x and y)";
+            return msg.str();
+        }
+        return "";
+    }
+
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
     {
         const YAML::Node root = loadYamlMapping(textIn, fileName, "world file", "environments/README.md");
@@ -244,7 +285,8 @@ namespace mhplan
         if (root["robot"].IsDefined())
         {
             r.allowKeys(root["robot"], "robot", {"radius"});
-            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius");
+            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius",
+                                         -kMaxCoordinate, kMaxCoordinate);
             if (world.robotRadius < 0.0)
                 r.fail(root["robot"]["radius"], "robot.radius",
                        "must be >= 0 (got " + root["robot"]["radius"].Scalar() + ")");
@@ -306,6 +348,9 @@ namespace mhplan
 
     World loadWorld(const std::string &path)
     {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec))
+            throw InputError(path + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
         std::ifstream in(path);
         if (!in)
             throw InputError(path + ": cannot open world file");
@@ -326,8 +371,15 @@ namespace mhplan
             return w;
         }
         if (ext != "yaml" && ext != "yml")
-            throw InputError(path + ": unknown world file type '." + ext +
-                             "'; accepted: .yaml, .yml, .map, .pgm");
+            throw InputError(path + ": " +
+                             (ext.empty() ? std::string("the file name has no extension")
+                                          : "unknown world file type '." + ext + "'") +
+                             "; accepted: .yaml, .yml, .map, .pgm");
+        const auto size = std::filesystem::file_size(path, ec);
+        if (!ec && size > kMaxYamlBytes)
+            throw InputError(path + ": the world file is " + std::to_string(size) +
+                             " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                             " bytes (4 MiB; large grids belong in .map or .pgm files)");
         std::stringstream buffer;
         buffer << in.rdbuf();
         return parseWorldYaml(buffer.str(), path);

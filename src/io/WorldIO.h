@@ -12,6 +12,19 @@
 
 namespace mhplan
 {
+    /** \brief The largest coordinate (in absolute value) of bounds, obstacles and query points, and the
+        largest radius; beyond it lengths lose the precision the planners and the optimum solver need. */
+    constexpr double kMaxCoordinate = 1e9;
+    /** \brief The most vertices of one polygon (its simplicity check is quadratic: 2,000 vertices take
+        about 50 ms). */
+    constexpr std::size_t kMaxPolygonVertices = 2000;
+    /** \brief The smallest extent of the bounds in x and y. */
+    constexpr double kMinExtent = 1e-6;
+
+    /** \brief Why \e b cannot bound a world (not finite, xmin >= xmax, a coordinate beyond kMaxCoordinate,
+        an extent below kMinExtent), or an empty string when it can. */
+    std::string boundsProblem(const Box &b);
+
     /** \brief Load a world: a YAML world file (.yaml/.yml, see environments/README.md), a MovingAI map
         (.map) or a PGM image (.pgm, threshold 0.5 of the maximum grey value, dark = blocked). Throws
         InputError naming the file, line and field on any problem (malformed YAML, unknown keys, negative

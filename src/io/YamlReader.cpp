@@ -4,6 +4,7 @@
 #include "mhplan/base/World.h"
 
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace mhplan
@@ -11,6 +12,10 @@ namespace mhplan
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
                                const std::string &help)
     {
+        if (text.size() > kMaxYamlBytes)
+            throw InputError(fileName + ": the " + what + " is " + std::to_string(text.size()) +
+                             " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                             " bytes (4 MiB; large grids belong in .map or .pgm files)");
         YAML::Node root;
         try
         {
@@ -38,21 +43,43 @@ namespace mhplan
         throw InputError(msg.str());
     }
 
-    void YamlReader::allowKeys(const YAML::Node &map, const std::string &field,
-                               const std::set<std::string> &keys) const
+    std::string YamlReader::key(const YAML::Node &keyNode, const std::string &field) const
+    {
+        if (!keyNode.IsScalar())
+            fail(keyNode, field, "a key must be a plain name, not a list or a mapping");
+        return keyNode.Scalar();
+    }
+
+    void YamlReader::uniqueKeys(const YAML::Node &map, const std::string &field) const
     {
         if (!map.IsMap())
             fail(map, field, "expected a mapping");
+        std::map<std::string, int> seen; // key -> its 1-based line
         for (const auto &kv : map)
         {
-            const std::string key = kv.first.as<std::string>();
-            if (keys.count(key) != 0)
+            const std::string k = key(kv.first, field.empty() ? std::string("(key)") : field + ".(key)");
+            const auto previous = seen.emplace(k, kv.first.Mark().line + 1);
+            if (!previous.second)
+                fail(kv.first, field.empty() ? k : field + "." + k,
+                     "duplicate key '" + k + "' (first given on line " +
+                         std::to_string(previous.first->second) + ")");
+        }
+    }
+
+    void YamlReader::allowKeys(const YAML::Node &map, const std::string &field,
+                               const std::set<std::string> &keys) const
+    {
+        uniqueKeys(map, field);
+        for (const auto &kv : map)
+        {
+            const std::string k = kv.first.Scalar();
+            if (keys.count(k) != 0)
                 continue;
             std::string accepted;
-            for (const auto &k : keys)
-                accepted += (accepted.empty() ? "" : ", ") + k;
-            fail(kv.first, field.empty() ? key : field + "." + key,
-                 "unknown key '" + key + "'; accepted: " + accepted);
+            for (const auto &a : keys)
+                accepted += (accepted.empty() ? "" : ", ") + a;
+            fail(kv.first, field.empty() ? k : field + "." + k,
+                 "unknown key '" + k + "'; accepted: " + accepted);
         }
     }
 
@@ -134,6 +161,7 @@ namespace mhplan
     {
         if (!n.IsSequence() || n.size() != 2)
             fail(n, field, "expected a point [x, y]");
-        return {number(n[0], field + "[0]"), number(n[1], field + "[1]")};
+        // The coordinate limit of world files (kMaxCoordinate in WorldIO.h).
+        return {number(n[0], field + "[0]", -1e9, 1e9), number(n[1], field + "[1]", -1e9, 1e9)};
     }
 } // namespace mhplan

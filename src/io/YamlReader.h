@@ -7,13 +7,19 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstddef>
 #include <set>
 #include <string>
 
 namespace mhplan
 {
-    /** \brief Parse one YAML document that must be a mapping; InputError "FILE:LINE:COL: malformed YAML: ..."
-        or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
+    /** \brief The largest YAML input file (world, scenario, campaign): 4 MiB. yaml-cpp holds several KB per
+        node, so a 50 MB world of circles would take gigabytes; larger worlds belong in grid files (.map,
+        .pgm), which are read row by row. */
+    constexpr std::size_t kMaxYamlBytes = std::size_t{4} << 20;
+
+    /** \brief Parse one YAML document that must be a mapping (at most kMaxYamlBytes); InputError
+       "FILE:LINE:COL: malformed YAML: ..." or "FILE:1: a WHAT must be a YAML mapping (see HELP)". */
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
                                const std::string &help);
 
@@ -26,7 +32,13 @@ namespace mhplan
 
         [[noreturn]] void fail(const YAML::Node &node, const std::string &field,
                                const std::string &what) const;
-        /** \brief \e map must be a mapping whose keys are all in \e keys (the message lists them). */
+        /** \brief A mapping key, which must be a scalar (a list or mapping as a key is refused). */
+        std::string key(const YAML::Node &keyNode, const std::string &field) const;
+        /** \brief \e map must be a mapping of scalar keys, each given once (a repeated key is refused,
+            naming both lines). */
+        void uniqueKeys(const YAML::Node &map, const std::string &field) const;
+        /** \brief \e map must be a mapping whose keys are all in \e keys (the message lists them), each
+            given once (a repeated key is refused, naming both lines). */
         void allowKeys(const YAML::Node &map, const std::string &field,
                        const std::set<std::string> &keys) const;
         /** \brief map[key], which must be present and not null. */

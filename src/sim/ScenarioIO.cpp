@@ -100,6 +100,10 @@ namespace mhplan
             return out;
         }
 
+        /** \brief The smallest time step and the most steps one simulation may take (time_limit / dt). */
+        constexpr double kMinDt = 1e-4;
+        constexpr double kMaxSteps = 1e7;
+
         void readSettings(const YamlReader &r, const YAML::Node &n, SimulationSettings &s)
         {
             r.allowKeys(
@@ -122,8 +126,16 @@ namespace mhplan
             if (n["record_every"].IsDefined())
                 s.recordEvery = static_cast<unsigned int>(
                     r.integer(n["record_every"], "simulation.record_every", 1, 1000000));
+            if (s.dt < kMinDt)
+                r.fail(n["dt"], "simulation.dt",
+                       "must be at least " + std::to_string(kMinDt) + " s (got " + n["dt"].Scalar() + ")");
             if (s.dt > s.timeLimit)
                 r.fail(n, "simulation.dt", "must not exceed time_limit");
+            if (s.timeLimit / s.dt > kMaxSteps)
+                r.fail(n["dt"].IsDefined() ? n["dt"] : n, "simulation.dt",
+                       "time_limit / dt is " + std::to_string(static_cast<long long>(s.timeLimit / s.dt)) +
+                           " steps; at most " + std::to_string(static_cast<long long>(kMaxSteps)) +
+                           " are allowed (raise dt or lower time_limit)");
         }
 
         struct RobotLimits
@@ -203,9 +215,10 @@ namespace mhplan
             const YAML::Node ref = root["reference"];
             if (!ref.IsMap())
                 r.fail(ref, "reference", "expected a mapping of names to numbers");
+            r.uniqueKeys(ref, "reference");
             for (const auto &kv : ref)
             {
-                const std::string key = kv.first.as<std::string>();
+                const std::string key = r.key(kv.first, "reference");
                 sc.reference[key] = r.number(kv.second, "reference." + key);
             }
         }

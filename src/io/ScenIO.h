@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: MovingAI benchmark scenario files (.scen, "version 1"). */
+#ifndef MHPLAN_SCEN_IO_H
+#define MHPLAN_SCEN_IO_H
+
+#include "mhplan/base/World.h"
+
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief One line of a MovingAI .scen file (coordinates: x = column, y = row from the top). */
+    struct ScenProblem
+    {
+        int line{0};
+        int bucket{0};
+        int sx{0}, sy{0}, gx{0}, gy{0};
+        double optimal{0.0};
+    };
+
+    /** \brief Parse a scenario for \e grid ("version 1", then lines of 9 fields: bucket map width height
+        start-x start-y goal-x goal-y optimal-length). Throws InputError naming \e fileName and the line (a
+       bad header or field, a map size other than the grid's, a start or goal outside the map or blocked). */
+    std::vector<ScenProblem> parseMovingAIScen(std::istream &in, const std::string &fileName,
+                                               const OccupancyGrid &grid);
+    std::vector<ScenProblem> loadMovingAIScen(const std::string &path, const OccupancyGrid &grid);
+} // namespace mhplan
+
+#endif

@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* Issue 19: inputs that were accepted or escaped as the wrong error, each refused with file, line and field.
+ */
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/io/GridIO.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/registry/Registry.h"
+#include "mhplan/sim/ScenarioIO.h"
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+    /** \brief The InputError message of \e f, or "" (and a failure) when it does not throw one. */
+    template <typename F> std::string inputError(F &&f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const mhplan::InputError &e)
+        {
+            return e.what();
+        }
+        catch (const std::exception &e)
+        {
+            ADD_FAILURE() << "not an InputError: " << e.what();
+            return "";
+        }
+        ADD_FAILURE() << "accepted";
+        return "";
+    }
+
+    bool contains(const std::string &s, const std::string &part)
+    {
+        return s.find(part) != std::string::npos;
+    }
+
+    std::string campaignError(const std::string &planners)
+    {
+        return inputError(
+            [&] {
+                mhplan::bench::parseCampaign("campaign: c\nworlds: [bfo_case1]\nplanners:\n" + planners,
+                                             "c.yaml");
+            });
+    }
+} // namespace
+
+TEST(CampaignChecks, PlannersParametersAndProgressAreCheckedAtParse)
+{
+    std::string e = campaignError("  - RRTstar\n  - NoSuchPlanner\n");
+    EXPECT_TRUE(contains(e, "c.yaml:5: field 'planners[1]': unknown planner 'NoSuchPlanner'")) << e;
+    EXPECT_TRUE(contains(e, "RRTstar")) << e;
+    e = campaignError("  - {planner: SMA, params: {nonsense: 1}}\n");
+    EXPECT_TRUE(contains(e, "c.yaml:4: field 'planners[0].params'")) << e;
+    EXPECT_TRUE(contains(e, "no parameter 'nonsense'")) << e;
+    e = campaignError("  - {planner: SMA, params: {population_size: 2.5}}\n");
+    EXPECT_TRUE(contains(e, "population_size") && contains(e, "an integer")) << e;
+    e = campaignError("  - {planner: RRTstar, params: {range: nan}}\n");
+    EXPECT_TRUE(contains(e, "range") && contains(e, "out of range")) << e;
+    e = campaignError("  - {planner: SMA, progress: [iterations INTEGER, nonsense]}\n");
+    EXPECT_TRUE(contains(e, "c.yaml:4: field 'planners[0].progress[1]'")) << e;
+    EXPECT_TRUE(contains(e, "no progress property 'nonsense'") && contains(e, "'best cost REAL'")) << e;
+    e = campaignError("  - {planner: SMA, params: {population_size: 10, population_size: 12}}\n");
+    EXPECT_TRUE(contains(e, "duplicate key 'population_size'")) << e;
+    e = campaignError("  - {planner: SMA, params: {[a]: 1}}\n");
+    EXPECT_TRUE(contains(e, "c.yaml:4") && contains(e, "a key must be a plain name")) << e;
+    // A valid entry still parses.
+    const mhplan::bench::Campaign c = mhplan::bench::parseCampaign(
+        "campaign: c\nworlds: [bfo_case1]\nplanners:\n  - {planner: SMA, params: {population_size: 12}, "
+        "progress: [iterations INTEGER]}\n",
+        "c.yaml");
+    ASSERT_EQ(c.planners.size(), 1u);
+    EXPECT_EQ(c.planners[0].params.at("population_size"), "12");
+}
+
+TEST(WorldChecks, KeysBoundsAndGridsAreChecked)
+{
+    const auto world = [](const std::string &text)
+    { return inputError([&] { mhplan::parseWorldYaml(text, "w.yaml"); }); };
+    std::string e = world("bounds: [0, 10, 0, 10]\nqueries: [{[a]: 1, start: [1,1], goal: [2,2]}]\n");
+    EXPECT_TRUE(contains(e, "w.yaml:2") && contains(e, "a key must be a plain name")) << e;
+    e = world("bounds: [0, 10, 0, 10]\n{a: 1}: 2\n");
+    EXPECT_TRUE(contains(e, "w.yaml:2") && contains(e, "a key must be a plain name")) << e;
+    e = world("bounds: [0, 10, 0, 10]\nobstacles:\n  - circle:\n      center: [5, 5]\n      radius: 1\n"
+              "      radius: 2\n");
+    EXPECT_TRUE(
+        contains(e, "w.yaml:6: field 'obstacles[0].circle.radius': duplicate key 'radius' (first given on "
+                    "line 5)"))
+        << e;
+    e = world("bounds: [0, 1e-300, 0, 1e-300]\n");
+    EXPECT_TRUE(contains(e, "w.yaml:1: field 'bounds'") && contains(e, "degenerate")) << e;
+    e = world("bounds: [-1e308, 1e308, 0, 10]\n");
+    EXPECT_TRUE(contains(e, "field 'bounds'") && contains(e, "within")) << e;
+    e = world("bounds: [0, 10, 0, 10]\nobstacles: [{circle: {center: [5, 5], radius: 1e307}}]\n");
+    EXPECT_TRUE(contains(e, "radius")) << e;
+    e = world("grid:\n  rows: ['..', '..']\n  threshold: 0.4\n");
+    EXPECT_TRUE(contains(e, "w.yaml:3: field 'grid.threshold'") && contains(e, ".pgm")) << e;
+    e = world("grid:\n  rows: ['..', '..']\n  cell_size: 1e300\n");
+    EXPECT_TRUE(contains(e, "field 'grid'") && contains(e, "extent")) << e;
+    e = world("grid: {file: x.txt}\n");
+    EXPECT_EQ(e.find("field 'grid.file'"), e.rfind("field 'grid.file'")) << "field named twice: " << e;
+}
+
+TEST(GridChecks, HeadersCannotMakeTheReaderAllocate)
+{
+    // A header declaring 25525 x 40081 (about 1 GB of cells) with three pixel bytes: refused by the stated
+    // limit, before any grid exists.
+    std::istringstream pgm("P5 25525 40081 255\n\x01\x02\x03");
+    std::string e = inputError([&] { mhplan::parsePgm(pgm, "big.pgm"); });
+    EXPECT_TRUE(contains(e, "big.pgm:1") && contains(e, "grid too large")) << e;
+    // Within the limit, a short raster is refused as truncated (the grid is built only after the pixels).
+    std::istringstream shortPgm("P5 4000 4000 255\n\x01\x02\x03");
+    e = inputError([&] { mhplan::parsePgm(shortPgm, "short.pgm"); });
+    EXPECT_TRUE(contains(e, "truncated P5 raster") && contains(e, "found 3")) << e;
+    std::istringstream map("type octile\nheight 4000\nwidth 4000\nmap\n....\n");
+    e = inputError([&] { mhplan::parseMovingAIMap(map, "big.map"); });
+    EXPECT_TRUE(contains(e, "big.map:5") && contains(e, "row 1 has 4 characters")) << e;
+    // The line of a missing row is the last line of the file, not one past it.
+    std::istringstream rows("type octile\nheight 3\nwidth 2\nmap\n..\n");
+    e = inputError([&] { mhplan::parseMovingAIMap(rows, "m.map"); });
+    EXPECT_TRUE(contains(e, "m.map:5: missing map rows")) << e;
+    // Binary bytes are shown escaped, not echoed.
+    std::istringstream binary(std::string("type octile\nheight 1\nwidth 2\nmap\n.\x01\n"));
+    e = inputError([&] { mhplan::parseMovingAIMap(binary, "b.map"); });
+    EXPECT_TRUE(contains(e, "byte 0x1")) << e;
+    std::istringstream header(std::string("type oct\x02ile\n"));
+    e = inputError([&] { mhplan::parseMovingAIMap(header, "h.map"); });
+    EXPECT_TRUE(contains(e, "\\x02")) << e;
+    EXPECT_FALSE(contains(e, "\x02")) << e;
+}
+
+namespace
+{
+    /** \brief Collects OMPL's console messages of level ERROR. */
+    class ErrorLog : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+        {
+            if (level == ompl::msg::LOG_ERROR)
+                errors.push_back(text);
+        }
+        std::vector<std::string> errors;
+    };
+} // namespace
+
+// Issue 19: on a space they cannot plan in, the lattice and potential-field planners refuse at setup() with
+// an ompl::Exception and log the reason through OMPL_ERROR (as README.md says of every mhplan planner).
+TEST(PlannerSetup, UnsupportedSpaceThrowsAndLogs)
+{
+    for (const std::string name : {"AStar", "ThetaStar", "APF", "BFO", "ATBFO"})
+    {
+        auto space = std::make_shared<ompl::base::RealVectorStateSpace>(3);
+        space->setBounds(0.0, 1.0);
+        auto ss = std::make_shared<ompl::geometric::SimpleSetup>(space);
+        ss->setStateValidityChecker([](const ompl::base::State *) { return true; });
+        ompl::base::ScopedState<> start(space), goal(space);
+        start = std::vector<double>{0.1, 0.1, 0.1};
+        goal = std::vector<double>{0.9, 0.9, 0.9};
+        ss->setStartAndGoalStates(start, goal);
+        ss->setPlanner(mhplan::PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+        ErrorLog log;
+        ompl::msg::OutputHandler *previous = ompl::msg::getOutputHandler();
+        const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+        ompl::msg::useOutputHandler(&log);
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        std::string thrown;
+        try
+        {
+            ss->setup();
+        }
+        catch (const ompl::Exception &e)
+        {
+            thrown = e.what();
+        }
+        ompl::msg::useOutputHandler(previous);
+        ompl::msg::setLogLevel(level);
+        EXPECT_NE(thrown.find(name), std::string::npos) << name << ": " << thrown;
+        EXPECT_NE(thrown.find("2D RealVectorStateSpace"), std::string::npos) << name << ": " << thrown;
+        ASSERT_FALSE(log.errors.empty()) << name << " logged no error";
+        EXPECT_NE(log.errors.back().find(name), std::string::npos) << log.errors.back();
+    }
+}
+
+// Issue 19: resource limits are stated and enforced with a message, not run into.
+TEST(Limits, TimeStepPolygonAndFileSize)
+{
+    const std::string scenario = "bounds: [0, 10, 0, 10]\nrobots: [{name: r, start: [1, 1], goal: [9, 9]}]\n";
+    std::string e =
+        inputError([&] { mhplan::parseScenarioYaml(scenario + "simulation: {dt: 1e-9}\n", "s.yaml"); });
+    EXPECT_TRUE(contains(e, "s.yaml:3: field 'simulation.dt'") && contains(e, "at least")) << e;
+    e = inputError(
+        [&]
+        { mhplan::parseScenarioYaml(scenario + "simulation: {dt: 0.0001, time_limit: 1e7}\n", "s.yaml"); });
+    EXPECT_TRUE(contains(e, "simulation.dt") && contains(e, "steps")) << e;
+
+    // A polygon of kMaxPolygonVertices + 1 vertices (a convex one, so only the limit refuses it).
+    std::ostringstream poly;
+    poly << "bounds: [-10, 10, -10, 10]\nobstacles:\n  - polygon: {points: [";
+    const std::size_t n = mhplan::kMaxPolygonVertices + 1;
+    for (std::size_t i = 0; i < n; ++i)
+        poly << (i ? ", " : "") << "[" << 5.0 * std::cos(2.0 * M_PI * i / n) << ", "
+             << 5.0 * std::sin(2.0 * M_PI * i / n) << "]";
+    poly << "]}\n";
+    e = inputError([&] { mhplan::parseWorldYaml(poly.str(), "p.yaml"); });
+    EXPECT_TRUE(contains(e, "p.yaml:3") && contains(e, "at most 2000")) << e;
+
+    const std::string big = "bounds: [0, 10, 0, 10]\n" + std::string(mhplan::kMaxYamlBytes, '#');
+    e = inputError([&] { mhplan::parseWorldYaml(big, "big.yaml"); });
+    EXPECT_TRUE(contains(e, "big.yaml") && contains(e, "limited to")) << e;
+}
