@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/common/PlannerSupport.h"
 
+#include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/ProblemDefinition.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include <algorithm>
 
 #include <iomanip>
 #include <sstream>
@@ -35,6 +39,32 @@ namespace mhplan
         for (ob::State *s : owned)
             si.freeState(s);
         owned.clear();
+    }
+
+    void addSolution(const ob::Planner &planner, const ob::ProblemDefinitionPtr &pdef,
+                     const ob::SpaceInformationPtr &si, std::size_t count,
+                     const std::function<void(ob::State *, std::size_t)> &fill, bool exact,
+                     const ob::Cost &cost, double approximateDistance)
+    {
+        auto path = std::make_shared<ompl::geometric::PathGeometric>(si);
+        ob::State *s = si->allocState();
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            fill(s, i);
+            path->append(s);
+        }
+        si->freeState(s);
+        ob::PlannerSolution solution(path);
+        solution.setPlannerName(planner.getName());
+        if (exact)
+        {
+            const ob::OptimizationObjectivePtr &opt = pdef->getOptimizationObjective();
+            if (opt)
+                solution.setOptimized(opt, cost, opt->isSatisfied(cost));
+        }
+        else
+            solution.setApproximate(std::max(approximateDistance, 1e-12));
+        pdef->addSolutionPath(solution);
     }
 
     void reportImprovement(const ob::Planner *planner, const ob::ProblemDefinitionPtr &pdef,

@@ -37,6 +37,14 @@ namespace mhplan
                            const std::function<void(ompl::base::State *, std::size_t)> &fill,
                            const ompl::base::Cost &cost);
 
+    /** \brief Add a planner's result to \e pdef: the \e count states of the path (\e fill(state, i) writes
+        point i), named after \e planner; optimized with \e cost when \e exact, else approximate at distance
+        \e approximateDistance (at least 1e-12, so OMPL counts it as approximate). */
+    void addSolution(const ompl::base::Planner &planner, const ompl::base::ProblemDefinitionPtr &pdef,
+                     const ompl::base::SpaceInformationPtr &si, std::size_t count,
+                     const std::function<void(ompl::base::State *, std::size_t)> &fill, bool exact,
+                     const ompl::base::Cost &cost, double approximateDistance);
+
     /** \brief A cost as a progress property value (17 significant digits, "inf" when none). */
     std::string formatCost(double cost);
 } // namespace mhplan

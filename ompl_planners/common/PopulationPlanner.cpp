@@ -366,29 +366,12 @@ namespace mhplan
             points = &bestInfeasiblePath_;
         if (points == nullptr)
             return;
-        auto path = std::make_shared<og::PathGeometric>(si_);
-        ob::State *s = si_->allocState();
-        for (std::size_t i = 0; i < points->size() / spaceDim_; ++i)
-        {
-            toState(s, *points, i);
-            path->append(s);
-        }
-        si_->freeState(s);
-        ob::PlannerSolution solution(path);
-        solution.setPlannerName(getName());
-        if (haveFeasible_)
-        {
-            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
-            if (opt)
-                solution.setOptimized(opt, bestFeasibleCost_, opt->isSatisfied(bestFeasibleCost_));
-            exact = true;
-        }
-        else
-        {
-            solution.setApproximate(std::max(bestInfeasibleViolation_, 1e-12));
-            approximate = true;
-        }
-        pdef_->addSolutionPath(solution);
+        exact = haveFeasible_;
+        approximate = !exact;
+        addSolution(
+            *this, pdef_, si_, points->size() / spaceDim_,
+            [this, points](ob::State *s, std::size_t i) { toState(s, *points, i); }, exact, bestFeasibleCost_,
+            bestInfeasibleViolation_);
     }
 
     void PopulationPlanner::getPlannerData(ob::PlannerData &data) const

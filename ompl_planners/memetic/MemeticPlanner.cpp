@@ -634,29 +634,12 @@ namespace mhplan
             points = &closest_;
         if (points == nullptr)
             return;
-        auto path = std::make_shared<og::PathGeometric>(si_);
-        ob::State *s = si_->allocState();
-        for (const Vec2 &p : *points)
-        {
-            setStatePosition(s, p);
-            path->append(s);
-        }
-        si_->freeState(s);
-        ob::PlannerSolution solution(path);
-        solution.setPlannerName(getName());
-        if (haveSolution_)
-        {
-            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
-            if (opt)
-                solution.setOptimized(opt, bestCostObj_, opt->isSatisfied(bestCostObj_));
-            exact = true;
-        }
-        else
-        {
-            solution.setApproximate(std::max(closestDistance_, 1e-12));
-            approximate = true;
-        }
-        pdef_->addSolutionPath(solution);
+        exact = haveSolution_;
+        approximate = !exact;
+        addSolution(
+            *this, pdef_, si_, points->size(),
+            [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); }, exact, bestCostObj_,
+            closestDistance_);
     }
 
     void MemeticPlanner::getPlannerData(ob::PlannerData &data) const
