@@ -269,3 +269,19 @@ TEST(Cli, GapOnlyForExactValidPaths)
     EXPECT_TRUE(contains(r.out, "gap:       - (no exact path)")) << r.out;
     EXPECT_FALSE(contains(r.out, " %")) << r.out;
 }
+
+TEST(Cli, ControllersListsEveryControllerWithItsParametersAndRefusesAnUnknownOne)
+{
+    const Result all = run("controllers");
+    ASSERT_EQ(all.code, 0) << all.out;
+    for (const char *name : {"dapf", "aapf", "bfo", "atbfo", "plan:"})
+        EXPECT_TRUE(contains(all.out, name)) << name << " missing from:\n" << all.out;
+    EXPECT_TRUE(contains(all.out, "C_a")) << all.out;
+    EXPECT_TRUE(contains(all.out, "brake_margin")) << all.out;
+    const Result one = run("controllers aapf");
+    ASSERT_EQ(one.code, 0) << one.out;
+    EXPECT_FALSE(contains(one.out, "atbfo")) << one.out;
+    const Result bad = run("controllers nosuch");
+    EXPECT_EQ(bad.code, 1) << bad.out;
+    EXPECT_TRUE(contains(bad.out, "unknown controller 'nosuch'")) << bad.out;
+}

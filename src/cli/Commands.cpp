@@ -8,6 +8,7 @@
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
+#include "mhplan/sim/Controllers.h"
 #include "mhplan/draw/Svg.h"
 #include "mhplan/collision/Validity.h"
 #include "mhplan/io/WorldIO.h"
@@ -320,6 +321,15 @@ namespace mhplan::cli
                 std::cout << "    " << std::left << std::setw(28) << kv.first << " default " << std::setw(12)
                           << kv.second << " range " << p->params()[kv.first].getRangeSuggestion() << "\n";
         }
+        return 0;
+    }
+
+    int cmdControllers(const Argv &argv)
+    {
+        const Args args("controllers", argv, {{}, {}, {}});
+        for (const auto &name : args.positional())
+            controllerParameters(name); // refuses an unknown name before anything is printed
+        printControllers(std::cout, args.positional());
         return 0;
     }
 } // namespace mhplan::cli

@@ -16,6 +16,7 @@ namespace mhplan::cli
     int cmdGenerate(const Argv &argv);
     int cmdWorlds(const Argv &argv);
     int cmdPlanners(const Argv &argv);
+    int cmdControllers(const Argv &argv);
     int cmdCompare(const Argv &argv);
     int cmdBench(const Argv &argv);
     int cmdReport(const Argv &argv);

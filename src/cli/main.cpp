@@ -62,6 +62,10 @@ namespace
               "        done, 3: some stuck or unfinished, 1: bad input)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
+            {"controllers",
+             {cmdControllers,
+              "controllers [NAME...] (moving-world controllers for sim, their parameters, defaults, "
+              "ranges)"}},
         };
         return table;
     }
