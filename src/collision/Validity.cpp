@@ -51,11 +51,7 @@ namespace mhplan
 
     bool ExactMotionValidator::checkMotion(const ob::State *s1, const ob::State *s2) const
     {
-        // As OMPL's motion validators do, s2 itself must be valid: a segment model may accept a segment that
-        // only touches an obstacle at its end point (a grid cell's corner, a disc at tangency) where the
-        // point check, which treats obstacles as closed, refuses the point.
-        const Vec2 b = statePosition(s2);
-        const bool ok = model_->isValid(b) && model_->segmentValid(statePosition(s1), b);
+        const bool ok = model_->segmentValid(statePosition(s1), statePosition(s2));
         if (ok)
             ++valid_;
         else
@@ -68,7 +64,7 @@ namespace mhplan
     {
         const Vec2 a = statePosition(s1);
         const Vec2 b = statePosition(s2);
-        if (model_->isValid(b) && model_->segmentValid(a, b))
+        if (model_->segmentValid(a, b))
         {
             ++valid_;
             return true;
