@@ -4,6 +4,7 @@
 #include "mhplan/base/World.h"
 
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include <poll.h>
 #include <signal.h>
@@ -222,6 +223,14 @@ namespace mhplan::bench::detail
         out.elapsed = std::min(secondsSince(last), out.killed ? watchdog : 1e9);
         out.runSeconds = secondsSince(runStart);
         return out;
+    }
+
+    void seedRunProcess(std::uint32_t seed)
+    {
+        const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        ompl::RNG::setSeed(seed);
+        ompl::msg::setLogLevel(level);
     }
 
     /** The end of a run process: run \e body; an exception is reported on \e fd as an 'X' message

@@ -61,9 +61,8 @@ namespace mhplan::bench::detail
                 [&]()
                 {
                     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                    // The seed must be set before any random number generator exists in this process; the
-                    // campaign process and the experiment process never allocate one.
-                    ompl::RNG::setSeed(seed);
+                    // The seed before any random number generator of the run exists (ChildProcess.h).
+                    seedRunProcess(seed);
                     const Campaign &c = *xs.campaign;
                     // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
                     // generator (its path simplifier's).

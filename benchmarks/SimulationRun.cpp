@@ -123,7 +123,7 @@ namespace mhplan::bench
                         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
                         // As for planners: the seed before any random number generator exists in this
                         // process (plan-then-follow controllers run OMPL planners).
-                        ompl::RNG::setSeed(seed);
+                        seedRunProcess(seed);
                         Scenario scenario = xs.scenario;
                         applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
                         const ControllerPtr controller = makeController(spec.controller, *xs.registry);
