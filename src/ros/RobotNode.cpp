@@ -97,8 +97,8 @@ namespace mhplan::ros1
                 std_msgs::String hello;
                 hello.data = name;
                 join.publish(hello);
-                ROS_INFO("robot %s (%s) joined after %.3f s", name.c_str(), controller_->name().c_str(),
-                         wallNow() - t0);
+                std::cout << "robot " << name << " (" << controller_->name() << ") joined after "
+                          << wallNow() - t0 << " s" << std::endl;
                 const double start = wallNow();
                 while (::ros::ok() && !ended_)
                     ::ros::getGlobalCallbackQueue()->callAvailable(::ros::WallDuration(0.1));

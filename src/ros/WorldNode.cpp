@@ -104,7 +104,7 @@ namespace mhplan::ros1
                             if (scenario_.robots[i].name == m->data && !announced_[i])
                             {
                                 announced_[i] = 1;
-                                ROS_INFO("world: robot %s announced", m->data.c_str());
+                                std::cout << "world: robot " << m->data << " announced" << std::endl;
                             }
                     });
                 assign_ = nh.subscribe<geometry_msgs::PoseStamped>(
@@ -152,9 +152,10 @@ namespace mhplan::ros1
                     }
                     sim.addTask(i, task);
                     ++tasksAssigned_;
-                    ROS_INFO("world: task %zu for %s: goal (%g, %g) from t = %.2f s",
-                             sim.spec(i).tasks.size(), m.header.frame_id.c_str(), task.goal.from.x,
-                             task.goal.from.y, task.assignedAt);
+                    std::cout << "world: task " << sim.spec(i).tasks.size() << " for " << m.header.frame_id
+                              << ": goal (" << task.goal.from.x << ", " << task.goal.from.y
+                              << ") from t = " << task.assignedAt << " s (received at t = " << sim.time()
+                              << " s)" << std::endl;
                 }
             }
 
