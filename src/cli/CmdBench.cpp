@@ -2,6 +2,7 @@
 /* mhplan bench CAMPAIGN: run a benchmark campaign (benchmarks/README.md) and build its database. */
 #include "mhplan/cli/Args.h"
 #include "mhplan/cli/Commands.h"
+#include "mhplan/cli/Help.h"
 
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/bench/CampaignRunner.h"
@@ -40,6 +41,40 @@ namespace mhplan::cli
                 throw InputError("mhplan bench: --shard i/N needs 1 <= i <= N (got '" + text + "')");
         }
     } // namespace
+
+    const CommandDoc &benchDoc()
+    {
+        // One OptionDoc per option of the parser below (the tests check that they agree).
+        static const CommandDoc doc{
+            "bench CAMPAIGN [options]",
+            "run a benchmark campaign (benchmarks/README.md): one log per experiment, then one OMPL "
+            "benchmark "
+            "database",
+            "Every experiment runs in its own process and writes its OMPL log; complete logs are skipped, so "
+            "an "
+            "interrupted campaign resumes where it stopped. Shards split the experiments between machines; "
+            "one final --merge-only builds the database from all logs.",
+            {{"CAMPAIGN", "a campaign file (e.g. benchmarks/seeds.yaml)"}},
+            {{"--jobs", "N", "experiments run in parallel, 1..256 (default 1)"},
+             {"--shard", "i/N",
+              "run only the i-th of N shares of the experiments (writes logs, no database)"},
+             {"--merge-only", "", "run nothing; build the database from the logs"},
+             {"--no-merge", "", "run the experiments but do not build the database"},
+             {"--list", "", "list the experiments (index, name, complete or to do, log file) and exit"},
+             {"--database", "FILE",
+              "the database to write (default: the campaign's; its logs then go to FILE.logs unless --logs)"},
+             {"--logs", "DIR", "directory of the experiments' logs (default: the campaign's)"},
+             {"--runs", "N", "runs per planner and experiment, 1..1000000 (default: the campaign's)"},
+             {"--time", "S", "time limit per run in seconds, > 0 (default: the campaign's)"},
+             {"--seed", "N", "campaign seed, 1..4294967295 (default: the campaign's)"},
+             {"--no-progress", "", "no progress bar on stderr"}},
+            {"bench benchmarks/seeds.yaml --jobs 2",
+             "bench benchmarks/seeds.yaml --runs 5 --time 0.2 --database /tmp/s.db",
+             "bench benchmarks/scaling.yaml --shard 1/4 && mhplan bench benchmarks/scaling.yaml "
+             "--merge-only"},
+            "0 every experiment completed, 1 bad input, 2 internal error, 3 some experiment failed"};
+        return doc;
+    }
 
     int cmdBench(const Argv &argv)
     {
@@ -80,6 +115,16 @@ namespace mhplan::cli
                 throw InputError("mhplan bench: --seed must be in [1, 4294967295] (got " + args.get("seed") +
                                  ")");
             campaign.seed = static_cast<std::uint32_t>(seed);
+        }
+
+        // Output paths are checked before any experiment runs.
+        if (!args.has("list"))
+        {
+            checkOutputDirectory("bench", "logs", campaign.logDir);
+            checkOutputDirectory("bench", "database",
+                                 std::filesystem::absolute(campaign.database).parent_path().string());
+            if (std::filesystem::is_directory(campaign.database))
+                throw InputError("mhplan bench: --database '" + campaign.database + "': is a directory");
         }
 
         bench::RunOptions options;

@@ -4,6 +4,7 @@
 #include "mhplan/cli/Commands.h"
 
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/ScenarioIO.h"
@@ -25,25 +26,6 @@ namespace mhplan::cli
 {
     namespace
     {
-        /** A scenario argument: an existing file, or the name of a shipped scenario
-            (environments/scenarios/NAME.yaml). */
-        std::string resolveScenarioPath(const std::string &arg)
-        {
-            if (fs::exists(arg))
-                return arg;
-            for (const fs::path &dir :
-                 {fs::path(environmentsDir()) / "scenarios", fs::path(environmentsDir())})
-                for (const char *ext : {".yaml", ".yml"})
-                {
-                    const fs::path p = dir / (arg + ext);
-                    if (fs::exists(p))
-                        return p.string();
-                }
-            throw InputError("scenario '" + arg +
-                             "': no such file, and no shipped scenario of that name in " +
-                             (fs::path(environmentsDir()) / "scenarios").string());
-        }
-
         int positiveInt(const Args &args, const std::string &name, long long fallback, long long lo,
                         long long hi)
         {
@@ -55,6 +37,35 @@ namespace mhplan::cli
         }
     } // namespace
 
+    const CommandDoc &simDoc()
+    {
+        static const CommandDoc doc{
+            "sim SCENARIO --controller NAME [options]",
+            "run a moving-world scenario with a controller; print per-robot and run metrics; draw the run",
+            "Scenarios: 'mhplan scenarios'; controllers and their parameters: 'mhplan controllers'.",
+            {{"SCENARIO", "a scenario file or the name of a shipped scenario (e.g. mapf_15robots)"}},
+            {{"--controller", "NAME",
+              "dapf, aapf, bfo, atbfo or plan:<PLANNER> (required; see 'mhplan controllers')"},
+             options::seed(),
+             {"--set", "KEY=VALUE",
+              "set a controller parameter (repeatable); plan:<PLANNER> takes planner.<name>=value for the "
+              "planner's parameters"},
+             {"--time-limit", "S", "simulated seconds before the run stops (default: the scenario's)"},
+             options::svg("the run (static picture with an animated replay unless --no-replay)"),
+             {"--no-replay", "", "the SVG without the animated replay"},
+             {"--gif", "FILE", "write an animated GIF of the run (the directory must be writable)"},
+             {"--gif-width", "PX", "GIF width in pixels, 16..4096 (default 480)"},
+             {"--fps", "F", "frames per second of the replay and the GIF, (0, 100] (default 10)"},
+             {"--max-frames", "N",
+              "at most this many frames in the replay and the GIF, 2..100000 (default 300)"},
+             {"--csv", "FILE", "write every robot's trajectory as CSV"}},
+            {"sim mapf_2robots --controller aapf --seed 2 --svg run.svg",
+             "sim mapf_15robots --controller plan:ThetaStar --set plan_time=0.2 --gif run.gif",
+             "sim bfo_case3_lines --controller plan:SMA --set planner.population_size=40 --csv traj.csv"},
+            "0 every robot done, 1 bad input, 2 internal error, 3 some robot stuck or unfinished"};
+        return doc;
+    }
+
     int cmdSim(const Argv &argv)
     {
         const Args args(
@@ -62,6 +73,8 @@ namespace mhplan::cli
             {{"controller", "seed", "svg", "gif", "csv", "time-limit", "gif-width", "fps", "max-frames"},
              {"set"},
              {"no-replay"}});
+        for (const char *output : {"svg", "gif", "csv"})
+            checkOutputFile(args, output);
         if (args.positional().size() != 1)
             throw InputError(
                 "mhplan sim: expected exactly one SCENARIO (a scenario file or the name of a shipped "
@@ -125,6 +138,13 @@ namespace mhplan::cli
         const SimulationResult r = sim.run();
 
         printSimulationReport(std::cout, r);
+        if (!r.counters.empty())
+        {
+            std::cout << "counters:  ";
+            for (const auto &kv : r.counters)
+                std::cout << " " << kv.first << "=" << std::setprecision(10) << kv.second;
+            std::cout << "\n";
+        }
 
         if (args.has("csv"))
         {
