@@ -19,7 +19,7 @@ skip() {
 }
 for tool in slurmctld slurmd sbatch squeue sinfo scontrol; do
     command -v "$tool" >/dev/null 2>&1 || PATH=$PATH:/usr/sbin
-    command -v "$tool" >/dev/null 2>&1 || skip "$tool not found (install Debian's slurm-wlm: scripts/setup.sh --slurm)"
+    command -v "$tool" >/dev/null 2>&1 || skip "$tool not found (install Debian's slurm-wlm: scripts/setup-slurm.sh)"
 done
 [ "$(id -u)" = 0 ] || skip "the test cluster runs its daemons as root (SlurmdUser root); run as root"
 

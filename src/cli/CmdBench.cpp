@@ -132,11 +132,15 @@ namespace mhplan::cli
                           << "--kill-on-invalid-dep=yes " << scripts.mergeScript << ")\n";
                 return 0;
             }
+            // --status must see the same fingerprints (--runs, --seed, --time) and logs.
+            std::string same;
+            for (const auto &a : o.passThrough)
+                same += " " + a;
             const bench::SlurmSubmission job = bench::submitSlurmJobs(scripts);
             std::cout << "array job id: "
                       << (job.arrayJob.empty() ? "none (every experiment is complete)" : job.arrayJob)
                       << "\nmerge job id: " << job.mergeJob << "\n"
-                      << "status:       mhplan bench " << args.positional()[0] << " --status\n";
+                      << "status:       mhplan bench " << args.positional()[0] << same << " --status\n";
             return 0;
         }
     } // namespace
