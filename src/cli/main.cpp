@@ -49,7 +49,9 @@ namespace
             {"bench",
              {cmdBench,
               "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
-              "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
+              "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]\n"
+              "        [--oversubscribe] [--status]\n"
+              "        [--slurm --shards N [--cpus C] [--mem MB] [--time HH:MM:SS] [--partition P] [--submit]]"}},
             {"scen",
              {cmdScen,
               "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
