@@ -6,7 +6,8 @@
 # every state, spool, log and pid file under DIR, ports PORT and PORT+1 (default: derived from our PID).
 # On success it prints "export SLURM_CONF=DIR/slurm.conf" (what sbatch, squeue, ... need) and exits 0; it
 # exits 77 (the "skipped" code of CTest's SKIP_RETURN_CODE) with the reason on stderr when Slurm is not
-# installed or cannot start, after stopping whatever it started. Stop it with scripts/slurm/stop-cluster.sh DIR.
+# installed or cannot start, after stopping whatever it started. Stop it with scripts/slurm/stop-cluster.sh DIR
+# (or let MHPLAN_SLURM_OWNER=PID stop it when that process ends).
 set -u
 dir=${1:?usage: start-cluster.sh DIR [PORT]}
 port=${2:-$((20000 + ($$ % 10000) * 2))}
@@ -85,5 +86,19 @@ done
 case $state in
 idle*) ;;
 *) skip "the node did not become idle (state '$state'): $(tail -n 5 "$dir/log/slurmctld.log" 2>/dev/null)" ;;
+esac
+# With MHPLAN_SLURM_OWNER=PID, a watcher stops the cluster when that process ends however it ends (a test
+# killed by its timeout runs no trap).
+owner=${MHPLAN_SLURM_OWNER:-}
+case $owner in
+'' | *[!0-9]*) ;;
+*)
+    (
+        trap '' HUP
+        while kill -0 "$owner" 2>/dev/null; do sleep 1; done
+        "$here/stop-cluster.sh" "$dir"
+    ) </dev/null >/dev/null 2>&1 &
+    echo $! >"$dir/watcher.pid"
+    ;;
 esac
 echo "export SLURM_CONF=$SLURM_CONF"

@@ -16,6 +16,12 @@ if [ -f "$dir/slurmctld.pid" ]; then
         sleep 0.25
     done
 fi
+# A process that exists and is not a zombie (an ended daemon waits for its parent, perhaps init, to reap it).
+alive() {
+    kill -0 "$1" 2>/dev/null || return 1
+    state=$(sed 's/^.*) \(.\).*$/\1/' "/proc/$1/stat" 2>/dev/null)
+    [ "$state" != Z ]
+}
 # Ask each daemon to stop (SIGTERM), then wait up to 10 s for it before SIGKILL.
 for daemon in slurmd slurmctld; do
     pidfile="$dir/$daemon.pid"
@@ -26,12 +32,18 @@ for daemon in slurmd slurmctld; do
     if [ -r "/proc/$pid/cmdline" ] && tr '\0' ' ' <"/proc/$pid/cmdline" | grep -q "$daemon"; then
         kill -TERM "$pid" 2>/dev/null
         i=0
-        while [ $i -lt 40 ] && kill -0 "$pid" 2>/dev/null; do
+        while [ $i -lt 40 ] && alive "$pid"; do
             i=$((i + 1))
             sleep 0.25
         done
-        kill -0 "$pid" 2>/dev/null && { echo "stop-cluster: $daemon $pid ignored SIGTERM, killing it" >&2; kill -KILL "$pid" 2>/dev/null; }
+        alive "$pid" && { echo "stop-cluster: $daemon $pid ignored SIGTERM, killing it" >&2; kill -KILL "$pid" 2>/dev/null; }
     fi
     rm -f "$pidfile"
 done
+# The watcher of start-cluster.sh (unless it is the one stopping the cluster).
+if [ -f "$dir/watcher.pid" ]; then
+    pid=$(cat "$dir/watcher.pid")
+    case $pid in '' | *[!0-9]*) ;; *) [ "$pid" != "$PPID" ] && kill -TERM "$pid" 2>/dev/null ;; esac
+    rm -f "$dir/watcher.pid"
+fi
 exit 0

@@ -39,7 +39,7 @@ now() { date +%s.%N; }
 elapsed() { /usr/bin/python3 -c "import sys; print('%.1f' % (float(sys.argv[2]) - float(sys.argv[1])))" "$1" "$(now)"; }
 
 t0=$(now)
-"$src/scripts/slurm/start-cluster.sh" "$cluster" >"$work/env"
+MHPLAN_SLURM_OWNER=$$ "$src/scripts/slurm/start-cluster.sh" "$cluster" >"$work/env"
 rc=$?
 [ $rc -eq 77 ] && exit 77
 [ $rc -eq 0 ] || fail "start-cluster.sh exited $rc"
