@@ -3,6 +3,7 @@
    time of every run, CPU-time limits, --status, and the Slurm batch scripts (their submission on a real
    cluster is tests/slurm/slurm_test.sh). */
 #include "BenchSupport.h"
+#include "CliSupport.h"
 
 #include "mhplan/bench/Slurm.h"
 
@@ -404,6 +405,50 @@ namespace mhplan::test
             << calls;
         EXPECT_NE(readText(s.directory + "/submitted").find("array 77 (shards 1)\tmerge 77"),
                   std::string::npos);
+        fs::remove_all(dir);
+    }
+
+    TEST(SlurmCli, OptionsAreCheckedAndTheScriptsWrittenWithoutSubmitting)
+    {
+        const std::string dir = freshDir("slurmcli");
+        const std::string campaign = std::string(MHPLAN_TEST_DATA_DIR) + "/bench_slurm.yaml";
+        const std::string db = " --database " + dir + "/s.db";
+        struct Refused
+        {
+            std::string args, message;
+        };
+        for (const Refused &r : std::vector<Refused>{
+                 {" --shards 4", "--shards belongs to --slurm"},
+                 {" --submit", "--submit belongs to --slurm"},
+                 {" --slurm", "--shards N is required"},
+                 {" --slurm --shards 0", "--shards must be in [1, 10000]"},
+                 {" --slurm --shards 4 --time 1h", "--time expects Slurm's time format"},
+                 {" --slurm --shards 4 --mem 0", "--mem must be in"},
+                 {" --slurm --shards 4 --jobs 2", "--jobs is set per task"},
+             })
+        {
+            const CliResult res = runCli("bench " + campaign + db + r.args);
+            EXPECT_NE(res.code, 0) << r.args;
+            EXPECT_TRUE(contains(res.out, r.message)) << r.args << ":\n" << res.out;
+        }
+        // A per-run --time (seconds) is passed on to the tasks; a Slurm --time is the task limit.
+        CliResult res = runCli("bench " + campaign + db + " --slurm --shards 4 --time 0.1 --runs 2");
+        ASSERT_EQ(res.code, 0) << res.out;
+        EXPECT_TRUE(contains(res.out, "to run:       shards 1-4")) << res.out;
+        std::string array = readText(dir + "/s.db.logs/slurm/array.sbatch");
+        EXPECT_TRUE(contains(array, "'--runs' '2' '--time' '0.1'")) << array;
+        res = runCli("bench " + campaign + db + " --slurm --shards 4 --time 1-00:00:00 --partition long");
+        ASSERT_EQ(res.code, 0) << res.out;
+        array = readText(dir + "/s.db.logs/slurm/array.sbatch");
+        EXPECT_TRUE(contains(array, "#SBATCH --time=1-00:00:00\n")) << array;
+        EXPECT_TRUE(contains(array, "#SBATCH --partition=long\n")) << array;
+        EXPECT_FALSE(contains(array, "'--time'")) << array;
+        EXPECT_FALSE(fs::exists(dir + "/s.db.logs/slurm/submitted")) << "submitted without --submit";
+        // --status of a campaign nothing ran of: every experiment missing, exit code 1.
+        res = runCli("bench " + campaign + db + " --status");
+        EXPECT_EQ(res.code, 1) << res.out;
+        EXPECT_TRUE(contains(res.out, "8 experiments, 0 complete, 8 missing, 0 failed, 0 running"))
+            << res.out;
         fs::remove_all(dir);
     }
 } // namespace mhplan::test

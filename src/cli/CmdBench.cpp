@@ -8,6 +8,7 @@
 #include "mhplan/bench/Slurm.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -176,6 +177,17 @@ namespace mhplan::cli
                 throw InputError("mhplan bench: --runs must be in [1, 1000000] (got " + args.get("runs") +
                                  ")");
             campaign.runs = static_cast<unsigned int>(runs);
+        }
+        if (args.has("slurm") && args.has("time") && !isClockTime(args.get("time")))
+        {
+            const std::string t = args.get("time");
+            char *end = nullptr;
+            std::strtod(t.c_str(), &end);
+            if (t.empty() || end != t.c_str() + t.size())
+                throw InputError(
+                    "mhplan bench --slurm: --time expects Slurm's time format per task (HH:MM:SS, "
+                    "D-HH:MM:SS) or seconds per run (a number), got '" +
+                    t + "'");
         }
         if (args.has("time") && !(args.has("slurm") && isClockTime(args.get("time"))))
         {
