@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -26,6 +27,14 @@ namespace mhplan::bench::detail
     double secondsSince(Clock::time_point t0)
     {
         return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+
+    double processCpuSeconds()
+    {
+        timespec ts{};
+        if (::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0)
+            return 0.0;
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     }
 
     std::string encodeMap(const std::map<std::string, std::string> &m)

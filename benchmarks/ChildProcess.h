@@ -21,6 +21,9 @@ namespace mhplan::bench::detail
 
     double secondsSince(Clock::time_point t0);
 
+    /** CPU seconds this process has used so far, all its threads (CLOCK_PROCESS_CPUTIME_ID). */
+    double processCpuSeconds();
+
     /** Separators of the payload encodings (never part of a property name or value). */
     constexpr char kFieldSep = '\x1f';
     constexpr char kRecordSep = '\x1e';
