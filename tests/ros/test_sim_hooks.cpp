@@ -122,7 +122,9 @@ TEST(SimHooks, TaskAddedToADoneRobotAndLateJoin)
             added = true;
         }
         if (sim.state(1).joined)
+        {
             EXPECT_THROW(sim.setJoinTime(1, 0.0), std::logic_error);
+        }
     }
     const SimulationResult r = sim.result();
     ASSERT_TRUE(added);
