@@ -69,6 +69,8 @@ namespace mhplan
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
+        declareSwitch(params(), this, "gms_initial", &PopulationPlanner::setGmsInitial,
+                      &PopulationPlanner::getGmsInitial);
         declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
                       &PopulationPlanner::getGmsRepair);
         declareSwitch(params(), this, "gms_revise", &PopulationPlanner::setGmsRevise,
@@ -205,6 +207,12 @@ namespace mhplan
         stagnationRestart_ = n;
     }
 
+    void PopulationPlanner::setGmsInitial(bool on)
+    {
+        gmsInitial_ = on;
+        setup_ = false;
+    }
+
     void PopulationPlanner::setGmsRepair(bool on)
     {
         gmsRepair_ = on;
@@ -249,7 +257,8 @@ namespace mhplan
             return;
         std::string on;
         for (const auto &s :
-             {std::make_pair("gms_repair", gmsRepair_), std::make_pair("gms_revise", gmsRevise_),
+             {std::make_pair("gms_initial", gmsInitial_), std::make_pair("gms_repair", gmsRepair_),
+              std::make_pair("gms_revise", gmsRevise_),
               std::make_pair("gms_simplify", gmsSimplify_), std::make_pair("gms_improve", gmsImprove_),
               std::make_pair("gms_replace_fraction", gmsReplaceFraction_ > 0.0)})
             if (s.second)
