@@ -87,7 +87,8 @@ namespace mhplan
         r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
                allocatorFor<ArtificialPotentialField>(), "walk", kFaithful, kPlanar});
         r.add({"SMA", "mhplan",
-               "Slime mould algorithm as [LRSMA] compares it (Li et al. 2020; [LRSMA] 3, 5.2): spline, fitness S",
+               "Slime mould algorithm as [LRSMA] compares it (Li et al. 2020; [LRSMA] 3, 5.2): spline, "
+               "fitness S",
                allocatorFor<SlimeMould>(), "population", kFaithful, kAnyDimension});
         r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
                allocatorFor<LRSMA>(), "population", kFaithful, kAnyDimension});
@@ -110,8 +111,8 @@ namespace mhplan
         r.add({"MGO-OPS", "mhplan",
                "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
                operatorVariant<MountainGazelle>("MGO-OPS", 3, true), "population", kImproved, kPlanar});
-        r.add({"GA", "mhplan", "Genetic algorithm of [GMS] with its six operators and maximised fitness", allocatorFor<Genetic>(),
-               "population", kFaithful, kPlanar});
+        r.add({"GA", "mhplan", "Genetic algorithm of [GMS] with its six operators and maximised fitness",
+               allocatorFor<Genetic>(), "population", kFaithful, kPlanar});
         r.add({"GA-WALK", "mhplan",
                "GA, improved variant (not in the paper): initial and replacement individuals are random "
                "collision-free lattice walks",

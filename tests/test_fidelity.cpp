@@ -4,8 +4,10 @@
    - LRSMA's stagnation monitor (eq 8): rotation on the third consecutive stagnant iteration, not the second;
    - ATBFO's imp_count (Pseudo code 1): the tumble move is not counted;
    - [GMS]'s SMA reads maximised reciprocal fitness values (its p and weights differ from the sum form);
-   - [GMS]'s SMA and MGO apply node repair, line-segment repair and node improvement to the initial population;
-   - the GA's crossover finds a common node within a tolerance (or by cell on grids), not by exact equality. */
+   - [GMS]'s SMA and MGO apply node repair, line-segment repair and node improvement to the initial
+   population;
+   - the GA's crossover finds a common node within a tolerance (or by cell on grids), not by exact equality.
+ */
 #include "mhplan/collision/Problem.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/planners/field/BacterialColony.h"
@@ -44,7 +46,7 @@ namespace
     };
 
     PlannerRun makeRun(const std::string &world, const std::string &planner,
-                const std::map<std::string, std::string> &params)
+                       const std::map<std::string, std::string> &params)
     {
         const World w = seedWorld(world);
         PlannerRun r;
@@ -101,14 +103,14 @@ TEST(Fidelity, LrsmaCountsOneRotationPerThreeStagnantIterations)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     // Fmin huge: every iteration is stagnant, so 9 iterations give rotations at 3, 6, 9 (the old rule: 4).
     const PlannerRun r = makeRun("lrsma_scenario1", "LRSMA",
-                          {{"seed", "3"}, {"stagnation_tolerance", "1e9"}, {"max_iterations", "9"}});
+                                 {{"seed", "3"}, {"stagnation_tolerance", "1e9"}, {"max_iterations", "9"}});
     solveUnbounded(r);
     const auto &lrsma = dynamic_cast<const LRSMA &>(*r.planner);
     EXPECT_EQ(lrsma.iterationCount(), 9u);
     EXPECT_EQ(lrsma.rotationCount(), 3u);
     // Fmin = 0: never stagnant, never a rotation.
     const PlannerRun never = makeRun("lrsma_scenario1", "LRSMA",
-                              {{"seed", "3"}, {"stagnation_tolerance", "0"}, {"max_iterations", "9"}});
+                                     {{"seed", "3"}, {"stagnation_tolerance", "0"}, {"max_iterations", "9"}});
     solveUnbounded(never);
     EXPECT_EQ(dynamic_cast<const LRSMA &>(*never.planner).rotationCount(), 0u);
 }
@@ -126,7 +128,10 @@ namespace
         double cost(const double *x) override { return std::abs(x[0] - target_); }
         void randomPosition(double *x) override { x[0] = 0.0; }
         void constrain(double * /*x*/) override {}
-        void randomDirection(double *phi, unsigned int /*dim*/, ompl::RNG & /*rng*/) override { phi[0] = 1.0; }
+        void randomDirection(double *phi, unsigned int /*dim*/, ompl::RNG & /*rng*/) override
+        {
+            phi[0] = 1.0;
+        }
 
       private:
         double target_;
@@ -212,7 +217,8 @@ TEST(Fidelity, GmsSmaRunsOnTheMaximisedValues)
     EXPECT_NE(gms, lrsma);
     const PlannerRun faithful = makeRun("gms_grid10", "SMA-GMS", {{"seed", "4"}, {"max_iterations", "5"}});
     solveUnbounded(faithful);
-    EXPECT_EQ(dynamic_cast<const SlimeMould &>(*faithful.planner).fitnessKind(), FitnessKind::FeasibleInfeasible);
+    EXPECT_EQ(dynamic_cast<const SlimeMould &>(*faithful.planner).fitnessKind(),
+              FitnessKind::FeasibleInfeasible);
 }
 
 // ------------------------------------------------------------------------------------------------------------
@@ -226,8 +232,10 @@ TEST(Fidelity, GmsInitialOperatesOnEveryIndividualOfTheInitialPopulation)
         // Only gms_initial on: N initial evaluations + N operated candidates, then one iteration (SMA: N,
         // MGO: 4N). Without it: no operated candidate.
         const unsigned int n = 10, perIteration = planner == "SMA" ? n : 4 * n;
-        std::map<std::string, std::string> p{{"seed", "2"}, {"population_size", std::to_string(n)},
-                                             {"max_iterations", "1"}, {"decoding", "polyline"}};
+        std::map<std::string, std::string> p{{"seed", "2"},
+                                             {"population_size", std::to_string(n)},
+                                             {"max_iterations", "1"},
+                                             {"decoding", "polyline"}};
         const PlannerRun off = makeRun("bfo_case2", planner, p);
         solveUnbounded(off);
         p["gms_initial"] = "1";

@@ -288,7 +288,8 @@ namespace
               {"gms_grid10", 7, 100.0},
               {"gms_grid20", 0, 100.0},
               {"gms_grid30", 0, 100.0}}},
-            // [GMS]'s SMA and MGO: the six operators, the maximised [GMS] fitness (docs/algorithms.md 1.3, 1.5).
+            // [GMS]'s SMA and MGO: the six operators, the maximised [GMS] fitness
+            // (docs/algorithms.md 1.3, 1.5).
             // Measured: SMA-GMS 14/20 on gms_grid10 where SMA (S, no operators) has 19/20: with the maximised
             // f1 near 1 / length, p = tanh|f - DF| is small and most coordinates take the vc branch.
             {"SMA-GMS",

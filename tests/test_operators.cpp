@@ -48,7 +48,8 @@ namespace
         return loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml");
     }
 
-    const char *const kSwitches[] = {"gms_initial", "gms_repair", "gms_revise", "gms_simplify", "gms_improve"};
+    const char *const kSwitches[] = {"gms_initial", "gms_repair", "gms_revise", "gms_simplify",
+                                     "gms_improve"};
 
     struct Outcome
     {

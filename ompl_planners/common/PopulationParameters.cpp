@@ -258,8 +258,8 @@ namespace mhplan
         std::string on;
         for (const auto &s :
              {std::make_pair("gms_initial", gmsInitial_), std::make_pair("gms_repair", gmsRepair_),
-              std::make_pair("gms_revise", gmsRevise_),
-              std::make_pair("gms_simplify", gmsSimplify_), std::make_pair("gms_improve", gmsImprove_),
+              std::make_pair("gms_revise", gmsRevise_), std::make_pair("gms_simplify", gmsSimplify_),
+              std::make_pair("gms_improve", gmsImprove_),
               std::make_pair("gms_replace_fraction", gmsReplaceFraction_ > 0.0)})
             if (s.second)
                 on += (on.empty() ? "'" : ", '") + std::string(s.first) + "'";

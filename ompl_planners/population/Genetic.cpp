@@ -99,8 +99,9 @@ namespace mhplan
         return distance(p, q) <= tolerance;
     }
 
-    bool Genetic::findCommonNode(const Individual &a, const Individual &b, std::size_t offset, double tolerance,
-                                 const OccupancyGrid *grid, std::size_t &ia, std::size_t &ib)
+    bool Genetic::findCommonNode(const Individual &a, const Individual &b, std::size_t offset,
+                                 double tolerance, const OccupancyGrid *grid, std::size_t &ia,
+                                 std::size_t &ib)
     {
         if (a.size() < 3 || b.size() < 3)
             return false;

@@ -18,10 +18,10 @@ namespace mhplan
         An individual is a variable-length list of points from start to goal (the continuous form of the
         grid-node encoding, 1.4). Initial population (and replacement individuals): 1..\c waypoints random
         free points per individual, then node repair, line-segment repair, revision, simplification and node
-        improvement (the paper's abstract puts node improvement on the initial population). Each generation: elitism (the best
-        survives), tournament selection (size 2), with probability \c crossover_rate one-point crossover at
-        an interior node common to both parents, else at random cut points; with probability
-        \c mutation_rate a mutation: insert a random free node (probability \c insert_delete_rate),
+        improvement (the paper's abstract puts node improvement on the initial population). Each generation:
+       elitism (the best survives), tournament selection (size 2), with probability \c crossover_rate
+       one-point crossover at an interior node common to both parents, else at random cut points; with
+       probability \c mutation_rate a mutation: insert a random free node (probability \c insert_delete_rate),
         delete one (same probability), otherwise move a random interior node to a random free location;
         then node repair, line-segment repair, revision, simplification, node improvement, evaluation with
         the [GMS] f1/f2 (1.3), and replacement of the worst \c replace_fraction by fresh repaired random

@@ -17,9 +17,7 @@ namespace mhplan
         constexpr ParamRange kZ{"z", 0, 0.01, 1};
     } // namespace
 
-    SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si) : SlimeMould(si, std::string("SMA"))
-    {
-    }
+    SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si) : SlimeMould(si, std::string("SMA")) {}
 
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si, const std::string &name)
         : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Spline})
