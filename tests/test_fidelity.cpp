@@ -8,6 +8,7 @@
    population;
    - the GA's crossover finds a common node within a tolerance (or by cell on grids), not by exact equality.
  */
+#include "mhplan/bench/Campaign.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/planners/field/BacterialColony.h"
@@ -23,6 +24,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -285,4 +288,35 @@ TEST(Fidelity, GaCommonNodeWithinATolerance)
     ASSERT_TRUE(Genetic::findCommonNode(a, d, 0, 0.0, &grid, ia, ib));
     EXPECT_EQ(ia, 2u);
     EXPECT_EQ(ib, 1u);
+}
+
+// ------------------------------------------------------------------------------------------------------------
+// 7. The default campaign compares like with like: ATBFO runs, [LRSMA]'s 100 runs per planner, [GMS]'s SMA / MGO.
+
+TEST(Fidelity, DefaultCampaignRunsThePapersPlannersAndRunCounts)
+{
+    const std::string file = std::string(MHPLAN_ENVIRONMENTS_DIR) + "/../benchmarks/seeds.yaml";
+    std::ifstream in(file);
+    ASSERT_TRUE(in) << file;
+    std::stringstream text;
+    text << in.rdbuf();
+    const bench::Campaign c = bench::parseCampaign(text.str(), file);
+    std::map<std::string, unsigned int> runs;
+    for (const auto &p : c.planners)
+        runs[p.planner] = bench::runsOf(c, p);
+    for (const char *name : {"ATBFO", "BFO", "SMA-GMS", "MGO-GMS", "GA", "SMA", "LRSMA", "MGO"})
+        EXPECT_EQ(runs.count(name), 1u) << name;
+    for (const char *name : {"SMA", "LRSMA", "MGO"})
+        EXPECT_EQ(runs[name], 100u) << name << ": [LRSMA] Table 3 has 100 runs per algorithm";
+    EXPECT_EQ(runs["RRTstar"], c.runs);
+    // A planner's runs must be a positive integer; the message names the field.
+    try
+    {
+        bench::parseCampaign("campaign: c\nworlds: [bfo_case1]\nplanners:\n  - {planner: SMA, runs: 0}\n", "x.yaml");
+        ADD_FAILURE() << "runs: 0 accepted";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("planners[0].runs"), std::string::npos) << e.what();
+    }
 }
