@@ -11,6 +11,7 @@
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/planners/common/Fitness.h"
 #include "mhplan/planners/field/BacterialColony.h"
 #include "mhplan/planners/population/Genetic.h"
 #include "mhplan/planners/population/LRSMA.h"
@@ -291,7 +292,8 @@ TEST(Fidelity, GaCommonNodeWithinATolerance)
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// 7. The default campaign compares like with like: ATBFO runs, [LRSMA]'s 100 runs per planner, [GMS]'s SMA / MGO.
+// 7. The default campaign compares like with like: ATBFO runs, [LRSMA]'s 100 runs per planner, [GMS]'s SMA /
+// MGO.
 
 TEST(Fidelity, DefaultCampaignRunsThePapersPlannersAndRunCounts)
 {
@@ -312,11 +314,39 @@ TEST(Fidelity, DefaultCampaignRunsThePapersPlannersAndRunCounts)
     // A planner's runs must be a positive integer; the message names the field.
     try
     {
-        bench::parseCampaign("campaign: c\nworlds: [bfo_case1]\nplanners:\n  - {planner: SMA, runs: 0}\n", "x.yaml");
+        bench::parseCampaign("campaign: c\nworlds: [bfo_case1]\nplanners:\n  - {planner: SMA, runs: 0}\n",
+                             "x.yaml");
         ADD_FAILURE() << "runs: 0 accepted";
     }
     catch (const InputError &e)
     {
         EXPECT_NE(std::string(e.what()).find("planners[0].runs"), std::string::npos) << e.what();
     }
+}
+
+TEST(Fidelity, GmsInfeasibleBaseIsAParameter)
+{
+    // D of f2: the path's own f1 denominator (default) or a constant (20 x the sum of the bounds' sides).
+    World world;
+    world.name = "one_circle";
+    world.bounds = {0, 10, 0, 10};
+    world.circles.push_back({{5, 5}, 1.0});
+    world.queries.push_back({"default", {0, 5}, {10, 5}});
+    og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], makeCollisionModel(world));
+    ss->getSpaceInformation()->setup();
+    PathFitness fit(ss->getSpaceInformation());
+    FitnessWeights w;
+    fit.configure(FitnessKind::FeasibleInfeasible, w);
+    const std::vector<Vec2> straight{{0, 5}, {10, 5}};
+    const FitnessResult a = fit.evaluate(straight, straight);
+    EXPECT_NEAR(a.fitness, fit.gmsFeasibleFitness(straight) + a.violation, 1e-9);
+    w.infeasibleBaseIsPath = false;
+    fit.configure(FitnessKind::FeasibleInfeasible, w);
+    const FitnessResult b = fit.evaluate(straight, straight);
+    EXPECT_NEAR(b.fitness, 20.0 * (10.0 + 10.0) + b.violation, 1e-9);
+    EXPECT_NEAR(b.gmsValue, 1.0 / b.fitness, 1e-15);
+    // The planner parameter.
+    const PlannerRun r = makeRun("bfo_case1", "GA", {{"infeasible_base", "constant"}});
+    EXPECT_EQ(r.planner->params()["infeasible_base"].getValue(), "constant");
+    EXPECT_THROW(applyPlannerParameters(*r.planner, {{"infeasible_base", "zero"}}), InputError);
 }

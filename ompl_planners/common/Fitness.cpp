@@ -118,6 +118,10 @@ namespace mhplan
                  checker->getSpecs().clearanceComputationType == ob::StateValidityCheckerSpecs::NONE)
             mode_ = PenaltyMode::ValidityOnly;
         resolution_ = std::max(1e-6, si_->getStateValidityCheckingResolution() * si_->getMaximumExtent());
+        double sides = 0.0;
+        for (unsigned int c = 0; c < dim_; ++c)
+            sides += high_[c] - low_[c];
+        infeasibleConstant_ = 20.0 * sides;
         point_.assign(dim_, 0.0);
     }
 
@@ -352,7 +356,7 @@ namespace mhplan
         r.violation = weights_.infeasibleLengthWeight * lin + weights_.crossingWeight * cro;
         // f2 = 1 / (D + w_l lin + w_c cro) with D = f1's denominator of the same path (docs/algorithms.md
         // 1.3): the key is f2's denominator, positive, so every feasible path (negative key) ranks first.
-        r.fitness = base + r.violation;
+        r.fitness = (weights_.infeasibleBaseIsPath ? base : infeasibleConstant_) + r.violation;
         r.gmsValue = 1.0 / r.fitness;
         return r;
     }

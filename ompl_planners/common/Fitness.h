@@ -49,6 +49,10 @@ namespace mhplan
         /** \brief w_l, w_c of [GMS] f2 (share of length inside obstacles, obstacles crossed per metre). */
         double infeasibleLengthWeight{1.0};
         double crossingWeight{1.0};
+        /** \brief D of [GMS] f2 (unreadable in the paper; docs/algorithms.md 1.3): true (the recommendation)
+            D = f1's denominator of the same path; false: a constant, 20 x the sum of the bounds' sides, so
+            infeasible paths rank by w_l lin + w_c cro alone (the form before issue 17). */
+        bool infeasibleBaseIsPath{true};
     };
 
     /** \brief One evaluation. */
@@ -193,6 +197,8 @@ namespace mhplan
         /** \brief The box outside which samples are penalised (per coordinate). */
         std::vector<double> low_, high_;
         double resolution_{0.01};
+        /** \brief The constant D of FitnessWeights::infeasibleBaseIsPath = false. */
+        double infeasibleConstant_{0.0};
         /** \brief Reused buffers of the planar overloads. */
         mutable std::vector<double> planarA_, planarB_, point_;
     };

@@ -64,6 +64,8 @@ namespace mhplan
                               &PopulationPlanner::getInfeasibleLengthWeight);
         declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
                               &PopulationPlanner::getCrossingWeight);
+        declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
+                      &PopulationPlanner::getInfeasibleBase, "path,constant");
         declareRanged<unsigned long>(params(), this, kSeed, &PopulationPlanner::setSeed,
                                      &PopulationPlanner::getSeed);
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
@@ -185,6 +187,14 @@ namespace mhplan
         checkParameter(kInfeasibleLengthWeight, w);
         weights_.infeasibleLengthWeight = w;
         invalidate();
+    }
+
+    void PopulationPlanner::setInfeasibleBase(const std::string &base)
+    {
+        if (base != "path" && base != "constant")
+            throw std::invalid_argument("parameter 'infeasible_base' must be 'path' or 'constant'; got '" +
+                                        base + "'");
+        weights_.infeasibleBaseIsPath = base == "path";
     }
 
     void PopulationPlanner::setCrossingWeight(double w)

@@ -153,6 +153,9 @@ namespace mhplan
         /** \brief w_l of [GMS] (0..1e6). */
         void setInfeasibleLengthWeight(double w);
         double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
+        /** \brief D of [GMS] f2: "path" (f1's denominator of the same path, the default) or "constant". */
+        void setInfeasibleBase(const std::string &base);
+        std::string getInfeasibleBase() const { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }
         /** \brief w_c of [GMS] (0..1e6). */
         void setCrossingWeight(double w);
         double getCrossingWeight() const { return weights_.crossingWeight; }
