@@ -110,7 +110,10 @@ namespace mhplan::bench
                     p.planner = r.nonEmptyText(n[i], field);
                 else
                 {
-                    r.allowKeys(n[i], field, {"planner", "name", "params", "progress"});
+                    r.allowKeys(n[i], field, {"planner", "name", "params", "progress", "runs"});
+                    if (n[i]["runs"].IsDefined())
+                        p.runs =
+                            static_cast<unsigned int>(r.integer(n[i]["runs"], field + ".runs", 1, 1000000));
                     if (!n[i]["planner"].IsDefined())
                         r.fail(n[i], field + ".planner", "missing");
                     p.planner = r.nonEmptyText(n[i]["planner"], field + ".planner");
@@ -432,6 +435,8 @@ namespace mhplan::bench
                 common << " " << kv.first << "=" << kv.second;
             for (const auto &name : p.progress)
                 common << " progress:" << name;
+            if (p.runs > 0)
+                common << " runs:" << p.runs;
             common << "\n";
         }
 

@@ -30,6 +30,8 @@ namespace mhplan::bench
             planner declares. OMPL 1.5.2's BIT* crashes now and then when some of its progress properties are
             read while it plans. */
         std::vector<std::string> progress;
+        /** \brief Runs per experiment of this planner; 0: the campaign's \c runs (see runsOf()). */
+        unsigned int runs{0};
     };
 
     /** \brief A world of a campaign and the queries to run on it. */
@@ -128,6 +130,13 @@ namespace mhplan::bench
     /** \brief Parse campaign YAML; \e fileName is used in messages and to resolve relative world paths. */
     Campaign parseCampaign(const std::string &text, const std::string &fileName,
                            const PlannerRegistry &registry = PlannerRegistry::builtin());
+
+    /** \brief Runs of planner \e p in every planning experiment of \e c (its own \c runs, else the
+        campaign's). */
+    inline unsigned int runsOf(const Campaign &c, const PlannerSpec &p)
+    {
+        return p.runs > 0 ? p.runs : c.runs;
+    }
 
     /** \brief One (world, query) planning experiment or one scenario's simulation experiment. */
     struct Experiment

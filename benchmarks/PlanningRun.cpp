@@ -240,12 +240,13 @@ namespace mhplan::bench::detail
         {
             const PlannerSpec &spec = c.planners[pi];
             PlannerRecord &rec = records[pi];
-            rec.runs.resize(c.runs);
-            rec.progress.resize(c.runs);
-            rec.paths.resize(c.runs);
-            rec.improvements.resize(c.runs);
-            rec.have.assign(c.runs, false);
-            for (std::size_t next = 0; next < c.runs; ++next)
+            const unsigned int runs = runsOf(c, spec);
+            rec.runs.resize(runs);
+            rec.progress.resize(runs);
+            rec.paths.resize(runs);
+            rec.improvements.resize(runs);
+            rec.have.assign(runs, false);
+            for (std::size_t next = 0; next < runs; ++next)
             {
                 const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
                 const ChildOutcome outcome = runChildProcess(
@@ -265,7 +266,7 @@ namespace mhplan::bench::detail
                             if (rec.progressNames.size() == 1) // only "time": no progress properties
                                 rec.progressNames.clear();
                         }
-                        else if (m.type == 'R' && m.index < c.runs)
+                        else if (m.type == 'R' && m.index < runs)
                         {
                             auto props = decodeMap(m.payload);
                             rec.paths[m.index] = props["\x01path"];
@@ -283,7 +284,7 @@ namespace mhplan::bench::detail
                             reportRun(progressFd, e.index, props["status ENUM"] == std::to_string(crashCode),
                                       pi, runSeconds);
                         }
-                        else if (m.type == 'G' && m.index < c.runs)
+                        else if (m.type == 'G' && m.index < runs)
                         {
                             ot::Benchmark::RunProgressData data;
                             for (const auto &sample : splitOn(m.payload, kGroupSep))
@@ -312,7 +313,9 @@ namespace mhplan::bench::detail
         x.name = e.name;
         x.maxTime = c.timeLimit;
         x.maxMem = c.memoryLimit;
-        x.runCount = c.runs;
+        x.runCount = c.runs; // OMPL's per-experiment count; a planner's own count is its run list's length
+        for (const auto &p : c.planners)
+            x.runCount = std::max<unsigned int>(x.runCount, runsOf(c, p));
         x.startTime = start;
         x.seed = e.seed;
         x.host = info.host;
@@ -366,7 +369,7 @@ namespace mhplan::bench::detail
         std::ostringstream paths;
         paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n";
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
-            for (std::size_t k = 0; k < c.runs; ++k)
+            for (std::size_t k = 0; k < records[pi].paths.size(); ++k)
                 if (!records[pi].paths[k].empty())
                     paths << "geometric_" << c.planners[pi].displayName << "\t" << k << "\t"
                           << records[pi].paths[k] << "\n";

@@ -147,10 +147,13 @@ namespace mhplan::bench
             slotBase[si] = slots;
             slots += campaign.simulations[si].controllers.size();
         }
+        std::size_t planningRuns = 0; // per planning experiment: every planner's own count
+        for (const auto &p : campaign.planners)
+            planningRuns += mhplan::bench::runsOf(campaign, p);
         const auto runsOf = [&](const Experiment &e)
         {
             return e.simulation == Experiment::kNoSimulation
-                       ? campaign.planners.size() * e.runs
+                       ? planningRuns
                        : campaign.simulations[e.simulation].controllers.size() * e.runs;
         };
 

@@ -26,19 +26,45 @@ namespace mhplan
         constexpr bool kFaithful = false, kImproved = true;
         constexpr bool kPlanar = false, kAnyDimension = true;
 
-        /** \brief A population planner named \e name with the [GMS] repair, simplification and node
-            improvement on every individual after each iteration, and \e waypoints waypoints. */
-        template <typename P> PlannerAllocator gmsVariant(const std::string &name, unsigned int waypoints)
+        /** \brief Improved variant (not in any paper): a population planner named \e name with the [GMS]
+            repair, simplification and node improvement on every individual after each iteration, \e
+            waypoints waypoints, polyline decoding when \e polyline, the fitness \c auto, anytime restarts. */
+        template <typename P>
+        PlannerAllocator operatorVariant(const std::string &name, unsigned int waypoints, bool polyline)
         {
-            return [name, waypoints](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+            return [name, waypoints, polyline](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
             {
                 auto p = std::make_shared<P>(si, name);
+                if (polyline)
+                    p->setDecoding("polyline");
+                p->setFitness("auto");
                 p->setGmsRepair(true);
                 p->setGmsSimplify(true);
                 p->setGmsImprove(true);
                 p->setGmsScope("all");
                 p->setWaypoints(waypoints);
                 p->setStagnationRestart(kAnytimeRestart);
+                return p;
+            };
+        }
+
+        /** \brief The faithful [GMS] version of a population algorithm (docs/algorithms.md 1.3, 1.5): the
+            [GMS] fitness (maximised reciprocals), polyline decoding of 3 waypoints, node repair, line-segment
+            repair and node improvement on the initial population and on new (replacement) individuals, and
+            every iteration simplification and revision of every individual and replacement of the worst 10 %
+            by fresh random individuals. */
+        template <typename P> PlannerAllocator gmsFaithful(const std::string &name)
+        {
+            return [name](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+            {
+                auto p = std::make_shared<P>(si, name);
+                p->setDecoding("polyline");
+                p->setFitness("gms");
+                p->setGmsInitial(true);
+                p->setGmsRevise(true);
+                p->setGmsSimplify(true);
+                p->setGmsScope("all");
+                p->setGmsReplaceFraction(0.1);
                 return p;
             };
         }
@@ -60,25 +86,33 @@ namespace mhplan
                "walk", kFaithful, kPlanar});
         r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
                allocatorFor<ArtificialPotentialField>(), "walk", kFaithful, kPlanar});
-        r.add({"SMA", "mhplan", "Slime mould algorithm (Li et al. 2020; [GMS], [LRSMA])",
+        r.add({"SMA", "mhplan",
+               "Slime mould algorithm as [LRSMA] compares it (Li et al. 2020; [LRSMA] 3, 5.2): spline, "
+               "fitness S",
                allocatorFor<SlimeMould>(), "population", kFaithful, kAnyDimension});
         r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
                allocatorFor<LRSMA>(), "population", kFaithful, kAnyDimension});
-        r.add({"MGO", "mhplan", "Mountain gazelle optimizer (Abdollahzadeh et al. 2022; [GMS])",
+        r.add({"MGO", "mhplan", "Mountain gazelle optimizer, the original (Abdollahzadeh et al. 2022)",
                allocatorFor<MountainGazelle>(), "population", kFaithful, kAnyDimension});
         r.add({"SMA-GMS", "mhplan",
+               "Slime mould algorithm as [GMS] runs it: the six [GMS] operators, maximised [GMS] fitness",
+               gmsFaithful<SlimeMould>("SMA-GMS"), "population", kFaithful, kPlanar});
+        r.add({"MGO-GMS", "mhplan",
+               "Mountain gazelle optimizer as [GMS] runs it: the six [GMS] operators, [GMS] fitness",
+               gmsFaithful<MountainGazelle>("MGO-GMS"), "population", kFaithful, kPlanar});
+        r.add({"SMA-OPS", "mhplan",
                "SMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
-               gmsVariant<SlimeMould>("SMA-GMS", 3), "population", kImproved, kPlanar});
+               operatorVariant<SlimeMould>("SMA-OPS", 3, true), "population", kImproved, kPlanar});
         r.add(
-            {"LRSMA-GMS", "mhplan",
+            {"LRSMA-OPS", "mhplan",
              "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
              "5 waypoints",
-             gmsVariant<LRSMA>("LRSMA-GMS", 5), "population", kImproved, kPlanar});
-        r.add({"MGO-GMS", "mhplan",
+             operatorVariant<LRSMA>("LRSMA-OPS", 5, false), "population", kImproved, kPlanar});
+        r.add({"MGO-OPS", "mhplan",
                "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
-               gmsVariant<MountainGazelle>("MGO-GMS", 3), "population", kImproved, kPlanar});
-        r.add({"GA", "mhplan", "Genetic algorithm with the [GMS] repair operators", allocatorFor<Genetic>(),
-               "population", kFaithful, kPlanar});
+               operatorVariant<MountainGazelle>("MGO-OPS", 3, true), "population", kImproved, kPlanar});
+        r.add({"GA", "mhplan", "Genetic algorithm of [GMS] with its six operators and maximised fitness",
+               allocatorFor<Genetic>(), "population", kFaithful, kPlanar});
         r.add({"GA-WALK", "mhplan",
                "GA, improved variant (not in the paper): initial and replacement individuals are random "
                "collision-free lattice walks",

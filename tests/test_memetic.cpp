@@ -308,7 +308,7 @@ TEST(AnytimeRestarts, OnlyWithoutAnIterationBudgetAndOnlyForTheVariants)
     };
     unsigned long restarts = 0;
     // The registry switches the restarts on for the improved variants only.
-    for (const char *name : {"SMA-GMS", "LRSMA-GMS", "MGO-GMS", "GA-WALK"})
+    for (const char *name : {"SMA-OPS", "LRSMA-OPS", "MGO-OPS", "GA-WALK"})
         EXPECT_EQ(PlannerRegistry::builtin()
                       .create(name, makeSimpleSetup(w, w.queries[0], model)->getSpaceInformation())
                       ->params()["stagnation_restart"]
@@ -324,14 +324,14 @@ TEST(AnytimeRestarts, OnlyWithoutAnIterationBudgetAndOnlyForTheVariants)
             << name;
     // Without an iteration budget (a condition that holds after a fixed number of checks: deterministic)
     // a variant with a short stagnation window restarts.
-    run("SMA-GMS", {{"seed", "5"}, {"stagnation_restart", "3"}}, 40000, restarts);
+    run("SMA-OPS", {{"seed", "5"}, {"stagnation_restart", "3"}}, 40000, restarts);
     EXPECT_GT(restarts, 0u);
     // With an iteration budget the restarts stay off: the same run as with the switch off.
     const double with =
-        run("SMA-GMS", {{"seed", "5"}, {"stagnation_restart", "3"}, {"max_iterations", "40"}}, 0, restarts);
+        run("SMA-OPS", {{"seed", "5"}, {"stagnation_restart", "3"}, {"max_iterations", "40"}}, 0, restarts);
     EXPECT_EQ(restarts, 0u);
     const double without =
-        run("SMA-GMS", {{"seed", "5"}, {"stagnation_restart", "0"}, {"max_iterations", "40"}}, 0, restarts);
+        run("SMA-OPS", {{"seed", "5"}, {"stagnation_restart", "0"}, {"max_iterations", "40"}}, 0, restarts);
     EXPECT_EQ(with, without);
 }
 

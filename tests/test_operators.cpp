@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* The switchable [GMS] operators of PopulationPlanner (gms_repair, gms_revise, gms_simplify, gms_improve,
    gms_scope, gms_replace_fraction): validation, defaults, refusal where they cannot apply, and what the
-   improved variants SMA-GMS, LRSMA-GMS and MGO-GMS achieve on bfo_case2 with the papers' budgets. */
+   improved variants SMA-OPS, LRSMA-OPS and MGO-OPS achieve on bfo_case2 with the papers' budgets. */
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
@@ -48,7 +48,8 @@ namespace
         return loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + name + ".yaml");
     }
 
-    const char *const kSwitches[] = {"gms_repair", "gms_revise", "gms_simplify", "gms_improve"};
+    const char *const kSwitches[] = {"gms_initial", "gms_repair", "gms_revise", "gms_simplify",
+                                     "gms_improve"};
 
     struct Outcome
     {
@@ -109,6 +110,8 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     for (const std::string &name : test::faithful("population"))
     {
+        if (name.find("-GMS") != std::string::npos)
+            continue; // [GMS]'s SMA and MGO switch operators on (VariantsAreRegistered... checks them)
         const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
         auto *pp = dynamic_cast<PopulationPlanner *>(p.get());
         ASSERT_NE(pp, nullptr) << name;
@@ -153,23 +156,49 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
 
 TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
 {
-    std::map<std::string, std::string> names;
+    unsigned int faithfulGms = 0, improved = 0;
     for (const std::string &name : test::ofFamily("population"))
     {
         const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
         EXPECT_EQ(p->getName(), name);
-        const bool variant = name.find("-GMS") != std::string::npos;
-        EXPECT_EQ(dynamic_cast<PopulationPlanner &>(*p).gmsOperatorsEnabled(), variant) << name;
-        if (variant)
+        const bool gms = name.find("-GMS") != std::string::npos;
+        const bool ops = name.find("-OPS") != std::string::npos;
+        const PlannerEntry &entry = PlannerRegistry::builtin().get(name);
+        EXPECT_EQ(dynamic_cast<PopulationPlanner &>(*p).gmsOperatorsEnabled(), gms || ops) << name;
+        if (gms)
         {
+            // [GMS]'s SMA / MGO (docs/algorithms.md 1.5): repair, segment repair and node improvement on the
+            // initial and new individuals; simplification, revision and replacement every iteration; the
+            // [GMS] fitness; faithful, not an improved variant.
+            ++faithfulGms;
+            EXPECT_FALSE(entry.improved) << name;
+            EXPECT_EQ(p->params()["gms_initial"].getValue(), "1") << name;
+            EXPECT_EQ(p->params()["gms_revise"].getValue(), "1") << name;
+            EXPECT_EQ(p->params()["gms_simplify"].getValue(), "1") << name;
+            EXPECT_EQ(p->params()["gms_repair"].getValue(), "0") << name;
+            EXPECT_EQ(p->params()["gms_improve"].getValue(), "0") << name;
+            EXPECT_EQ(p->params()["gms_scope"].getValue(), "all") << name;
+            EXPECT_DOUBLE_EQ(std::stod(p->params()["gms_replace_fraction"].getValue()), 0.1) << name;
+            EXPECT_EQ(p->params()["fitness"].getValue(), "gms") << name;
+            EXPECT_EQ(p->params()["decoding"].getValue(), "polyline") << name;
+            EXPECT_NE(entry.description.find("[GMS]"), std::string::npos) << name;
+        }
+        if (ops)
+        {
+            ++improved;
+            EXPECT_TRUE(entry.improved) << name;
             EXPECT_EQ(p->params()["gms_repair"].getValue(), "1");
             EXPECT_EQ(p->params()["gms_simplify"].getValue(), "1");
             EXPECT_EQ(p->params()["gms_improve"].getValue(), "1");
-            EXPECT_NE(
-                PlannerRegistry::builtin().get(name).description.find("improved variant (not in the paper)"),
-                std::string::npos);
+            EXPECT_NE(entry.description.find("improved variant (not in the paper)"), std::string::npos);
         }
     }
+    EXPECT_EQ(faithfulGms, 2u);
+    EXPECT_EQ(improved, 3u);
+    // The original SMA is [LRSMA]'s: spline decoding, fitness S, no operator.
+    const ob::PlannerPtr sma = PlannerRegistry::builtin().create("SMA", planarSpace());
+    EXPECT_EQ(sma->params()["decoding"].getValue(), "spline");
+    EXPECT_EQ(sma->params()["fitness"].getValue(), "lrsma");
 }
 
 TEST(GmsOperators, RefusedInKDAndByAlgorithmsWithoutAPopulationView)
@@ -368,10 +397,10 @@ TEST(GmsOperators, VariantsOnBfoCase2AtThePapersBudgets)
     const double optimum = computeOptimum(world, world.queries[0]).length;
     EXPECT_NEAR(optimum, 14.4198, 1e-3);
     // Measured (20 seeds, N = 30, 30 iterations); asserted with a small margin.
-    // Measured: SMA-GMS 20/20, 1.18%; LRSMA-GMS 20/20, 0.53%; MGO-GMS 20/20, 4.58% (faithful SMA, LRSMA,
+    // Measured: SMA-OPS 20/20, 1.18%; LRSMA-OPS 20/20, 0.53%; MGO-OPS 20/20, 4.58% (faithful SMA, LRSMA,
     // MGO: about +22%, see test_metaheuristics).
     const std::map<std::string, std::pair<unsigned int, double>> expected{
-        {"SMA-GMS", {19, 2.5}}, {"LRSMA-GMS", {19, 1.5}}, {"MGO-GMS", {19, 6.0}}};
+        {"SMA-OPS", {19, 2.5}}, {"LRSMA-OPS", {19, 1.5}}, {"MGO-OPS", {19, 6.0}}};
     for (const auto &e : expected)
     {
         const Outcome o = run20(world, optimum, e.first);
@@ -394,7 +423,7 @@ TEST(GmsOperators, DISABLED_AllSeedWorldsFaithfulVersusVariant)
     {
         const World world = seedWorld(w);
         const double optimum = computeOptimum(world, world.queries[0]).length;
-        for (const std::string name : {"SMA", "SMA-GMS", "LRSMA", "LRSMA-GMS", "MGO", "MGO-GMS"})
+        for (const std::string name : {"SMA", "SMA-OPS", "LRSMA", "LRSMA-OPS", "MGO", "MGO-OPS"})
         {
             const Outcome o = run20(world, optimum, name);
             std::cout << std::setw(16) << w << " " << std::setw(10) << name << ": exact " << std::setw(2)

@@ -21,7 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "analysis"))
 
-from mhplan_analysis import report  # noqa: E402
+from mhplan_analysis import papers, report  # noqa: E402
 
 STATUS = ["Unknown status", "Invalid start", "Invalid goal", "Unrecognized goal type", "Timeout",
           "Approximate solution", "Exact solution", "Crash", "Abort"]
@@ -169,7 +169,12 @@ class ReportTest(unittest.TestCase):
                 self.assertAlmostEqual(rows[(exp, planner)]["median_gap"], median, places=9)
             # The papers' numbers stand beside ours.
             self.assertIn("29.81", text)  # LRSMA scenario 1 mean in the paper's Table 3
-            self.assertIn("14.535", text)  # [BFO] case 1 ATBFO best
+            # [BFO] case 1 as Table 1 lists it is the paper's second scenario: 14.5412, at the paper's precision;
+            # 8.27 s is the fastest run's time, not the best path's.
+            self.assertIn("14.5412", text)
+            self.assertIn("time of the fastest run", text)
+            self.assertNotIn("14.404", text)
+            self.assertIn("all runs: S", text)  # [LRSMA] Table 3 both ways
             self.assertIn("Crasher", text)
 
     def test_missing_progress_and_failed_planner(self):
@@ -537,6 +542,31 @@ class WorldDrawingTest(unittest.TestCase):
             self.assertIn((1.0, 9.0, "o"), calls)
             self.assertIn((9.0, 1.0, "*"), calls)
             self.assertNotIn((1.0, 1.0, "o"), calls)
+
+
+class LrsmaFitnessTest(unittest.TestCase):
+    """papers.lrsma_fitness: [LRSMA]'s S = length + 1000 f2 on a constructed path (docs/algorithms.md 1.2)."""
+
+    def test_formula(self):
+        circle = [(5.0, 5.0, 1.0)]
+        bounds = (0.0, 10.0, 0.0, 10.0)
+        # Samples at t = 0, 0.5, 1 of the straight path: (0,5), (5,5) (the centre, v = 1), (10,5): f2 = 1/3.
+        s = papers.lrsma_fitness([(0.0, 5.0), (10.0, 5.0)], circle, bounds, False, samples=3)
+        self.assertAlmostEqual(s, 10.0 + 1000.0 / 3.0, places=9)
+        # A detour above the circle: f2 = 0, S = its length.
+        detour = [(0.0, 5.0), (5.0, 7.0), (10.0, 5.0)]
+        self.assertAlmostEqual(papers.lrsma_fitness(detour, circle, bounds, True), 2 * math.hypot(5, 2), places=9)
+        # The same path reported as not exact (a collision between samples): f2 = 1e-3.
+        self.assertAlmostEqual(papers.lrsma_fitness(detour, circle, bounds, False), 2 * math.hypot(5, 2) + 1.0, places=9)
+        # A point outside the bounds counts min(distance, 1).
+        s = papers.lrsma_fitness([(0.0, 5.0), (0.0, 12.0)], [], bounds, False, samples=2)
+        self.assertAlmostEqual(s, 7.0 + 1000.0 * 0.5, places=9)
+        self.assertIsNone(papers.lrsma_fitness([(0.0, 0.0)], circle, bounds, True))
+
+    def test_paper_numbers_paired_with_the_right_worlds(self):
+        self.assertEqual(papers.BFO_REPORTED["bfo_case1"][0][1], "14.5412")
+        self.assertEqual(papers.BFO_REPORTED["bfo_case1_moved"][0][1], "14.5346")
+        self.assertIn(("NBCA (cited)", "14.40351", "62.14"), papers.BFO_REPORTED["bfo_case2"])
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import comparisons, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
+from . import comparisons, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -32,13 +32,6 @@ def _column(database, candidates):
         if c in database.run_columns:
             return c
     return None
-
-
-def _world_name(exp):
-    w = dbmod.experiment_value(exp, "world", "world_name")
-    if w:
-        return str(w)
-    return exp.name.split("/")[0]
 
 
 def _optimum(exp):
@@ -494,27 +487,7 @@ def write_report(database_path, outdir, world_dir=None):
         parts.extend(comparisons.campaign_section(database, planning, _optimum, outdir, colors))
 
     # The papers' tables.
-    lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in planning if _world_name(e) in papers.LRSMA_WORLDS]
-    if lrsma_exps:
-        parts.append("<h2>[LRSMA] Table 3 layout (our runs; the paper's numbers beside)</h2>")
-        parts.append("<p class='note'>Our scenarios are reconstructions (the paper publishes no coordinates): the paper's numbers are context, not a like-for-like comparison.</p>")
-        for scenario, exp in sorted(lrsma_exps, key=lambda se: se[0]):
-            rows = []
-            for r in per_exp_tables[exp.id]:
-                rows.append(("%s (ours)" % html.escape(r["planner"]), _fmt(r["min"], 2), _fmt(r["mean"], 2), _fmt(r["std"], 2), _fmt(r["best_time"], 4), _fmt(r["mean_time"], 4)))
-            for alg, (mn, me, sd, bt, mt) in papers.LRSMA_TABLE3[scenario].items():
-                rows.append(("%s (paper)" % alg, "%.2f" % mn, "%.2f" % me, "%.2f" % sd, "%.2f" % bt, "%.2f" % mt))
-            parts.append("<h3>Scenario %d: %s</h3>" % (scenario, html.escape(exp.name)))
-            parts.append(_table(["algorithm", "length min", "length mean", "length std", "time of best run [s]", "mean time [s]"], rows))
-    bfo_exps = [e for e in planning if _world_name(e) in papers.BFO_REPORTED]
-    if bfo_exps:
-        parts.append("<h2>[BFO] best path lengths (our runs; the paper's numbers beside)</h2>")
-        parts.append("<p class='note'>%s</p>" % html.escape(papers.BFO_NOTE))
-        for exp in bfo_exps:
-            rows = [("%s (ours)" % html.escape(r["planner"]), _fmt(r["min"], 4), _fmt(r["best_time"], 4)) for r in per_exp_tables[exp.id]]
-            rows += [("%s (paper)" % html.escape(n), "%.5g" % l, "%.2f" % t if t else "&ndash;") for n, l, t in papers.BFO_REPORTED[_world_name(exp)]]
-            parts.append("<h3>%s</h3>" % html.escape(exp.name))
-            parts.append(_table(["algorithm", "best length", "time of best run [s]"], rows))
+    parts.extend(paper_tables.paper_tables(database, planning, per_exp_tables, paths, world_dir, _table, _fmt))
 
     if planning:
         parts.extend(scaling.scaling_section(database, planning, outdir, colors, notes, _table))

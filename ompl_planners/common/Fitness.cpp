@@ -121,7 +121,7 @@ namespace mhplan
         double sides = 0.0;
         for (unsigned int c = 0; c < dim_; ++c)
             sides += high_[c] - low_[c];
-        infeasibleOffset_ = 10.0 * 2.0 * sides;
+        infeasibleConstant_ = 20.0 * sides;
         point_.assign(dim_, 0.0);
     }
 
@@ -299,8 +299,9 @@ namespace mhplan
         {
             const double len = pointDistance(path[i - 1], path[i], dim_);
             dis += len;
-            if (danger)
-                saf += std::max(0.0, 1.0 - segmentClearance(path[i - 1], path[i]) / weights_.safeDistance);
+            if (danger) // alpha in [0, 1]: a segment in collision (negative clearance) counts 1
+                saf += std::min(
+                    1.0, std::max(0.0, 1.0 - segmentClearance(path[i - 1], path[i]) / weights_.safeDistance));
             if (len <= 0.0)
                 continue;
             // After a zero-length segment prevB has the coordinates of path[i - 1]: the angle between the
@@ -319,9 +320,12 @@ namespace mhplan
         for (std::size_t i = 1; i < path.size(); ++i)
             r.length += pointDistance(path[i - 1], path[i], dim_);
         r.feasible = pathValid(path);
+        // Denominator of f1 (w_d dis + w_s saf + w_sm smo), kept away from 0 (start = goal).
+        const double base = std::max(gmsFeasibleFitness(path), 1e-12);
         if (r.feasible)
         {
-            r.fitness = gmsFeasibleFitness(path);
+            r.gmsValue = 1.0 / base; // f1, maximised
+            r.fitness = -r.gmsValue;
             return r;
         }
         double inside = 0.0;
@@ -350,7 +354,10 @@ namespace mhplan
         const double lin = r.length > 0.0 ? inside / r.length : 1.0;
         const double cro = r.length > 0.0 ? crossings / r.length : 1.0;
         r.violation = weights_.infeasibleLengthWeight * lin + weights_.crossingWeight * cro;
-        r.fitness = infeasibleOffset_ + r.violation;
+        // f2 = 1 / (D + w_l lin + w_c cro) with D = f1's denominator of the same path (docs/algorithms.md
+        // 1.3): the key is f2's denominator, positive, so every feasible path (negative key) ranks first.
+        r.fitness = (weights_.infeasibleBaseIsPath ? base : infeasibleConstant_) + r.violation;
+        r.gmsValue = 1.0 / r.fitness;
         return r;
     }
 

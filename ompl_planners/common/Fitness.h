@@ -14,12 +14,20 @@
 
 namespace mhplan
 {
-    /** \brief Which fitness a planner minimises. */
+    /** \brief Which fitness a planner uses. */
     enum class FitnessKind
     {
-        LengthPenalty,     ///< [LRSMA] S = eta1 * length + eta2 * collision violation (1.2)
-        FeasibleInfeasible ///< [GMS] f1 for feasible paths, F_inf + f2 for infeasible ones (1.3)
+        LengthPenalty,     ///< [LRSMA] S = eta1 * length + eta2 * collision violation (1.2), minimised
+        FeasibleInfeasible ///< [GMS] f1 (feasible) / f2 (infeasible), maximised reciprocals (1.3)
     };
+
+    /** \brief The maximised [GMS] value (f1 or f2, docs/algorithms.md 1.3) of a [GMS] fitness key (what
+        FitnessResult::fitness holds for FitnessKind::FeasibleInfeasible: -f1 < 0 for a feasible path,
+        1 / f2 > 0 for an infeasible one, so that minimising the key ranks feasibility first, then f). */
+    inline double gmsValueOfKey(double key)
+    {
+        return key < 0.0 ? -key : 1.0 / key;
+    }
 
     /** \brief Parse "lrsma" or "gms" (throws std::invalid_argument naming the parameter 'fitness'). */
     FitnessKind parseFitnessKind(const std::string &name);
@@ -41,12 +49,20 @@ namespace mhplan
         /** \brief w_l, w_c of [GMS] f2 (share of length inside obstacles, obstacles crossed per metre). */
         double infeasibleLengthWeight{1.0};
         double crossingWeight{1.0};
+        /** \brief D of [GMS] f2 (unreadable in the paper; docs/algorithms.md 1.3): true (the recommendation)
+            D = f1's denominator of the same path; false: a constant, 20 x the sum of the bounds' sides, so
+            infeasible paths rank by w_l lin + w_c cro alone (the form before issue 17). */
+        bool infeasibleBaseIsPath{true};
     };
 
     /** \brief One evaluation. */
     struct FitnessResult
     {
+        /** \brief What planners minimise: [LRSMA] S; for [GMS] the key -f1 (feasible) or 1 / f2 =
+            D + w_l lin + w_c cro (infeasible), see gmsValueOfKey(). */
         double fitness{0.0};
+        /** \brief [GMS] only: the maximised value f1 or f2 (0 for [LRSMA]). */
+        double gmsValue{0.0};
         double length{0.0};
         /** \brief Every segment passed the space information's motion validator. */
         bool feasible{false};
@@ -89,8 +105,12 @@ namespace mhplan
         sampled at the space's validity-checking resolution; with a checker that computes no clearance the
         danger term saf(p) is 0 (there is nothing to measure it with). The turning angle between segments
         is the angle between their direction vectors in R^k. lin(p) and cro(p) sample every segment at the
-        validity-checking resolution (an obstacle crossing = one maximal run of invalid samples);
-        F_inf = 20 x the sum of the bounds' side lengths (10 x the perimeter in the plane).
+        validity-checking resolution (an obstacle crossing = one maximal run of invalid samples). The paper's
+        reciprocals are maximised: f1 = 1 / (w_d dis + w_s saf + w_sm smo); f2 = 1 / (D + w_l lin + w_c cro)
+        with D (unreadable in the paper) = f1's denominator of the same path, so an infeasible path scores
+        below the same path without its collisions; every feasible path ranks above every infeasible one
+        (open choices of docs/algorithms.md 1.3). FitnessResult::fitness is a key to minimise with that order
+        (see gmsValueOfKey()); FitnessResult::gmsValue is f1 or f2 itself. alpha(l) is clamped to [0, 1].
 
         Holds two preallocated states: evaluate() does not allocate (the Vec2 overloads copy into buffers
         that are reused). Not thread-safe. */
@@ -122,7 +142,8 @@ namespace mhplan
         double segmentClearance(const double *a, const double *b) const;
         /** \brief Every segment of \e path valid. */
         bool pathValid(const PointsView &path) const;
-        /** \brief The [GMS] feasible fitness f1 of a path (no feasibility check). */
+        /** \brief The denominator w_d dis + w_s saf + w_sm smo of the [GMS] f1 = 1 / denominator of a path
+            (no feasibility check): what node improvement lowers. */
         double gmsFeasibleFitness(const PointsView &path) const;
 
         /** \brief The motion validator's verdict on one straight segment. */
@@ -135,7 +156,7 @@ namespace mhplan
         double segmentClearance(const Vec2 &a, const Vec2 &b) const;
         /** \brief Every segment of \e path valid. */
         bool pathValid(const std::vector<Vec2> &path) const;
-        /** \brief The [GMS] feasible fitness f1 of a path (no feasibility check). */
+        /** \brief The denominator of the [GMS] f1 of a planar path (no feasibility check). */
         double gmsFeasibleFitness(const std::vector<Vec2> &path) const;
 
         FitnessKind kind() const { return kind_; }
@@ -146,8 +167,6 @@ namespace mhplan
         PenaltyMode penaltyMode() const { return mode_; }
         /** \brief Coordinates per point k (the state space's dimension). */
         unsigned int spaceDimension() const { return dim_; }
-        /** \brief F_inf of [GMS]. */
-        double infeasibleOffset() const { return infeasibleOffset_; }
         const ompl::base::SpaceInformationPtr &spaceInformation() const { return si_; }
 
       private:
@@ -178,7 +197,8 @@ namespace mhplan
         /** \brief The box outside which samples are penalised (per coordinate). */
         std::vector<double> low_, high_;
         double resolution_{0.01};
-        double infeasibleOffset_{0.0};
+        /** \brief The constant D of FitnessWeights::infeasibleBaseIsPath = false. */
+        double infeasibleConstant_{0.0};
         /** \brief Reused buffers of the planar overloads. */
         mutable std::vector<double> planarA_, planarB_, point_;
     };

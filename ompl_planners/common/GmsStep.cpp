@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* PopulationPlanner: the switchable [GMS] operator step after each iteration (see the class doc): the path
-   operators on the operated individuals with greedy re-insertion, the replacement of the worst, and the
-   re-encoding of an operated polyline into m waypoints. */
+/* PopulationPlanner: the switchable [GMS] operator steps (see the class doc; docs/algorithms.md 1.5): on the
+   initial population (gms_initial), and after each iteration the path operators on the operated individuals
+   with greedy re-insertion, the replacement of the worst, and the re-encoding of an operated polyline into m
+   waypoints. */
 #include "mhplan/planners/common/PopulationPlanner.h"
 
 #include "mhplan/planners/common/Operators.h"
@@ -15,6 +16,34 @@
 
 namespace mhplan
 {
+    void PopulationPlanner::prepareGmsOps()
+    {
+        if (gmsOps_)
+            return;
+        const Box box{lower_[0], upper_[0], lower_[1], upper_[1]};
+        gmsOps_ =
+            std::make_unique<PathOperators>(*fitness_, rng_, box, 0.01 * std::max(box.width(), box.height()));
+        const std::size_t points = std::max<std::size_t>(
+            2 * (waypoints_ + 2), (decoding_ == PathDecoding::Spline ? splineSamples_ : 0) + 2);
+        gmsPath_.reserve(2 * points + 64);
+        gmsCandidate_.assign(dimension(), 0.0);
+        gmsOrder_.resize(populationSize_);
+    }
+
+    bool PopulationPlanner::applyGmsInitial()
+    {
+        double *x = nullptr, *f = nullptr;
+        if (!gmsInitial_ || spaceDim_ != 2 || !populationView(x, f))
+            return true;
+        prepareGmsOps();
+        const unsigned int d = dimension();
+        bool completed = true;
+        for (unsigned int i = 0; i < populationSize_ && completed; ++i)
+            completed = operateOn(x + std::size_t(i) * d, f[i], true);
+        populationChanged();
+        return completed;
+    }
+
     bool PopulationPlanner::applyGmsOperators()
     {
         double *x = nullptr, *f = nullptr;
@@ -22,17 +51,7 @@ namespace mhplan
             return true; // setup() refuses this; never reached with the switches on
         const unsigned int n = populationSize_, d = dimension();
         const bool pathOps = gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_;
-        if (!gmsOps_)
-        {
-            const Box box{lower_[0], upper_[0], lower_[1], upper_[1]};
-            gmsOps_ = std::make_unique<PathOperators>(*fitness_, rng_, box,
-                                                      0.01 * std::max(box.width(), box.height()));
-            const std::size_t points = std::max<std::size_t>(
-                2 * (waypoints_ + 2), (decoding_ == PathDecoding::Spline ? splineSamples_ : 0) + 2);
-            gmsPath_.reserve(2 * points + 64);
-            gmsCandidate_.assign(d, 0.0);
-            gmsOrder_.resize(n);
-        }
+        prepareGmsOps();
         unsigned int best = 0;
         for (unsigned int i = 1; i < n; ++i)
             if (f[i] < f[best])
@@ -79,29 +98,37 @@ namespace mhplan
                 clampToBounds(xi);
                 f[i] = evaluate(xi);
                 ++done;
+                // gms_initial: a new individual gets the initial population's operators too.
+                if (gmsInitial_ && !operateOn(xi, f[i], true))
+                {
+                    completed = false;
+                    break;
+                }
             }
         }
         populationChanged();
         return completed;
     }
 
-    bool PopulationPlanner::operateOn(double *x, double &fx)
+    bool PopulationPlanner::operateOn(double *x, double &fx, bool initial)
     {
         decoder_.decode(x);
         const PointsView path = decoder_.pathView();
         gmsPath_.clear();
         for (std::size_t i = 0; i < path.size(); ++i)
             gmsPath_.emplace_back(path[i][0], path[i][1]);
-        if (gmsRepair_)
+        // The initial step: [GMS]'s node repair, line-segment repair, node improvement; every iteration: the
+        // switched-on operators in the GA's order.
+        if (initial || gmsRepair_)
         {
             gmsOps_->repairNodes(gmsPath_);
             gmsOps_->repairSegments(gmsPath_);
         }
-        if (gmsRevise_)
+        if (!initial && gmsRevise_)
             gmsOps_->revise(gmsPath_);
-        if (gmsSimplify_)
+        if (!initial && gmsSimplify_)
             gmsOps_->simplify(gmsPath_);
-        if (gmsImprove_)
+        if (initial || gmsImprove_)
             gmsOps_->improveNodes(gmsPath_);
         encodePath();
         clampToBounds(gmsCandidate_.data());

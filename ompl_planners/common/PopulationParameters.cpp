@@ -90,11 +90,15 @@ namespace mhplan
                               &PopulationPlanner::getInfeasibleLengthWeight);
         declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
                               &PopulationPlanner::getCrossingWeight);
+        declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
+                      &PopulationPlanner::getInfeasibleBase, "path,constant");
         declareRanged<unsigned long>(params(), this, kSeed, &PopulationPlanner::setSeed,
                                      &PopulationPlanner::getSeed);
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
+        declareSwitch(params(), this, "gms_initial", &PopulationPlanner::setGmsInitial,
+                      &PopulationPlanner::getGmsInitial);
         declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
                       &PopulationPlanner::getGmsRepair,
                       "[GMS] node and line-segment repair after every iteration");
@@ -215,6 +219,14 @@ namespace mhplan
         invalidate();
     }
 
+    void PopulationPlanner::setInfeasibleBase(const std::string &base)
+    {
+        if (base != "path" && base != "constant")
+            throw std::invalid_argument("parameter 'infeasible_base' must be 'path' or 'constant'; got '" +
+                                        base + "'");
+        weights_.infeasibleBaseIsPath = base == "path";
+    }
+
     void PopulationPlanner::setCrossingWeight(double w)
     {
         checkParameter(kCrossingWeight, w);
@@ -233,6 +245,12 @@ namespace mhplan
     {
         checkParameter(kStagnationRestart, n);
         stagnationRestart_ = n;
+    }
+
+    void PopulationPlanner::setGmsInitial(bool on)
+    {
+        gmsInitial_ = on;
+        setup_ = false;
     }
 
     void PopulationPlanner::setGmsRepair(bool on)
@@ -279,8 +297,9 @@ namespace mhplan
             return;
         std::string on;
         for (const auto &s :
-             {std::make_pair("gms_repair", gmsRepair_), std::make_pair("gms_revise", gmsRevise_),
-              std::make_pair("gms_simplify", gmsSimplify_), std::make_pair("gms_improve", gmsImprove_),
+             {std::make_pair("gms_initial", gmsInitial_), std::make_pair("gms_repair", gmsRepair_),
+              std::make_pair("gms_revise", gmsRevise_), std::make_pair("gms_simplify", gmsSimplify_),
+              std::make_pair("gms_improve", gmsImprove_),
               std::make_pair("gms_replace_fraction", gmsReplaceFraction_ > 0.0)})
             if (s.second)
                 on += (on.empty() ? "'" : ", '") + std::string(s.first) + "'";

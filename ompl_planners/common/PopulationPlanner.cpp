@@ -200,7 +200,7 @@ namespace mhplan
 
         ptc_ = &ptc;
         if (!initialised_ && !ptc())
-            initialised_ = initialisePopulation();
+            initialised_ = initialisePopulation() && applyGmsInitial();
         unsigned int done = 0;
         const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
         auto satisfied = [&] { return haveFeasible_ && opt && opt->isSatisfied(bestFeasibleCost_); };
@@ -255,7 +255,7 @@ namespace mhplan
         clearPopulation();
         epochStart_ = iterationCount_.load();
         epochLength_ = std::min<unsigned long>(2ul * epochLength_, 1ul << 30);
-        initialised_ = !stopRequested() && initialisePopulation();
+        initialised_ = !stopRequested() && initialisePopulation() && applyGmsInitial();
         return initialised_;
     }
 

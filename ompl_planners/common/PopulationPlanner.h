@@ -69,8 +69,12 @@ namespace mhplan
         from the parameter \c seed when it is not 0). No heap allocation per fitness evaluation.
 
         Switchable [GMS] operators (docs/algorithms.md 1.5; all off by default, and then no operator code
-        runs and no random number is drawn, so the faithful algorithms are bit-identical to their papers'
-        versions):
+        runs and no random number is drawn: the original algorithms (registry SMA, MGO, LRSMA) run without
+        them; the faithful [GMS] SMA and MGO (registry SMA-GMS, MGO-GMS) switch on gms_initial, gms_revise,
+        gms_simplify, scope "all" and gms_replace_fraction 0.1, where [GMS] puts its operators):
+        \c gms_initial (bool: node repair, line-segment repair and node improvement on every individual of
+        the initial population, after a stagnation restart too, and on every replacement individual; greedy
+        re-insertion as below),
         \c gms_repair (bool: node repair + line-segment repair), \c gms_revise (bool), \c gms_simplify (bool),
         \c gms_improve (bool: node improvement), \c gms_scope ("best" or "all") and \c gms_replace_fraction
         ([0, 1], 0 = off). They act on the fixed-length waypoint encoding as follows, after every completed
@@ -149,6 +153,9 @@ namespace mhplan
         /** \brief w_l of [GMS] (0..1e6). */
         void setInfeasibleLengthWeight(double w);
         double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
+        /** \brief D of [GMS] f2: "path" (f1's denominator of the same path, the default) or "constant". */
+        void setInfeasibleBase(const std::string &base);
+        std::string getInfeasibleBase() const { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }
         /** \brief w_c of [GMS] (0..1e6). */
         void setCrossingWeight(double w);
         double getCrossingWeight() const { return weights_.crossingWeight; }
@@ -169,6 +176,10 @@ namespace mhplan
          * default). */
         void setGmsRepair(bool on);
         bool getGmsRepair() const { return gmsRepair_; }
+        /** \brief [GMS] node repair, line-segment repair and node improvement on the initial population and
+            on every replacement individual (a switch, off by default; [GMS]'s placement). */
+        void setGmsInitial(bool on);
+        bool getGmsInitial() const { return gmsInitial_; }
         /** \brief [GMS] revision (removal of repeated nodes and loops) (a switch, off by default). */
         void setGmsRevise(bool on);
         bool getGmsRevise() const { return gmsRevise_; }
@@ -188,7 +199,8 @@ namespace mhplan
         /** \brief True when any [GMS] operator switch is on. */
         bool gmsOperatorsEnabled() const
         {
-            return gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ || gmsReplaceFraction_ > 0.0;
+            return gmsInitial_ || gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ ||
+                   gmsReplaceFraction_ > 0.0;
         }
 
         /** \brief Objective cost of the best feasible path (infinity before one exists). */
@@ -290,8 +302,14 @@ namespace mhplan
         /** \brief The [GMS] operator step after an iteration (see the class doc; GmsStep.cpp); false when
             interrupted. */
         bool applyGmsOperators();
-        /** \brief Operators on one individual, greedy re-insertion; false when interrupted. */
-        bool operateOn(double *x, double &fx);
+        /** \brief gms_initial's step on the whole population after initialisePopulation() (true at once when
+            the switch is off); false when interrupted. */
+        bool applyGmsInitial();
+        /** \brief Build the operators and the step's buffers once per problem. */
+        void prepareGmsOps();
+        /** \brief Operators on one individual (\e initial: gms_initial's repair, segment repair and node
+            improvement; else the per-iteration switches), greedy re-insertion; false when interrupted. */
+        bool operateOn(double *x, double &fx, bool initial = false);
         /** \brief Re-encode gmsPath_ into m waypoints in gmsCandidate_. */
         void encodePath();
         /** \brief setup()'s check of the gms_* switches (refuseSetup() naming the parameter). */
@@ -340,6 +358,7 @@ namespace mhplan
         mutable std::vector<ompl::base::State *> plannerDataStates_;
         bool improved_{false};
 
+        bool gmsInitial_{false};
         bool gmsRepair_{false}, gmsRevise_{false}, gmsSimplify_{false}, gmsImprove_{false};
         bool gmsScopeAll_{false};
         double gmsReplaceFraction_{0.0};

@@ -131,11 +131,13 @@ namespace mhplan
         std::copy(trial_.begin(), trial_.end(), xi);
         cost_[i] = raw;
 
-        // Swim while the last move improved J, at most Ns further moves.
+        // Swim while the last move improved J, at most Ns further moves. ATBFO's imp_count counts the
+        // improving swim (run) moves only, not the tumble ([BFO] Pseudo code 1; docs/algorithms.md 6.2).
         unsigned int improvements = 0, swims = 0;
         while (jNow < jLast)
         {
-            ++improvements;
+            if (swims > 0)
+                ++improvements;
             jLast = jNow;
             if (swims == s.swimLength || problem.halt())
                 break;

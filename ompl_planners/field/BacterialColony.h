@@ -28,8 +28,8 @@ namespace mhplan
         double eliminationProbability{0.15};
         /** \brief C, the chemotactic step. */
         double stepSize{0.1};
-        /** \brief ATBFO: a bacterium that improved more than \c improvementThreshold times in a chemotactic
-            step keeps its direction for the next one. */
+        /** \brief ATBFO: a bacterium whose swim improved J more than \c improvementThreshold times in a
+            chemotactic step (the tumble move not counted) keeps its direction for the next one. */
         bool adaptiveTumble{false};
         unsigned int improvementThreshold{3};
         /** \brief Passino's cell-to-cell term J_cc (d_att, w_att, h_rep, w_rep). */
@@ -63,7 +63,8 @@ namespace mhplan
         step; after Nc steps the healthier half splits (two copies each, ties by index; for odd S the
         median survives without splitting), the rest dies; after Nre reproductions each bacterium is moved
         to a new random position with probability Ped. ATBFO (6.2): a bacterium counts its improvements
-        (J < J_last, the tumble's and the swims') in a chemotactic step; more than F_improv and it keeps its
+        imp_count, the swim (run) moves that improved J (J < J_last; the tumble move is not counted,
+        [BFO] Pseudo code 1), in a chemotactic step, so at most Ns; more than F_improv and it keeps its
         direction for the next step; offspring inherit direction and flag; a dispersed bacterium draws a
         fresh one. With cell-to-cell on, J_cc (Passino) is added to J for the swim decisions and the health.
 
@@ -101,6 +102,8 @@ namespace mhplan
         unsigned int dimension() const { return dim_; }
         /** \brief Bacterium \e i's position. */
         const double *position(unsigned int i) const { return row(x_, i); }
+        /** \brief ATBFO: bacterium \e i keeps its tumble direction for its next chemotactic step. */
+        bool keepsDirection(unsigned int i) const { return keep_[i] != 0; }
 
       private:
         bool moveBacterium(unsigned int i, ColonyProblem &problem, ompl::RNG &rng);

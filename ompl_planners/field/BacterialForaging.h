@@ -29,9 +29,10 @@ namespace mhplan
         for the swim decisions and health, never to the best-position bookkeeping.
 
         ATBFO (6.2, parameter \c adaptive_tumble, on by default for the registry name "ATBFO"): a bacterium
-        counts its improvements (J < J_last) in each chemotactic step (the tumble's and the swims', at most
-        Ns); when the count exceeds F_improv it keeps its direction for the next step; offspring inherit the
-        direction and the flag at reproduction; a dispersed bacterium draws a fresh one.
+        counts its improvements imp_count (J < J_last) in the swim (run) of each chemotactic step, the
+        tumble move not counted ([BFO] Pseudo code 1), so at most Ns; when the count exceeds F_improv it keeps
+       its direction for the next step; offspring inherit the direction and the flag at reproduction; a
+       dispersed bacterium draws a fresh one.
 
         \c mode = online (the faithful default, 6.3): the robot (a point at the state's position) walks from
         the start. Each robot step is one full BFO run (Ned x Nre x Nc chemotactic steps) on the potential

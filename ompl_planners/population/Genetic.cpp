@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/population/Genetic.h"
 #include "mhplan/base/Parameters.h"
+#include "mhplan/collision/GridCollision.h"
+#include "mhplan/collision/Validity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +24,9 @@ namespace mhplan
         constexpr ParamRange kReplaceFraction{
             "replace_fraction", 0, 0.05, 1,
             "share of the population replaced by fresh individuals each generation"};
+        constexpr ParamRange kCommonNodeTolerance{
+            "common_node_tolerance", 0, 0.005, 1,
+            "crossover: two nodes are common when within this fraction of the bounds' larger side (off grids)"};
     } // namespace
 
     Genetic::Genetic(const ob::SpaceInformationPtr &si, const std::string &name)
@@ -38,6 +43,8 @@ namespace mhplan
                                     &Genetic::getTournamentSize);
         declareRanged<double>(params(), this, kReplaceFraction, &Genetic::setReplaceFraction,
                               &Genetic::getReplaceFraction);
+        declareRanged<double>(params(), this, kCommonNodeTolerance, &Genetic::setCommonNodeTolerance,
+                              &Genetic::getCommonNodeTolerance);
         declareSwitch(params(), this, "node_improvement", &Genetic::setNodeImprovement,
                       &Genetic::getNodeImprovement, "apply node improvement to the offspring");
         declareChoice(params(), this, "initialisation", &Genetic::setInitialisation,
@@ -86,6 +93,40 @@ namespace mhplan
         replaceFraction_ = f;
     }
 
+    void Genetic::setCommonNodeTolerance(double f)
+    {
+        checkParameter(kCommonNodeTolerance, f);
+        commonTolerance_ = f;
+    }
+
+    bool Genetic::sameNode(const Vec2 &p, const Vec2 &q, double tolerance, const OccupancyGrid *grid)
+    {
+        if (grid != nullptr)
+            return grid->cellX(p.x) == grid->cellX(q.x) && grid->cellY(p.y) == grid->cellY(q.y);
+        return distance(p, q) <= tolerance;
+    }
+
+    bool Genetic::findCommonNode(const Individual &a, const Individual &b, std::size_t offset,
+                                 double tolerance, const OccupancyGrid *grid, std::size_t &ia,
+                                 std::size_t &ib)
+    {
+        if (a.size() < 3 || b.size() < 3)
+            return false;
+        const std::size_t interior = a.size() - 2;
+        for (std::size_t s = 0; s < interior; ++s)
+        {
+            const std::size_t i = 1 + (offset + s) % interior;
+            for (std::size_t j = 1; j + 1 < b.size(); ++j)
+                if (sameNode(a[i], b[j], tolerance, grid))
+                {
+                    ia = i;
+                    ib = j;
+                    return true;
+                }
+        }
+        return false;
+    }
+
     void Genetic::clearPopulation()
     {
         pop_.clear();
@@ -116,7 +157,7 @@ namespace mhplan
         for (int i = 0; i < k; ++i)
             ind.push_back(ops_->randomFreePoint());
         ind.push_back(goalPoint());
-        repair(ind, false);
+        repair(ind, true);
     }
 
     void Genetic::repair(Individual &ind, bool improve)
@@ -135,6 +176,12 @@ namespace mhplan
         const Box box{lower(0), upper(0), lower(1), upper(1)};
         ops_ =
             std::make_unique<PathOperators>(fitness(), rng_, box, 0.01 * std::max(box.width(), box.height()));
+        grid_ = nullptr;
+        if (const auto *checker =
+                dynamic_cast<const WorldValidityChecker *>(si_->getStateValidityChecker().get()))
+            if (const auto *g = dynamic_cast<const GridCollisionModel *>(checker->model().get()))
+                grid_ = &g->grid();
+        tolerance_ = commonTolerance_ * std::max(box.width(), box.height());
         pop_.assign(n, Individual());
         next_.assign(n, Individual());
         fit_.assign(n, 0.0);
@@ -170,20 +217,9 @@ namespace mhplan
         bool common = false;
         if (a.size() > 2 && b.size() > 2)
         {
-            const std::size_t interior = a.size() - 2;
-            const auto offset = static_cast<std::size_t>(rng_.uniformInt(0, static_cast<int>(interior) - 1));
-            for (std::size_t s = 0; s < interior && !common; ++s)
-            {
-                const std::size_t i = 1 + (offset + s) % interior;
-                for (std::size_t j = 1; j + 1 < b.size(); ++j)
-                    if (a[i] == b[j])
-                    {
-                        ia = i;
-                        ib = j;
-                        common = true;
-                        break;
-                    }
-            }
+            const auto offset =
+                static_cast<std::size_t>(rng_.uniformInt(0, static_cast<int>(a.size() - 2) - 1));
+            common = findCommonNode(a, b, offset, tolerance_, grid_, ia, ib);
         }
         if (!common)
         {

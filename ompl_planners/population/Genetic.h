@@ -3,6 +3,7 @@
 #ifndef MHPLAN_GENETIC_H
 #define MHPLAN_GENETIC_H
 
+#include "mhplan/base/World.h"
 #include "mhplan/planners/common/Operators.h"
 #include "mhplan/planners/common/PopulationPlanner.h"
 
@@ -15,11 +16,12 @@ namespace mhplan
        Path Planning Problem", Adv. Defence Sci. & Technol., 2024; docs/algorithms.md 1.4, 1.5 and 2).
 
         An individual is a variable-length list of points from start to goal (the continuous form of the
-        grid-node encoding, 1.4). Initial population: 1..\c waypoints random free points per individual, then
-        node repair, line-segment repair, revision and simplification. Each generation: elitism (the best
-        survives), tournament selection (size 2), with probability \c crossover_rate one-point crossover at
-        an interior node common to both parents, else at random cut points; with probability
-        \c mutation_rate a mutation: insert a random free node (probability \c insert_delete_rate),
+        grid-node encoding, 1.4). Initial population (and replacement individuals): 1..\c waypoints random
+        free points per individual, then node repair, line-segment repair, revision, simplification and node
+        improvement (the paper's abstract puts node improvement on the initial population). Each generation:
+       elitism (the best survives), tournament selection (size 2), with probability \c crossover_rate
+       one-point crossover at an interior node common to both parents, else at random cut points; with
+       probability \c mutation_rate a mutation: insert a random free node (probability \c insert_delete_rate),
         delete one (same probability), otherwise move a random interior node to a random free location;
         then node repair, line-segment repair, revision, simplification, node improvement, evaluation with
         the [GMS] f1/f2 (1.3), and replacement of the worst \c replace_fraction by fresh repaired random
@@ -33,6 +35,12 @@ namespace mhplan
           node improvement is applied to every offspring that is feasible after repair (parameter
           \c node_improvement). The validity checks inside the operators are not counted as fitness
           evaluations; every evaluated individual is.
+        - The crossover's common node: two interior nodes are the same node when they lie in the same cell
+          of the grid (grid worlds: mhplan's grid model behind the validity checker) or, elsewhere, within
+          \c common_node_tolerance times the bounds' larger side (default 0.01) of each other, so that the
+          crossover also fires on nodes that are not copies inherited from a common ancestor (exact equality
+          of doubles would only match such copies). The children join at the matched nodes.
+        - The fitness is [GMS]'s maximised reciprocal form (PathFitness; the GA only ranks).
         - \c decoding and \c spline_samples do not apply (paths are polylines through the nodes).
         - Planar only: the [GMS] node encoding comes from grid maps and its operators (ring search for node
           repair, the 8 compass moves of node improvement, the perpendicular bisector of segment repair) are
@@ -70,6 +78,21 @@ namespace mhplan
            [GMS]. */
         void setInitialisation(const std::string &mode);
         std::string getInitialisation() const { return walk_ ? "walk" : "nodes"; }
+        /** \brief Distance under which two nodes count as common in the crossover, as a fraction of the
+            bounds' larger side (0..1; 0 = exact equality; not used on grid worlds, where cells decide). */
+        void setCommonNodeTolerance(double f);
+        double getCommonNodeTolerance() const { return commonTolerance_; }
+
+        using Individual = std::vector<Vec2>;
+        /** \brief The crossover's test: \e p and \e q are the same node (same cell of \e grid when it is
+            not null, else |p - q| <= \e tolerance). */
+        static bool sameNode(const Vec2 &p, const Vec2 &q, double tolerance, const OccupancyGrid *grid);
+        /** \brief The first interior node of \e a, searched from interior index \e offset on (cyclically),
+            that is the same node (sameNode()) as an interior node of \e b; false when there is none. */
+        static bool findCommonNode(const Individual &a, const Individual &b, std::size_t offset,
+                                   double tolerance, const OccupancyGrid *grid, std::size_t &ia,
+                                   std::size_t &ib);
+
         /** \brief Apply node improvement to the offspring. */
         void setNodeImprovement(bool on) { nodeImprovement_ = on; }
         bool getNodeImprovement() const { return nodeImprovement_; }
@@ -80,7 +103,6 @@ namespace mhplan
         void clearPopulation() override;
 
       private:
-        using Individual = std::vector<Vec2>;
         void randomIndividual(Individual &ind);
         void repair(Individual &ind, bool improve);
         unsigned int tournament();
@@ -94,6 +116,10 @@ namespace mhplan
         double replaceFraction_{0.1};
         bool nodeImprovement_{true};
         bool walk_{false};
+        double commonTolerance_{0.01};
+        /** \brief The grid behind the validity checker (grid worlds), else null; set per problem. */
+        const OccupancyGrid *grid_{nullptr};
+        double tolerance_{0.0};
 
         std::unique_ptr<PathOperators> ops_;
         std::vector<Individual> pop_, next_;

@@ -94,14 +94,15 @@ namespace mhplan
     void LRSMA::clearPopulation()
     {
         SlimeMould::clearPopulation();
-        tau_ = 0;
+        monitor_.reset();
+        rotations_ = 0;
     }
 
     bool LRSMA::initialisePopulation()
     {
         trial_.assign(dimension(), 0.0);
         rank_.resize(getPopulationSize());
-        tau_ = 0;
+        monitor_ = StagnationMonitor(fmin_, tmax_);
         // Mantegna's sigma_u for the configured beta (eq 7).
         const double pi = kPi;
         sigmaU_ =
@@ -175,11 +176,9 @@ namespace mhplan
         // Tolerance-based stagnation monitor (eq 8) and rotation perturbation (eq 9).
         const double dF = std::abs(bestF_ - previousF_);
         previousF_ = bestF_;
-        if (dF < fmin_ && tau_ < tmax_)
-            ++tau_;
-        if (tau_ == tmax_ && dF < fmin_)
+        if (monitor_.update(dF))
         {
-            tau_ = 0;
+            ++rotations_;
             std::iota(rank_.begin(), rank_.end(), 0u);
             std::stable_sort(rank_.begin(), rank_.end(),
                              [&](unsigned int a, unsigned int b) { return fit_[a] < fit_[b]; });
@@ -204,8 +203,6 @@ namespace mhplan
                 }
             }
         }
-        if (dF >= fmin_)
-            tau_ = 0;
 
         // Elite simulated annealing (4.3).
         rotate(bestX_.data(), trial_.data());

@@ -15,10 +15,12 @@ namespace mhplan
         - variable-neighbourhood Levy flight on the elite (eqs 6-7, Mantegna): for index = 0, 1, 2,
           X_l = (1 + index r_l) (X_best + stepsize Levy(beta)), r_l ~ U(0, 0.5); the first X_l better than
           X_best replaces it;
-        - tolerance-based stagnation monitor (eq 8): dF = |F(t) - F(t-1)| of the steering best DF; tau counts
-          consecutive iterations with dF < Fmin; when tau reaches Tmax the rotation perturbation (eq 9),
-          X_r = X + omega (R (.) X) / ||X||_2, omega ~ U(0.1, 1), R ~ U(-1, 1)^D, is applied greedily to the
-          best p_r fraction of the population and tau = 0; dF >= Fmin resets tau;
+        - tolerance-based stagnation monitor (eq 8, StagnationMonitor): dF = |F(t) - F(t-1)| of the steering
+          best DF; both tests read tau(t) before it is updated: dF < Fmin and tau < Tmax: tau + 1; dF < Fmin
+          and tau == Tmax: the rotation perturbation (eq 9), X_r = X + omega (R (.) X) / ||X||_2,
+          omega ~ U(0.1, 1), R ~ U(-1, 1)^D, applied greedily to the best p_r fraction of the population,
+          and tau = 0; dF >= Fmin: tau = 0. With Tmax = 2 the rotation comes on the third consecutive
+          stagnant iteration (docs/algorithms.md 5, correction of 2026-12-01);
         - elite simulated annealing (4.3): X_best perturbed the same way; accepted when better, or when
           exp(-(DF_r - DF) / Temp) < rand (the paper's condition as written). The base class keeps the
           best-ever path for reporting, so an accepted worse elite never loses the solution.
@@ -32,6 +34,38 @@ namespace mhplan
         - The annealing step runs every iteration, after the stagnation monitor; F(t) is DF after the SMA
           update and the Levy flight. The rotated set is the best ceil(p_r N) by current fitness.
         - Every perturbed candidate is clamped to the bounds before evaluation. */
+    /** \brief The tolerance-based stagnation monitor of [LRSMA] eq 8 (docs/algorithms.md 5): tau(t) is read
+        before it is updated, so with Tmax = 2 the rotation fires on the third consecutive iteration with
+        dF < Fmin (then every third while the stagnation lasts). */
+    class StagnationMonitor
+    {
+      public:
+        StagnationMonitor(double fmin, unsigned int tmax) : fmin_(fmin), tmax_(tmax) {}
+        /** \brief Feed dF = |F(t) - F(t-1)|; true when the population stagnates (rotate now). */
+        bool update(double dF)
+        {
+            if (!(dF < fmin_))
+            {
+                tau_ = 0;
+                return false;
+            }
+            if (tau_ < tmax_)
+            {
+                ++tau_;
+                return false;
+            }
+            tau_ = 0;
+            return true;
+        }
+        unsigned int tau() const { return tau_; }
+        void reset() { tau_ = 0; }
+
+      private:
+        double fmin_;
+        unsigned int tmax_;
+        unsigned int tau_{0};
+    };
+
     class LRSMA : public SlimeMould
     {
       public:
@@ -60,6 +94,8 @@ namespace mhplan
         /** \brief "elementwise" (R (.) X) or "dot" (R . X). */
         void setRotationProduct(const std::string &product);
         std::string getRotationProduct() const { return elementwise_ ? "elementwise" : "dot"; }
+        /** \brief Rotation perturbations of the population (stagnation events) since the last clear(). */
+        unsigned long rotationCount() const { return rotations_; }
 
       protected:
         bool initialisePopulation() override;
@@ -80,7 +116,8 @@ namespace mhplan
         bool elementwise_{true};
 
         double sigmaU_{0.0};
-        unsigned int tau_{0};
+        StagnationMonitor monitor_{1.0, 2};
+        unsigned long rotations_{0};
         double previousF_{0.0};
         std::vector<double> trial_;
         std::vector<unsigned int> rank_;

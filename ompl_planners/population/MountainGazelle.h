@@ -9,8 +9,13 @@ namespace mhplan
 {
     /** \brief Mountain Gazelle Optimizer (MGO): Abdollahzadeh, Gharehchopogh, Khodadadi, Mirjalili, "Mountain
         Gazelle Optimizer: A new Nature-inspired Metaheuristic Algorithm for Global Optimization Problems",
-        Advances in Engineering Software 174:103282, 2022, as used for path planning by [GMS]
-        (docs/algorithms.md section 3).
+        Advances in Engineering Software 174:103282, 2022 (docs/algorithms.md section 3).
+
+        As constructed (registry name "MGO") this is the original MGO of that paper on the waypoint encoding
+        (docs/algorithms.md 1.1), with no [GMS] operator. [GMS]'s own MGO is the registry name "MGO-GMS": the
+        same update with the [GMS] operators where [GMS] puts them (PopulationPlanner's gms_* switches,
+        gms_initial on) and the [GMS] fitness (1.3, 1.5; MGO only ranks, so the maximised reciprocals order
+        its population exactly as their keys do).
 
         Each iteration, for every gazelle X: coefficient vectors Cof_1 = (a + 1) + r3, Cof_2 = a N2,
         Cof_3 = r4, Cof_4 = N3 N4^2 cos(2 r5 N3) with a = -1 - t/T (Cof_r = one of the four, drawn afresh at

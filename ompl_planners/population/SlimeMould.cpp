@@ -17,14 +17,13 @@ namespace mhplan
         constexpr ParamRange kZ{"z", 0, 0.01, 1, "probability of a random restart of one slime mould"};
     } // namespace
 
-    SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si)
-        : SlimeMould(si, "SMA", PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
-    {
-    }
+    SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si) : SlimeMould(si, std::string("SMA")) {}
 
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si, const std::string &name)
-        : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Polyline})
+        : SlimeMould(si, name, PopulationDefaults{30, 30, 3, PathDecoding::Spline})
     {
+        // [LRSMA] section 5.2's framework: spline decoding (the constructor default) and the fitness S.
+        setFitness("lrsma");
     }
 
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -63,6 +62,7 @@ namespace mhplan
         weights_.assign(std::size_t(n) * d, 1.0);
         fit_.assign(n, 0.0);
         nextFit_.assign(n, 0.0);
+        score_.assign(n, 0.0);
         order_.resize(n);
         bestX_.assign(d, 0.0);
         vb_.assign(d, 0.0);
@@ -105,6 +105,26 @@ namespace mhplan
         }
     }
 
+    double SlimeMould::weightTerm(double bF, double wF, double s, bool maximise)
+    {
+        if (!maximise)
+        {
+            // Minimisation, as the original: bF - wF <= 0, the guard keeps the sign; ratio in [0, 1].
+            const double span = bF - wF - std::numeric_limits<double>::epsilon();
+            return std::log10((bF - s) / span + 1.0);
+        }
+        // Maximisation (bF >= wF): the same ratio with best and worst turned. A feasible path of low f1 can
+        // rank above an infeasible one of higher f2, so the ratio is clamped to [0, 1] (mhplan's choice).
+        const double span = bF - wF + std::numeric_limits<double>::epsilon();
+        const double ratio = std::min(1.0, std::max(0.0, (bF - s) / span));
+        return std::log10(ratio + 1.0);
+    }
+
+    double SlimeMould::oscillationProbability(double s, double best)
+    {
+        return std::tanh(std::abs(s - best));
+    }
+
     bool SlimeMould::iterate(unsigned int t)
     {
         return slimeMouldStep(t);
@@ -117,12 +137,18 @@ namespace mhplan
         std::iota(order_.begin(), order_.end(), 0u);
         std::stable_sort(order_.begin(), order_.end(),
                          [&](unsigned int a, unsigned int b) { return fit_[a] < fit_[b]; });
-        const double bF = fit_[order_.front()], wF = fit_[order_.back()];
-        const double span = bF - wF - std::numeric_limits<double>::epsilon();
+        // The values the update reads (docs/algorithms.md 1.3, 4): the fitness itself ([LRSMA] S,
+        // minimised), or with the [GMS] fitness the paper's maximised f1 / f2 (the sort above already ranks
+        // feasibility first, then f descending, since fit_ holds the [GMS] key).
+        const bool maximise = fitnessKind() == FitnessKind::FeasibleInfeasible;
+        for (unsigned int i = 0; i < n; ++i)
+            score_[i] = maximise ? gmsValueOfKey(fit_[i]) : fit_[i];
+        const double bestScore = maximise ? gmsValueOfKey(bestF_) : bestF_;
+        const double bF = score_[order_.front()], wF = score_[order_.back()];
         for (unsigned int k = 0; k < n; ++k)
         {
             const unsigned int i = order_[k];
-            const double ratio = std::log10((bF - fit_[i]) / span + 1.0);
+            const double ratio = weightTerm(bF, wF, score_[i], maximise);
             const bool betterHalf = double(k + 1) <= n / 2.0;
             double *w = row(weights_, i);
             for (unsigned int j = 0; j < d; ++j)
@@ -143,7 +169,7 @@ namespace mhplan
                 randomPosition(xi);
                 continue;
             }
-            const double p = std::tanh(std::abs(fit_[i] - bestF_));
+            const double p = oscillationProbability(score_[i], bestScore);
             for (unsigned int j = 0; j < d; ++j)
                 vb_[j] = rng_.uniformReal(-a, a);
             for (unsigned int j = 0; j < d; ++j)

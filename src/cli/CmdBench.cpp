@@ -225,6 +225,8 @@ namespace mhplan::cli
                 throw InputError("mhplan bench: --runs must be in [1, 1000000] (got " + args.get("runs") +
                                  ")");
             campaign.runs = static_cast<unsigned int>(runs);
+            for (auto &p : campaign.planners) // --runs overrides the planners' own counts too
+                p.runs = 0;
         }
         if (args.has("slurm") && args.has("time") && !isClockTime(args.get("time")))
         {
