@@ -60,6 +60,9 @@ namespace
               "        [--svg FILE] [--no-replay] [--gif FILE] [--gif-width PX] [--fps F] [--max-frames N]\n"
               "        [--csv FILE]   (run a moving-world scenario, e.g. mapf_15robots; exit 0: all robots\n"
               "        done, 3: some stuck or unfinished, 1: bad input)"}},
+            {"arena",
+             {cmdArena, "arena DB [--port N] [--host H] [--no-install]   (serve OMPL's Planner Arena on a\n"
+                        "        benchmark database; prints the URL; Ctrl-C stops it)"}},
             {"planners",
              {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
             {"controllers",
