@@ -293,14 +293,26 @@ namespace mhplan::bench
         }
     } // namespace
 
+    std::string simulationDatabaseFile(const Campaign &campaign)
+    {
+        if (!campaign.simulationDatabase.empty())
+            return campaign.simulationDatabase;
+        if (campaign.worlds.empty())
+            return campaign.database;
+        const fs::path db(campaign.database);
+        fs::path sim = db.parent_path() / (db.stem().string() + "-sim" + db.extension().string());
+        return db.has_parent_path() ? sim.string() : sim.filename().string();
+    }
+
     Campaign parseCampaign(const std::string &text, const std::string &fileName,
                            const PlannerRegistry &registry)
     {
         const YAML::Node root = loadYamlMapping(text, fileName, "campaign file", "benchmarks/README.md");
         const YamlReader r(fileName);
         r.allowKeys(root, "",
-                    {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
-                     "progress_interval", "planner_data", "collision", "worlds", "planners", "simulations"});
+                    {"campaign", "database", "simulation_database", "logs", "time_limit", "memory_limit",
+                     "runs", "seed", "progress_interval", "planner_data", "collision", "worlds", "planners",
+                     "simulations"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
@@ -341,6 +353,8 @@ namespace mhplan::bench
         c.database =
             root["database"].IsDefined() ? r.nonEmptyText(root["database"], "database") : c.name + ".db";
         c.logDir = root["logs"].IsDefined() ? r.nonEmptyText(root["logs"], "logs") : c.database + ".logs";
+        if (root["simulation_database"].IsDefined())
+            c.simulationDatabase = r.nonEmptyText(root["simulation_database"], "simulation_database");
         // A campaign may consist of simulations only; planning experiments need both worlds and planners.
         const bool simulations = root["simulations"].IsDefined() && !root["simulations"].IsNull();
         const bool planning = root["worlds"].IsDefined() || root["planners"].IsDefined() || !simulations;

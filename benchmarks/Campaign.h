@@ -107,6 +107,10 @@ namespace mhplan::bench
         std::string collision{"auto"};
         /** \brief The SQLite database (relative paths are relative to the working directory). */
         std::string database;
+        /** \brief The database of the simulation experiments; empty: see simulationDatabaseFile(). Planner
+            Arena lists every column of the experiments table as a problem parameter, so planning and
+            simulation experiments in one database would show each other's columns as "all (aggregate)". */
+        std::string simulationDatabase;
         /** \brief Directory of the per-experiment .log files (default: the database path + ".logs"). */
         std::string logDir;
     };
@@ -119,6 +123,11 @@ namespace mhplan::bench
     /** \brief Parse campaign YAML; \e fileName is used in messages and to resolve relative world paths. */
     Campaign parseCampaign(const std::string &text, const std::string &fileName,
                            const PlannerRegistry &registry = PlannerRegistry::builtin());
+
+    /** \brief Where the simulation experiments of \e campaign go: its \c simulationDatabase when given; else,
+        when the campaign has planning experiments too, \c database with "-sim" before its extension
+        (results/seeds.db -> results/seeds-sim.db); else \c database itself. */
+    std::string simulationDatabaseFile(const Campaign &campaign);
 
     /** \brief One (world, query) planning experiment or one scenario's simulation experiment. */
     struct Experiment

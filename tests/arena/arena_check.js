@@ -94,6 +94,14 @@ async function checkTab(page, prefix, plotId) {
   const names = boxes.map((b) => b[0]);
   for (const p of planners)
     if (!names.includes(p)) fail(`${prefix}: the planner list ${JSON.stringify(names)} lacks ${p}`);
+  // The problem parameters are the planning experiments' own (simulations are in their own database).
+  await page.waitForFunction((id) => {
+    const el = document.getElementById(id);
+    return el && el.innerText.includes('world type');
+  }, {timeout: TIMEOUT}, `${prefix}_problem_param_select`);
+  const params = await page.$eval(`#${prefix}_problem_param_select`, (el) => el.innerText);
+  for (const column of ['scenario', 'robot count', 'start jitter', 'controller'])
+    if (params.includes(column)) fail(`${prefix}: the problem parameters list the simulation column '${column}'`);
   let plot = await waitForPlot(page, plotId, '');
   console.log(`${prefix}: problems ${JSON.stringify(problems)}; planners ${JSON.stringify(names)}; ` +
               `plot of all: ${plot.width}x${plot.height} px, ${plot.colored} coloured pixels`);

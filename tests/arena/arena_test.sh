@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The Planner Arena test, as a user would see it: run tests/arena/campaign.yaml, serve its database with
 # 'mhplan arena' on a free loopback port, drive headless Chromium over it (arena_check.js: problem list,
-# planners, the performance and progress plots of an mhplan and an OMPL planner), stop mhplan with SIGINT and
+# planners, problem parameters without simulation columns, the performance and progress plots of an mhplan
+# and an OMPL planner), stop mhplan with SIGINT and
 # check that it exits 0 and its R server is gone. Screenshots go to WORK_DIR.
 #   tests/arena/arena_test.sh MHPLAN_BINARY WORK_DIR
 # Exit 77 (CTest: skipped) when R's packages, Chromium or puppeteer-core are not installed
@@ -30,6 +31,10 @@ T1=$(date +%s.%N)
 EXPERIMENTS=$(sqlite3 "$WORK/arena.db" "SELECT name FROM experiments ORDER BY id" | paste -sd, -)
 [ "$EXPERIMENTS" = "bfo_case1-default,lrsma_scenario1-default" ] ||
   { echo "FAILED: the database holds experiments '$EXPERIMENTS'"; exit 1; }
+
+# The simulation experiment went to its own database.
+SIMS=$(sqlite3 "$WORK/arena-sim.db" "SELECT name FROM experiments" | paste -sd, -)
+[ "$SIMS" = "mapf_2robots-sim" ] || { echo "FAILED: arena-sim.db holds experiments '$SIMS'"; exit 1; }
 
 PORT=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 "$MHPLAN" arena "$WORK/arena.db" --port "$PORT" --host 127.0.0.1 --no-install > "$WORK/arena.txt" 2>&1 &
