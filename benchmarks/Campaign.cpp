@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/MovingAIWorlds.h"
 
 #include "mhplan/collision/Collision.h"
 #include "mhplan/sim/Controllers.h"
@@ -258,6 +259,8 @@ namespace mhplan::bench
                 WorldSpec w;
                 if (n[i].IsScalar())
                     w.world = r.nonEmptyText(n[i], field);
+                else if (n[i].IsMap() && n[i]["map"].IsDefined())
+                    detail::readMovingAIWorld(r, n[i], field, w);
                 else
                 {
                     r.allowKeys(n[i], field, {"world", "queries", "generate", "name"});
@@ -292,6 +295,17 @@ namespace mhplan::bench
             }
         }
     } // namespace
+
+    Query experimentQuery(const World &world, const Experiment &e)
+    {
+        if (e.scenLine == 0)
+            return world.query(e.query);
+        Query q;
+        q.name = e.query;
+        q.start = {e.startX, e.startY};
+        q.goal = {e.goalX, e.goalY};
+        return q;
+    }
 
     std::string simulationDatabaseFile(const Campaign &campaign)
     {
@@ -450,6 +464,11 @@ namespace mhplan::bench
         for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
         {
             const WorldSpec &spec = campaign.worlds[wi];
+            if (!spec.scen.empty())
+            {
+                detail::appendMovingAIExperiments(campaign, spec, wi, locate, common.str(), names, out);
+                continue;
+            }
             std::string file;
             try
             {

@@ -135,7 +135,7 @@ namespace mhplan::bench
         if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
         {
             const World world = loadWorld(all.front().worldFile);
-            validatePlanners(campaign, registry, world, world.query(all.front().query));
+            validatePlanners(campaign, registry, world, experimentQuery(world, all.front()));
         }
         if (!campaign.simulations.empty())
             validateControllers(campaign, registry);
