@@ -120,7 +120,7 @@ namespace mhplan::bench::detail
             e.runs = campaign.runs;
             if (!names.insert(e.name).second)
                 throw InputError(where + "experiment '" + e.name +
-                                 "' appears twice (the same map and .scen " + "problem listed twice)");
+                                 "' appears twice (the same map and .scen problem listed twice)");
             e.seed = deriveSeed(campaign.seed, e.name, 0);
             std::ostringstream all;
             all.precision(17);
