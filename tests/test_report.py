@@ -126,6 +126,10 @@ class ReportTest(unittest.TestCase):
                 self.assertTrue(png_ok(os.path.join(out, img)), img)
             self.assertTrue(any(i.startswith("paths_") for i in images))
             self.assertTrue(any(i.startswith("convergence_") for i in images))
+            # Pairwise matrices per problem and the campaign's performance profiles.
+            self.assertIn("profiles.png", images)
+            self.assertIn("row beats column", text)
+            self.assertIn("time to within 1 % of the optimum", text)
             # Independent SQL aggregates against the report's tables.
             conn = sqlite3.connect(dbpath)
             q = """SELECT e.name, p.name, COUNT(*), SUM(r.status = 6), MIN(CASE WHEN r.status = 6 THEN r.path_length END),
@@ -442,6 +446,97 @@ class MovingWorldsTest(unittest.TestCase):
         # Exact coverage of [x_(lo), x_(hi)]: P(lo < K <= hi), K ~ Bin(n, 1/2).
         self.assertAlmostEqual(sims.binomial_coverage(5, 0, 4), 1.0 - 2.0 / 32.0)
         self.assertAlmostEqual(sims.binomial_coverage(1, 0, 0), 0.0)
+
+
+class WorldDrawingTest(unittest.TestCase):
+    """The report draws worlds as the mhplan program exports them (MHPLAN_BIN, set by ctest and mhplan
+    report), and marks the experiment's own query."""
+
+    def setUp(self):
+        if not report.worlds.mhplan_binary():
+            self.skipTest("no mhplan program (set MHPLAN_BIN)")
+
+    def test_pgm_grid_equals_the_image(self):
+        path = os.path.join(ROOT, "tests", "data", "grid_image.pgm")
+        w = report.worlds.load_world(path)
+        # Independent reading of the P2 file: blocked when the value is below half the maximum.
+        tokens = []
+        with open(path) as f:
+            for line in f:
+                tokens += line.split("#")[0].split()
+        width, height, maxval = int(tokens[1]), int(tokens[2]), int(tokens[3])
+        pixels = [int(t) for t in tokens[4:]]
+        expected = [[pixels[r * width + c] < 0.5 * maxval for c in range(width)] for r in range(height)]
+        self.assertEqual(w.grid, expected)
+        self.assertEqual(w.bounds, (0.0, float(width), 0.0, float(height)))
+
+    def test_geometry_equals_the_yaml_file(self):
+        import yaml
+
+        path = os.path.join(ROOT, "environments", "bfo_case1.yaml")
+        w = report.worlds.load_world(path)
+        with open(path) as f:
+            doc = yaml.safe_load(f)
+        circles = [tuple(o["circle"]["center"]) + (o["circle"]["radius"],) for o in doc["obstacles"] if "circle" in o]
+        self.assertEqual(sorted(w.circles), sorted(tuple(float(v) for v in c) for c in circles))
+        q = doc["queries"][0]
+        self.assertEqual(list(w.queries.values())[0], (tuple(float(v) for v in q["start"]), tuple(float(v) for v in q["goal"])))
+
+    def test_a_bad_world_is_a_note_not_a_crash(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            bad = os.path.join(tmp, "bad.yaml")
+            with open(bad, "w") as f:
+                f.write("name: x\nbounds: [0, 1]\n")
+            exp = report.dbmod.Experiment(1, "x/default", {})
+            fig, why = report.path_figure(None, exp, {}, bad, tmp, {})
+            self.assertIsNone(fig)
+            self.assertIn("bad.yaml", why)
+
+    def test_markers_are_the_experiments_query(self):
+        import matplotlib.axes
+        from unittest import mock
+
+        with tempfile.TemporaryDirectory() as tmp:
+            world = os.path.join(tmp, "two.yaml")
+            with open(world, "w") as f:
+                f.write("name: two\nbounds: [0, 10, 0, 10]\nobstacles:\n  - circle: {center: [5, 5], radius: 1}\n"
+                        "queries:\n  - {name: first, start: [1, 1], goal: [9, 9]}\n"
+                        "  - {name: second, start: [1, 9], goal: [9, 1]}\n")
+            w = report.worlds.load_world(world)
+            by_points = report.dbmod.Experiment(1, "two/second", {"query": "second", "query_points": "(1,9)->(9,1)"})
+            by_name = report.dbmod.Experiment(2, "two/second", {"query": "second"})
+            unknown = report.dbmod.Experiment(3, "two/?", {})
+            self.assertEqual(report.experiment_query(by_points, w), ((1.0, 9.0), (9.0, 1.0)))
+            self.assertEqual(report.experiment_query(by_name, w), ((1.0, 9.0), (9.0, 1.0)))
+            self.assertIsNone(report.experiment_query(unknown, w))  # never another query's markers
+
+            # The figure itself: the start marker is plotted at the second query's start.
+            class OneRun:
+                id, outcome, values = 7, "exact", {"path_length": 12.0}
+
+            class Db:
+                run_columns = ["path_length"]
+
+                def planners_of(self, _):
+                    return ["SMA"]
+
+                def runs_of(self, *_):
+                    return [OneRun()]
+
+            calls = []
+            original = matplotlib.axes.Axes.plot
+
+            def recording(ax, *args, **kwargs):
+                calls.append(args)
+                return original(ax, *args, **kwargs)
+
+            with mock.patch.object(matplotlib.axes.Axes, "plot", recording):
+                fig, why = report.path_figure(Db(), by_points, {7: [(1, 9), (5, 9), (9, 1)]}, world, tmp, {"SMA": "red"})
+            self.assertIsNotNone(fig)
+            self.assertIsNone(why)
+            self.assertIn((1.0, 9.0, "o"), calls)
+            self.assertIn((9.0, 1.0, "*"), calls)
+            self.assertNotIn((1.0, 1.0, "o"), calls)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import movingai, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
+from . import comparisons, movingai, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -225,6 +225,20 @@ def convergence_plot(database, exp, outdir, colors):
     return os.path.basename(path)
 
 
+def experiment_query(exp, world):
+    """Start and goal of the experiment's own query: its recorded points (query_points), else its query name
+    in the world, else the world's only query; None when none of these tells (never another query's)."""
+    q = worlds.parse_query_points(dbmod.experiment_value(exp, "query_points"))
+    if q:
+        return q
+    name = dbmod.experiment_value(exp, "query")
+    if name is not None and str(name) in world.queries:
+        return world.queries[str(name)]
+    if name is None and len(world.queries) == 1:
+        return next(iter(world.queries.values()))
+    return None
+
+
 def path_figure(database, exp, paths, world_file, outdir, colors):
     """The world with each planner's best and median exact path."""
     if not world_file or not os.path.exists(world_file):
@@ -233,6 +247,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
         world = worlds.load_world(world_file)
     except (OSError, ValueError, KeyError) as e:
         return None, "cannot draw %s: %s" % (world_file, e)
+    query_unknown = None
     fig, ax = plt.subplots(figsize=(8.5, 7))
     worlds.draw_world(ax, world)
     drawn = 0
@@ -249,17 +264,19 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
             xs, ys = zip(*paths[med.id])
             ax.plot(xs, ys, color=colors[p], linewidth=1.0, linestyle="--", alpha=0.8)
         drawn += 1
-    q = next(iter(world.queries.values()), None)
+    q = experiment_query(exp, world)
     if q:
         ax.plot(*q[0], "o", color="#2ca02c", markersize=8, clip_on=False, zorder=5)
         ax.plot(*q[1], "*", color="#1f77b4", markersize=13, clip_on=False, zorder=5)
+    else:
+        query_unknown = "no start and goal markers (the experiment's query is not recorded)"
     ax.set_title("%s: best (solid) and median (dashed) paths" % exp.name, fontsize=10)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
     path = os.path.join(outdir, "paths_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
-    return os.path.basename(path), None if drawn else "no saved exact paths"
+    return os.path.basename(path), query_unknown if drawn else "no saved exact paths"
 
 
 def load_paths(database_path):
@@ -473,6 +490,9 @@ def write_report(database_path, outdir, world_dir=None):
             )
         )
 
+    if planning:
+        parts.extend(comparisons.campaign_section(database, planning, _optimum, outdir, colors))
+
     # The papers' tables.
     lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in planning if _world_name(e) in papers.LRSMA_WORLDS]
     if lrsma_exps:
@@ -537,6 +557,7 @@ def write_report(database_path, outdir, world_dir=None):
                 ],
             )
         )
+        parts.extend(comparisons.problem_section(database, exp, _optimum(exp)))
         parts.append("<p>Time to quality [s]: median [95%% CI] (runs that got there / runs); a run that never got "
                      "there counts as +&infin;%s.</p>" % ("" if database.improvements is not None else
                                                          " (no improvements table: from the progress samples)"))

@@ -1,12 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Just enough of mhplan's world files to draw them: YAML worlds (circles, rectangles, polygons, inline grid
-rows, .map grid files) and bare MovingAI .map files. The C++ loader (src/io/WorldIO.cpp) is the reference and
-validates; this one only draws files that already passed it."""
+"""The worlds the report draws, as the mhplan program exports them (`mhplan worlds FILE --json`, field names in
+docs/cli.md): the loader that plans is the only parser of world files, so every format it reads (YAML
+geometry, inline grids, MovingAI .map, PGM) is drawn the same way. The program is $MHPLAN_BIN (set by
+`mhplan report`), else `mhplan` on PATH."""
 
-import math
+import json
 import os
-
-import yaml
+import shutil
+import subprocess
 
 
 class World:
@@ -19,65 +20,54 @@ class World:
         self.grid = None  # list of rows, top row first, True = blocked
         self.cell_size = 1.0
         self.origin = (0.0, 0.0)
-        self.queries = {}  # name -> ((sx, sy), (gx, gy))
+        self.queries = {}  # name -> ((sx, sy), (gx, gy)), in the world file's order
 
 
-def _read_map(path):
-    with open(path) as f:
-        lines = [l.rstrip("\r\n") for l in f]
-    i = next(k for k, l in enumerate(lines) if l.strip() == "map")
-    height = int(next(l.split()[1] for l in lines[:i] if l.startswith("height")))
-    return [[c in "@OTW" for c in row] for row in lines[i + 1 : i + 1 + height]]
+def mhplan_binary():
+    """The mhplan program: $MHPLAN_BIN, else `mhplan` on PATH; None when there is none."""
+    env = os.environ.get("MHPLAN_BIN")
+    if env:
+        return env if os.access(env, os.X_OK) else None
+    return shutil.which("mhplan")
 
 
-def _rectangle(spec):
-    if "min" in spec:
-        (x0, y0), (x1, y1) = spec["min"], spec["max"]
-        return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-    (cx, cy), (w, h) = spec["center"], spec["size"]
-    a = math.radians(spec.get("angle", 0.0))
-    c, s = math.cos(a), math.sin(a)
-    return [(cx + c * x - s * y, cy + s * x + c * y) for x, y in ((-w / 2, -h / 2), (w / 2, -h / 2), (w / 2, h / 2), (-w / 2, h / 2))]
+def from_json(doc):
+    """A World from one element of `mhplan worlds --json`'s "worlds" array."""
+    b = doc["bounds"]
+    w = World(doc["name"], (b["xmin"], b["xmax"], b["ymin"], b["ymax"]), doc.get("robot_radius", 0.0))
+    w.circles = [(c["center"][0], c["center"][1], c["radius"]) for c in doc.get("circles", [])]
+    w.polygons = [[tuple(v) for v in p["vertices"]] for p in doc.get("polygons", [])]
+    g = doc.get("grid")
+    if g:
+        w.grid = [[c == "@" for c in row] for row in g["rows"]]
+        w.cell_size = g["cell_size"]
+        w.origin = tuple(g["origin"])
+    for q in doc.get("queries", []):
+        w.queries[q["name"]] = (tuple(q["start"]), tuple(q["goal"]))
+    return w
 
 
 def load_world(path):
-    """A World from a .yaml/.yml or .map file; raises OSError/ValueError on files it cannot read."""
-    if path.endswith(".map"):
-        rows = _read_map(path)
-        w = World(os.path.splitext(os.path.basename(path))[0], (0.0, len(rows[0]), 0.0, len(rows)))
-        w.grid = rows
-        return w
-    with open(path) as f:
-        doc = yaml.safe_load(f)
-    radius = float((doc.get("robot") or {}).get("radius", 0.0))
-    name = doc.get("name", os.path.basename(path))
-    if "grid" in doc:
-        g = doc["grid"]
-        if "rows" in g:
-            rows = [[c in "@OTW" for c in r] for r in g["rows"]]
-        elif str(g.get("file", "")).endswith(".map"):
-            rows = _read_map(os.path.join(os.path.dirname(path), g["file"]))
-        else:
-            raise ValueError("%s: only .map and inline grids can be drawn" % path)
-        cs = float(g.get("cell_size", 1.0))
-        ox, oy = g.get("origin", [0.0, 0.0])
-        w = World(name, (ox, ox + cs * len(rows[0]), oy, oy + cs * len(rows)), radius)
-        w.grid, w.cell_size, w.origin = rows, cs, (ox, oy)
-    else:
-        b = doc["bounds"]
-        bounds = (b["xmin"], b["xmax"], b["ymin"], b["ymax"]) if isinstance(b, dict) else tuple(b)
-        w = World(name, tuple(float(v) for v in bounds), radius)
-        for item in doc.get("obstacles") or []:
-            (kind, spec), = item.items()
-            if kind == "circle":
-                w.circles.append((spec["center"][0], spec["center"][1], spec["radius"]))
-            elif kind == "rectangle":
-                w.polygons.append(_rectangle(spec))
-            elif kind == "polygon":
-                w.polygons.append([tuple(p) for p in spec["points"]])
-    for i, q in enumerate(doc.get("queries") or []):
-        w.queries[q.get("name", "default" if i == 0 else "q%d" % i)] = (tuple(q["start"]), tuple(q["goal"]))
-    return w
+    """The World of file \\e path, exported by the mhplan program; raises OSError when there is no program and
+    ValueError with the program's message when it refuses the file."""
+    binary = mhplan_binary()
+    if not binary:
+        raise OSError("no mhplan program to read worlds (set MHPLAN_BIN or put mhplan on PATH)")
+    proc = subprocess.run([binary, "worlds", path, "--json"], capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise ValueError((proc.stderr or proc.stdout).strip() or "mhplan worlds failed")
+    return from_json(json.loads(proc.stdout)["worlds"][0])
+
+
+def parse_query_points(text):
+    """The experiment's query from its 'query_points' property "(sx,sy)->(gx,gy)"; None when unreadable."""
+    try:
+        a, b = str(text).split("->")
+        start = tuple(float(v) for v in a.strip().strip("()").split(","))
+        goal = tuple(float(v) for v in b.strip().strip("()").split(","))
+    except (ValueError, AttributeError):
+        return None
+    return (start, goal) if len(start) == 2 and len(goal) == 2 else None
 
 
 def draw_world(ax, world):

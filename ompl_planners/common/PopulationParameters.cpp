@@ -13,22 +13,46 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 10000};
-        constexpr ParamRange kIterations{"iterations", 1, 1, 1000000};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000};
-        constexpr ParamRange kWaypoints{"waypoints", 1, 1, 100};
-        constexpr ParamRange kSplineSamples{"spline_samples", 2, 1, 100000};
-        constexpr ParamRange kLengthWeight{"length_weight", 0, 1, 1000000};
-        constexpr ParamRange kPenaltyWeight{"penalty_weight", 0, 1, 1000000000};
-        constexpr ParamRange kDistanceWeight{"distance_weight", 0, 0.1, 1000000};
-        constexpr ParamRange kSafetyWeight{"safety_weight", 0, 0.1, 1000000};
-        constexpr ParamRange kSmoothnessWeight{"smoothness_weight", 0, 0.1, 1000000};
-        constexpr ParamRange kSafeDistance{"safe_distance", 0.000001, 0.1, 1000000};
-        constexpr ParamRange kInfeasibleLengthWeight{"infeasible_length_weight", 0, 0.1, 1000000};
-        constexpr ParamRange kCrossingWeight{"crossing_weight", 0, 0.1, 1000000};
-        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295};
-        constexpr ParamRange kStagnationRestart{"stagnation_restart", 0, 1, 1000000};
-        constexpr ParamRange kGmsReplaceFraction{"gms_replace_fraction", 0, 0.05, 1};
+        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 10000,
+                                             "N, individuals (candidate paths) per iteration"};
+        constexpr ParamRange kIterations{
+            "iterations", 1, 1, 1000000,
+            "T, length of the coefficient schedules (the papers' iteration budget); does not stop a run"};
+        constexpr ParamRange kMaxIterations{
+            "max_iterations", 0, 1, 1000000,
+            "iterations per solve() call; 0 = until the time limit (the schedule restarts after T)"};
+        constexpr ParamRange kWaypoints{"waypoints", 1, 1, 100,
+                                        "m, intermediate waypoints of a candidate path"};
+        constexpr ParamRange kSplineSamples{"spline_samples", 2, 1, 100000,
+                                            "points of the spline decoding's polyline"};
+        constexpr ParamRange kLengthWeight{"length_weight", 0, 1, 1000000,
+                                           "eta1 of [LRSMA]'s fitness: weight of the path length"};
+        constexpr ParamRange kPenaltyWeight{"penalty_weight", 0, 1, 1000000000,
+                                            "eta2 of [LRSMA]'s fitness: weight of the collision penalty"};
+        constexpr ParamRange kDistanceWeight{"distance_weight", 0, 0.1, 1000000,
+                                             "w_d of [GMS]'s fitness: weight of the path length"};
+        constexpr ParamRange kSafetyWeight{
+            "safety_weight", 0, 0.1, 1000000,
+            "w_s of [GMS]'s fitness: weight of the safety term (clearance below safe_distance)"};
+        constexpr ParamRange kSmoothnessWeight{"smoothness_weight", 0, 0.1, 1000000,
+                                               "w_sm of [GMS]'s fitness: weight of the turning angles"};
+        constexpr ParamRange kSafeDistance{
+            "safe_distance", 0.000001, 0.1, 1000000,
+            "d_safe of [GMS]: clearance below which the safety term grows (m)"};
+        constexpr ParamRange kInfeasibleLengthWeight{
+            "infeasible_length_weight", 0, 0.1, 1000000,
+            "w_l of [GMS]: weight of the length inside obstacles of an infeasible path"};
+        constexpr ParamRange kCrossingWeight{
+            "crossing_weight", 0, 0.1, 1000000,
+            "w_c of [GMS]: weight of the obstacle crossings of an infeasible path"};
+        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295,
+                                   "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
+        constexpr ParamRange kStagnationRestart{
+            "stagnation_restart", 0, 1, 1000000,
+            "restart the population after this many iterations without improvement (0 = off)"};
+        constexpr ParamRange kGmsReplaceFraction{
+            "gms_replace_fraction", 0, 0.05, 1,
+            "[GMS] replacement: share of the worst individuals redrawn each iteration (0 = off)"};
     } // namespace
 
     void PopulationPlanner::declareParameters()
@@ -42,11 +66,13 @@ namespace mhplan
         declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
                                     &PopulationPlanner::getWaypoints);
         declareChoice(params(), this, "decoding", &PopulationPlanner::setDecoding,
-                      &PopulationPlanner::getDecoding, "polyline,spline");
+                      &PopulationPlanner::getDecoding, "polyline,spline",
+                      "how a candidate becomes a path: straight segments between waypoints, or a spline");
         declareRanged<unsigned int>(params(), this, kSplineSamples, &PopulationPlanner::setSplineSamples,
                                     &PopulationPlanner::getSplineSamples);
         declareChoice(params(), this, "fitness", &PopulationPlanner::setFitness,
-                      &PopulationPlanner::getFitness, "auto,lrsma,gms");
+                      &PopulationPlanner::getFitness, "auto,lrsma,gms",
+                      "fitness function: [LRSMA] S, [GMS] f1/f2, or auto ([GMS] on grid worlds)");
         declareRanged<double>(params(), this, kLengthWeight, &PopulationPlanner::setLengthWeight,
                               &PopulationPlanner::getLengthWeight);
         declareRanged<double>(params(), this, kPenaltyWeight, &PopulationPlanner::setPenaltyWeight,
@@ -70,15 +96,19 @@ namespace mhplan
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
         declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
-                      &PopulationPlanner::getGmsRepair);
+                      &PopulationPlanner::getGmsRepair,
+                      "[GMS] node and line-segment repair after every iteration");
         declareSwitch(params(), this, "gms_revise", &PopulationPlanner::setGmsRevise,
-                      &PopulationPlanner::getGmsRevise);
+                      &PopulationPlanner::getGmsRevise,
+                      "[GMS] revision (remove repeated nodes and loops) after every iteration");
         declareSwitch(params(), this, "gms_simplify", &PopulationPlanner::setGmsSimplify,
-                      &PopulationPlanner::getGmsSimplify);
+                      &PopulationPlanner::getGmsSimplify,
+                      "[GMS] simplification (drop waypoints that a straight segment can skip)");
         declareSwitch(params(), this, "gms_improve", &PopulationPlanner::setGmsImprove,
-                      &PopulationPlanner::getGmsImprove);
+                      &PopulationPlanner::getGmsImprove, "[GMS] node improvement after every iteration");
         declareChoice(params(), this, "gms_scope", &PopulationPlanner::setGmsScope,
-                      &PopulationPlanner::getGmsScope, "best,all");
+                      &PopulationPlanner::getGmsScope, "best,all",
+                      "individuals the [GMS] operators act on: the iteration's best or all");
         declareRanged<double>(params(), this, kGmsReplaceFraction, &PopulationPlanner::setGmsReplaceFraction,
                               &PopulationPlanner::getGmsReplaceFraction);
     }

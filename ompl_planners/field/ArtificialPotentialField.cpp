@@ -20,14 +20,21 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000000};
-        constexpr ParamRange kDirections{"directions", 3, 1, 3600};
-        constexpr ParamRange kGradientSpacing{"gradient_spacing", 0.000000001, 0.0001, 1};
-        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000};
-        constexpr ParamRange kStallSteps{"stall_steps", 1, 1, 1000000};
-        constexpr ParamRange kStallTolerance{"stall_tolerance", 0, 0.000001, 1000000};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 10000000};
-        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000};
+        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000000, "lambda, the step length"};
+        constexpr ParamRange kDirections{"directions", 3, 1, 3600,
+                                         "sampled directions per step (descent = directions)"};
+        constexpr ParamRange kGradientSpacing{
+            "gradient_spacing", 0.000000001, 0.0001, 1,
+            "finite-difference spacing of the gradient (descent = gradient)"};
+        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000,
+                                            "goal tolerance; 0 = step_size"};
+        constexpr ParamRange kStallSteps{"stall_steps", 1, 1, 1000000,
+                                         "steps without improvement that end the descent"};
+        constexpr ParamRange kStallTolerance{"stall_tolerance", 0, 0.000001, 1000000,
+                                             "improvement of the potential that counts"};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 10000000,
+                                            "steps per solve() call; 0 = no limit"};
+        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000, "step budget of a descent"};
     } // namespace
 
     namespace
@@ -47,7 +54,8 @@ namespace mhplan
         using A = ArtificialPotentialField;
         declareFieldParams(params_);
         declareRanged<double>(params(), this, kStepSize, &A::setStepSize, &A::getStepSize);
-        declareChoice(params(), this, "descent", &A::setDescent, &A::getDescent, "directions,gradient");
+        declareChoice(params(), this, "descent", &A::setDescent, &A::getDescent, "directions,gradient",
+                      "step along the best of sampled directions, or along the numerical gradient");
         declareRanged<unsigned int>(params(), this, kDirections, &A::setDirections, &A::getDirections);
         declareRanged<double>(params(), this, kGradientSpacing, &A::setGradientSpacing,
                               &A::getGradientSpacing);

@@ -22,21 +22,30 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kChemotacticSteps{"chemotactic_steps", 1, 1, 100000};
-        constexpr ParamRange kSwimLength{"swim_length", 0, 1, 100000};
-        constexpr ParamRange kReproductionSteps{"reproduction_steps", 1, 1, 100000};
-        constexpr ParamRange kEliminationEvents{"elimination_events", 1, 1, 100000};
-        constexpr ParamRange kEliminationProbability{"elimination_probability", 0, 0.01, 1};
-        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000};
-        constexpr ParamRange kImprovementThreshold{"improvement_threshold", 0, 1, 100000};
-        constexpr ParamRange kAttractDepth{"attract_depth", 0, 0.01, 1000000};
-        constexpr ParamRange kAttractWidth{"attract_width", 0, 0.01, 1000000};
-        constexpr ParamRange kRepelHeight{"repel_height", 0, 0.01, 1000000};
-        constexpr ParamRange kRepelWidth{"repel_width", 0, 0.01, 1000000};
-        constexpr ParamRange kRobotStep{"robot_step", 0.000001, 0.01, 1000000};
-        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000};
-        constexpr ParamRange kSectorAngle{"sector_angle", 0, 1, 180};
-        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000};
+        constexpr ParamRange kChemotacticSteps{"chemotactic_steps", 1, 1, 100000,
+                                               "Nc, chemotactic steps per reproduction"};
+        constexpr ParamRange kSwimLength{"swim_length", 0, 1, 100000, "Ns, longest swim"};
+        constexpr ParamRange kReproductionSteps{"reproduction_steps", 1, 1, 100000,
+                                                "Nre, reproductions per elimination-dispersal event"};
+        constexpr ParamRange kEliminationEvents{"elimination_events", 1, 1, 100000,
+                                                "Ned, elimination-dispersal events per run"};
+        constexpr ParamRange kEliminationProbability{"elimination_probability", 0, 0.01, 1,
+                                                     "Ped, dispersal probability per bacterium and event"};
+        constexpr ParamRange kStepSize{"step_size", 0.000001, 0.01, 1000, "C, the chemotactic step size"};
+        constexpr ParamRange kImprovementThreshold{"improvement_threshold", 0, 1, 100000,
+                                                   "F_improv: improvements that keep a direction (ATBFO)"};
+        constexpr ParamRange kAttractDepth{"attract_depth", 0, 0.01, 1000000,
+                                           "d_att of the cell-to-cell term"};
+        constexpr ParamRange kAttractWidth{"attract_width", 0, 0.01, 1000000,
+                                           "w_att of the cell-to-cell term"};
+        constexpr ParamRange kRepelHeight{"repel_height", 0, 0.01, 1000000, "h_rep of the cell-to-cell term"};
+        constexpr ParamRange kRepelWidth{"repel_width", 0, 0.01, 1000000, "w_rep of the cell-to-cell term"};
+        constexpr ParamRange kRobotStep{"robot_step", 0.000001, 0.01, 1000000, "lambda, the robot's step"};
+        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000,
+                                            "goal tolerance of the walk; 0 = robot_step"};
+        constexpr ParamRange kSectorAngle{"sector_angle", 0, 1, 180,
+                                          "half angle of the sector the bacteria start in (degrees)"};
+        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000, "robot step budget of a walk"};
     } // namespace
 
     namespace
@@ -78,7 +87,9 @@ namespace mhplan
     void BacterialForaging::declareBfoParams()
     {
         using BF = BacterialForaging;
-        declareChoice(params(), this, "mode", &BF::setMode, &BF::getMode, "online,global");
+        declareChoice(
+            params(), this, "mode", &BF::setMode, &BF::getMode, "online,global",
+            "online (a robot walk guided by the colony) or global (the colony optimises the whole path)");
         declareRanged<unsigned int>(params(), this, kChemotacticSteps, &BF::setChemotacticSteps,
                                     &BF::getChemotacticSteps);
         declareRanged<unsigned int>(params(), this, kSwimLength, &BF::setSwimLength, &BF::getSwimLength);
@@ -89,10 +100,12 @@ namespace mhplan
         declareRanged<double>(params(), this, kEliminationProbability, &BF::setEliminationProbability,
                               &BF::getEliminationProbability);
         declareRanged<double>(params(), this, kStepSize, &BF::setStepSize, &BF::getStepSize);
-        declareSwitch(params(), this, "adaptive_tumble", &BF::setAdaptiveTumble, &BF::getAdaptiveTumble);
+        declareSwitch(params(), this, "adaptive_tumble", &BF::setAdaptiveTumble, &BF::getAdaptiveTumble,
+                      "ATBFO's adaptive tumble");
         declareRanged<unsigned int>(params(), this, kImprovementThreshold, &BF::setImprovementThreshold,
                                     &BF::getImprovementThreshold);
-        declareSwitch(params(), this, "cell_to_cell", &BF::setCellToCell, &BF::getCellToCell);
+        declareSwitch(params(), this, "cell_to_cell", &BF::setCellToCell, &BF::getCellToCell,
+                      "Passino's cell-to-cell attraction and repulsion");
         declareRanged<double>(params(), this, kAttractDepth, &BF::setAttractDepth, &BF::getAttractDepth);
         declareRanged<double>(params(), this, kAttractWidth, &BF::setAttractWidth, &BF::getAttractWidth);
         declareRanged<double>(params(), this, kRepelHeight, &BF::setRepelHeight, &BF::getRepelHeight);

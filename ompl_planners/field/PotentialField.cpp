@@ -23,10 +23,14 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kAttractionGain{"attraction_gain", 0, 0.01, 1e6};
-        constexpr ParamRange kRepulsionGain{"repulsion_gain", 0, 0.01, 1e6};
-        constexpr ParamRange kInfluenceDistance{"influence_distance", 1e-6, 0.1, 1e6};
-        constexpr ParamRange kSensingRange{"sensing_range", 1e-6, 0.1, 1e6};
+        constexpr ParamRange kAttractionGain{"attraction_gain", 0, 0.01, 1e6,
+                                             "xi, gain of the goal attraction"};
+        constexpr ParamRange kRepulsionGain{"repulsion_gain", 0, 0.01, 1e6,
+                                            "eta, gain of the obstacle repulsion"};
+        constexpr ParamRange kInfluenceDistance{"influence_distance", 1e-6, 0.1, 1e6,
+                                                "d0, distance beyond which an obstacle does not repel"};
+        constexpr ParamRange kSensingRange{"sensing_range", 1e-6, 0.1, 1e6,
+                                           "D_sense, range of the obstacle sensing"};
     } // namespace
 
     RepulsionMode parseRepulsionMode(const std::string &name)
@@ -86,7 +90,8 @@ namespace mhplan
         declareRanged<double>(params, this, kInfluenceDistance, &S::setInfluenceDistance,
                               &S::getInfluenceDistance);
         declareRanged<double>(params, this, kSensingRange, &S::setSensingRange, &S::getSensingRange);
-        declareChoice(params, this, "repulsion", &S::setRepulsion, &S::getRepulsion, "sum,nearest");
+        declareChoice(params, this, "repulsion", &S::setRepulsion, &S::getRepulsion, "sum,nearest",
+                      "repulsion summed over every obstacle in range, or from the nearest only");
     }
 
     PotentialField::PotentialField(ob::SpaceInformationPtr si) : si_(std::move(si)) {}

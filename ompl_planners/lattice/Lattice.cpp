@@ -27,8 +27,10 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kResolution{"resolution", 0, 0.01, 1000000};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000000};
+        constexpr ParamRange kResolution{"resolution", 0, 0.01, 1000000,
+                                         "spacing of a sampled lattice; 0 = automatic"};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000000,
+                                            "node expansions per solve() call; 0 = until the search ends"};
     } // namespace
 
     namespace
@@ -201,8 +203,10 @@ namespace mhplan
 
         declareRanged<double>(params(), this, kResolution, &LatticePlanner::setResolution,
                               &LatticePlanner::getResolution);
-        declareChoice(params(), this, "lattice", &LatticePlanner::setLattice, &LatticePlanner::getLattice,
-                      "auto,sampled");
+        declareChoice(
+            params(), this, "lattice", &LatticePlanner::setLattice, &LatticePlanner::getLattice,
+            "auto,sampled",
+            "auto: the grid's cells on grid worlds, else a sampled lattice; sampled: always sampled");
         declareRanged<unsigned int>(params(), this, kMaxIterations, &LatticePlanner::setMaxIterations,
                                     &LatticePlanner::getMaxIterations);
 

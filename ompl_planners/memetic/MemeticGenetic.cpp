@@ -9,10 +9,12 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1};
-        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1};
-        constexpr ParamRange kImmigrantRate{"immigrant_rate", 0, 0.05, 1};
-        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100};
+        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1, "crossover probability"};
+        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1, "mutation probability per offspring"};
+        constexpr ParamRange kImmigrantRate{"immigrant_rate", 0, 0.05, 1,
+                                            "share of fresh random walks per generation"};
+        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100,
+                                             "individuals per selection tournament"};
     } // namespace
 
     MemeticGenetic::MemeticGenetic(const ob::SpaceInformationPtr &si, const std::string &name)

@@ -16,12 +16,16 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kIterations{"iterations", 1, 1, 1000000};
-        constexpr ParamRange kMaxStations{"max_stations", 8, 1, 1024};
-        constexpr ParamRange kOffsetRange{"offset_range", 0.001, 0.001, 1};
-        constexpr ParamRange kZ{"z", 0, 0.01, 1};
-        constexpr ParamRange kLevyStep{"levy_step", 0, 0.01, 1};
-        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1};
+        constexpr ParamRange kIterations{"iterations", 1, 1, 1000000,
+                                         "T, schedule length of the first epoch"};
+        constexpr ParamRange kMaxStations{"max_stations", 8, 1, 1024,
+                                          "largest number of stations K along the path"};
+        constexpr ParamRange kOffsetRange{"offset_range", 0.001, 0.001, 1,
+                                          "offset bound D as a share of the bounds' larger side"};
+        constexpr ParamRange kZ{"z", 0, 0.01, 1, "probability of a random restart of one individual"};
+        constexpr ParamRange kLevyStep{"levy_step", 0, 0.01, 1, "Levy step as a share of the offset range"};
+        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1,
+                                               "share of the population rotated on stagnation"};
     } // namespace
 
     // ---------------------------------------------------------------- OffsetMemeticPlanner

@@ -25,19 +25,30 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 1000};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000};
-        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295};
-        constexpr ParamRange kWalkNoise{"walk_noise", 0, 0.1, 10};
-        constexpr ParamRange kWalkWeight{"walk_weight", 1, 0.1, 10};
-        constexpr ParamRange kWalkExpansions{"walk_expansions", 1000, 1000, 100000000};
-        constexpr ParamRange kLatticeLevels{"lattice_levels", 1, 1, 16};
-        constexpr ParamRange kCoarseTurn{"coarse_turn", 0.01, 0.01, 3};
-        constexpr ParamRange kFineTurn{"fine_turn", 0.001, 0.001, 1};
-        constexpr ParamRange kPolishPasses{"polish_passes", 1, 1, 100000};
-        constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000};
-        constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000};
-        constexpr ParamRange kBisections{"bisections", 4, 1, 40};
+        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 1000, "N, paths in the population"};
+        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000,
+                                            "generations per solve() call; 0 = until the time limit"};
+        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295,
+                                   "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
+        constexpr ParamRange kWalkNoise{"walk_noise", 0, 0.1, 10,
+                                        "largest priority noise of the randomised lattice walks"};
+        constexpr ParamRange kWalkWeight{"walk_weight", 1, 0.1, 10,
+                                         "heuristic weight of the walks after the first"};
+        constexpr ParamRange kWalkExpansions{"walk_expansions", 1000, 1000, 100000000,
+                                             "node budget of one walk"};
+        constexpr ParamRange kLatticeLevels{"lattice_levels", 1, 1, 16,
+                                            "number of lattice resolutions of the walks"};
+        constexpr ParamRange kCoarseTurn{"coarse_turn", 0.01, 0.01, 3,
+                                         "largest turn per waypoint after the coarse local search (rad)"};
+        constexpr ParamRange kFineTurn{"fine_turn", 0.001, 0.001, 1,
+                                       "largest turn per waypoint of the polished best path (rad)"};
+        constexpr ParamRange kPolishPasses{"polish_passes", 1, 1, 100000,
+                                           "local-search passes of the elite polish per generation"};
+        constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000,
+                                           "re-walk trials on the best individual per generation"};
+        constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000,
+                                         "generations without improvement before a restart (the elite kept)"};
+        constexpr ParamRange kBisections{"bisections", 4, 1, 40, "bisection steps of each pull move"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,

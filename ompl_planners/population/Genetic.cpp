@@ -13,11 +13,15 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1};
-        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1};
-        constexpr ParamRange kInsertDeleteRate{"insert_delete_rate", 0, 0.01, 0.5};
-        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100};
-        constexpr ParamRange kReplaceFraction{"replace_fraction", 0, 0.05, 1};
+        constexpr ParamRange kCrossoverRate{"crossover_rate", 0, 0.05, 1, "crossover probability"};
+        constexpr ParamRange kMutationRate{"mutation_rate", 0, 0.05, 1, "mutation probability per offspring"};
+        constexpr ParamRange kInsertDeleteRate{"insert_delete_rate", 0, 0.01, 0.5,
+                                               "probability of an insert (and of a delete) mutation"};
+        constexpr ParamRange kTournamentSize{"tournament_size", 1, 1, 100,
+                                             "individuals per selection tournament"};
+        constexpr ParamRange kReplaceFraction{
+            "replace_fraction", 0, 0.05, 1,
+            "share of the population replaced by fresh individuals each generation"};
     } // namespace
 
     Genetic::Genetic(const ob::SpaceInformationPtr &si, const std::string &name)
@@ -35,9 +39,10 @@ namespace mhplan
         declareRanged<double>(params(), this, kReplaceFraction, &Genetic::setReplaceFraction,
                               &Genetic::getReplaceFraction);
         declareSwitch(params(), this, "node_improvement", &Genetic::setNodeImprovement,
-                      &Genetic::getNodeImprovement);
+                      &Genetic::getNodeImprovement, "apply node improvement to the offspring");
         declareChoice(params(), this, "initialisation", &Genetic::setInitialisation,
-                      &Genetic::getInitialisation, "nodes,walk");
+                      &Genetic::getInitialisation, "nodes,walk",
+                      "initial paths: random free nodes repaired ([GMS]), or random lattice walks (GA-WALK)");
     }
 
     Genetic::~Genetic() = default;

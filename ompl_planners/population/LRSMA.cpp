@@ -14,12 +14,18 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kLevyBeta{"levy_beta", 0.1, 0.01, 1.99};
-        constexpr ParamRange kLevyStep{"levy_step", 0, 0.001, 1};
-        constexpr ParamRange kStagnationTolerance{"stagnation_tolerance", 0, 0.1, 1000000000};
-        constexpr ParamRange kStagnationLimit{"stagnation_limit", 1, 1, 1000};
-        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1};
-        constexpr ParamRange kTemperature{"temperature", 0.000000001, 1, 1000000000000};
+        constexpr ParamRange kLevyBeta{"levy_beta", 0.1, 0.01, 1.99, "exponent beta of the Levy flights"};
+        constexpr ParamRange kLevyStep{"levy_step", 0, 0.001, 1,
+                                       "Levy step as a share of the bounds' extent"};
+        constexpr ParamRange kStagnationTolerance{"stagnation_tolerance", 0, 0.1, 1000000000,
+                                                  "Fmin of the stagnation monitor: improvement that counts"};
+        constexpr ParamRange kStagnationLimit{
+            "stagnation_limit", 1, 1, 1000,
+            "Tmax: iterations without such an improvement before the rotation"};
+        constexpr ParamRange kRotationFraction{"rotation_fraction", 0, 0.05, 1,
+                                               "p_r, the share of the population rotated on stagnation"};
+        constexpr ParamRange kTemperature{"temperature", 0.000000001, 1, 1000000000000,
+                                          "temperature of the elite annealing"};
     } // namespace
 
     LRSMA::LRSMA(const ob::SpaceInformationPtr &si) : LRSMA(si, "LRSMA") {}
@@ -37,7 +43,8 @@ namespace mhplan
                               &LRSMA::getRotationFraction);
         declareRanged<double>(params(), this, kTemperature, &LRSMA::setTemperature, &LRSMA::getTemperature);
         declareChoice(params(), this, "rotation_product", &LRSMA::setRotationProduct,
-                      &LRSMA::getRotationProduct, "elementwise,dot");
+                      &LRSMA::getRotationProduct, "elementwise,dot",
+                      "rotation applied elementwise (R (.) X) or as a matrix product (R . X)");
     }
 
     void LRSMA::setLevyBeta(double beta)

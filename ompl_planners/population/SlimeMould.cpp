@@ -14,7 +14,7 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kZ{"z", 0, 0.01, 1};
+        constexpr ParamRange kZ{"z", 0, 0.01, 1, "probability of a random restart of one slime mould"};
     } // namespace
 
     SlimeMould::SlimeMould(const ob::SpaceInformationPtr &si)

@@ -16,6 +16,12 @@ namespace mhplan
         return out.str();
     }
 
+    std::string parameterDescription(const ompl::base::GenericParam &param)
+    {
+        const auto *described = dynamic_cast<const ParameterDescription *>(&param);
+        return described ? described->description() : std::string();
+    }
+
     std::string formatParameter(double value)
     {
         // 15 significant digits print every value that has them exactly (trailing zeros dropped, no exponent

@@ -7,20 +7,52 @@
 
 #include <ompl/base/GenericParam.h>
 
+#include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace mhplan
 {
     /** \brief A numeric parameter: its name and its accepted closed interval [lo, hi], with the step OMPL's
-        range suggestion advertises ("lo:step:hi"). */
+        range suggestion advertises ("lo:step:hi"), and one line saying what it does (`mhplan planners`). */
     struct ParamRange
     {
         const char *name;
         double lo;
         double step;
         double hi;
+        const char *description{""};
     };
+
+    /** \brief What a parameter does, carried by the parameter itself (OMPL's GenericParam has no such
+        field): the parameters declared through declareRanged, declareSwitch and declareChoice have one. */
+    class ParameterDescription
+    {
+      public:
+        explicit ParameterDescription(std::string text) : text_(std::move(text)) {}
+        virtual ~ParameterDescription() = default;
+        const std::string &description() const { return text_; }
+
+      private:
+        std::string text_;
+    };
+
+    /** \brief An OMPL parameter with a description. */
+    template <typename T>
+    class DescribedParam : public ompl::base::SpecificParam<T>, public ParameterDescription
+    {
+      public:
+        DescribedParam(const std::string &name, typename ompl::base::SpecificParam<T>::SetterFn setter,
+                       typename ompl::base::SpecificParam<T>::GetterFn getter, std::string description)
+            : ompl::base::SpecificParam<T>(name, std::move(setter), std::move(getter)),
+              ParameterDescription(std::move(description))
+        {
+        }
+    };
+
+    /** \brief The description of \e param ("" when it has none, e.g. OMPL's own planners' parameters). */
+    std::string parameterDescription(const ompl::base::GenericParam &param);
 
     /** \brief The OMPL range suggestion "lo:step:hi" of \e range. */
     std::string rangeSuggestion(const ParamRange &range);
@@ -52,15 +84,16 @@ namespace mhplan
                        Getter getter)
     {
         if constexpr (std::is_floating_point_v<T>)
-            params.declareParam<std::string>(
+            params.add(std::make_shared<DescribedParam<std::string>>(
                 range.name,
                 [owner, setter, range](const std::string &text)
                 { (owner->*setter)(static_cast<T>(parseParameter(range, text))); },
-                [owner, getter] { return formatParameter(static_cast<double>((owner->*getter)())); });
+                [owner, getter] { return formatParameter(static_cast<double>((owner->*getter)())); },
+                range.description));
         else
-            params.declareParam<T>(
+            params.add(std::make_shared<DescribedParam<T>>(
                 range.name, [owner, setter](T v) { (owner->*setter)(v); },
-                [owner, getter] { return (owner->*getter)(); });
+                [owner, getter] { return (owner->*getter)(); }, range.description));
         params[range.name].setRangeSuggestion(rangeSuggestion(range));
     }
 
@@ -68,11 +101,11 @@ namespace mhplan
         \e owner. */
     template <typename Owner, typename Setter, typename Getter>
     void declareSwitch(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
-                       Getter getter)
+                       Getter getter, const std::string &description = "")
     {
-        params.declareParam<bool>(
+        params.add(std::make_shared<DescribedParam<bool>>(
             name, [owner, setter](bool v) { (owner->*setter)(v); },
-            [owner, getter] { return (owner->*getter)(); });
+            [owner, getter] { return (owner->*getter)(); }, description));
         params[name].setRangeSuggestion("0,1");
     }
 
@@ -80,11 +113,11 @@ namespace mhplan
         setter refuses any other word. */
     template <typename Owner, typename Setter, typename Getter>
     void declareChoice(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
-                       Getter getter, const std::string &choices)
+                       Getter getter, const std::string &choices, const std::string &description = "")
     {
-        params.declareParam<std::string>(
+        params.add(std::make_shared<DescribedParam<std::string>>(
             name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
-            [owner, getter] { return (owner->*getter)(); });
+            [owner, getter] { return (owner->*getter)(); }, description));
         params[name].setRangeSuggestion(choices);
     }
 } // namespace mhplan

@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 #include <sstream>
 
 namespace mhplan::cli
@@ -124,6 +126,56 @@ namespace mhplan::cli
             throw InputError("mhplan " + command_ + ": option --" + name + " expects X,Y, got '" + get(name) +
                              "'");
         return {v[0], v[1]};
+    }
+
+    namespace
+    {
+        bool writableDirectory(const std::filesystem::path &dir)
+        {
+            std::error_code ec;
+            return std::filesystem::is_directory(dir, ec) && access(dir.c_str(), W_OK | X_OK) == 0;
+        }
+    } // namespace
+
+    void checkOutputFile(const Args &args, const std::string &name)
+    {
+        if (!args.has(name))
+            return;
+        namespace fs = std::filesystem;
+        const std::string path = args.get(name);
+        const std::string what = "mhplan " + args.command() + ": --" + name + " '" + path + "': ";
+        std::error_code ec;
+        if (path.empty())
+            throw InputError(what + "an empty file name");
+        if (fs::is_directory(path, ec))
+            throw InputError(what + "is a directory; give a file name");
+        const fs::path parent =
+            fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+        if (!fs::is_directory(parent, ec))
+            throw InputError(what + "the directory '" + parent.string() + "' does not exist");
+        if (!writableDirectory(parent))
+            throw InputError(what + "the directory '" + parent.string() + "' is not writable");
+        if (fs::exists(path, ec) && access(path.c_str(), W_OK) != 0)
+            throw InputError(what + "the file exists and is not writable");
+    }
+
+    void checkOutputDirectory(const std::string &command, const std::string &name, const std::string &path)
+    {
+        namespace fs = std::filesystem;
+        const std::string what = "mhplan " + command + ": --" + name + " '" + path + "': ";
+        std::error_code ec;
+        if (path.empty())
+            throw InputError(what + "an empty directory name");
+        fs::path p = fs::absolute(path, ec).lexically_normal();
+        if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+            throw InputError(what + "exists and is not a directory");
+        // The nearest existing ancestor must be a writable directory (the rest is created by the run).
+        while (!p.empty() && !fs::exists(p, ec) && p != p.parent_path())
+            p = p.parent_path();
+        if (!fs::is_directory(p, ec))
+            throw InputError(what + "'" + p.string() + "' is not a directory");
+        if (!writableDirectory(p))
+            throw InputError(what + "the directory '" + p.string() + "' is not writable");
     }
 
     std::vector<double> parseNumberList(const std::string &name, const std::string &text)

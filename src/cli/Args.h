@@ -67,6 +67,14 @@ namespace mhplan::cli
     };
     OptimumOrReason optimumOrReason(const World &world, const Query &query);
 
+    /** \brief Refuse an output file before any work: when option \e name is given, its value must not be a
+        directory and its directory must exist and be writable. Throws InputError naming the option, the path
+        and what is wrong. */
+    void checkOutputFile(const Args &args, const std::string &name);
+    /** \brief The same for an output directory \e path (option \e name): an existing writable directory,
+        or a path whose nearest existing ancestor is a writable directory (it is created later). */
+    void checkOutputDirectory(const std::string &command, const std::string &name, const std::string &path);
+
     /** \brief Parse a list of numbers "a,b,c" for option \e name; throws InputError naming the option. */
     std::vector<double> parseNumberList(const std::string &name, const std::string &text);
 } // namespace mhplan::cli

@@ -7,6 +7,7 @@
 
 #include "mhplan/bench/Database.h"
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -207,6 +208,24 @@ namespace mhplan::cli
             return status;
         }
     } // namespace
+
+    const CommandDoc &arenaDoc()
+    {
+        static const CommandDoc doc{
+            "arena DB [--port N] [--host H] [--no-install]",
+            "serve OMPL's Planner Arena on a benchmark database; prints the URL, Ctrl-C stops it",
+            "Runs Debian's ompl-plannerarena (R/Shiny) where it works as installed, else a private copy "
+            "with a patched server.R (scripts/arena/install.sh; $MHPLAN_ARENA_DIR, default "
+            "~/.cache/mhplan/arena); installs Debian's R packages on first use. No system file is changed. "
+            "A campaign's simulations are in their own database (<database stem>-sim.db).",
+            {{"DB", "an SQLite database written by mhplan bench (or ompl_benchmark_statistics)"}},
+            {{"--port", "N", "TCP port, 1..65535 (default 8888); refused when in use"},
+             {"--host", "H", "address to listen on (default 127.0.0.1; 0.0.0.0 for every interface)"},
+             {"--no-install", "", "install nothing; fail when Planner Arena is not installed yet"}},
+            {"arena results/seeds.db", "arena results/seeds-sim.db --port 8890"},
+            "0 stopped by Ctrl-C (SIGINT) or SIGTERM, 1 bad input or R stopped by itself, 2 internal error"};
+        return doc;
+    }
 
     int cmdArena(const Argv &argv)
     {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan report DB -o DIR: runs analysis/report.py with an interpreter that has matplotlib and numpy. */
 #include "mhplan/cli/Commands.h"
+#include "mhplan/cli/Help.h"
 
 #include "mhplan/base/World.h"
 
@@ -44,6 +45,21 @@ namespace mhplan::cli
         }
     } // namespace
 
+    const CommandDoc &reportDoc()
+    {
+        static const CommandDoc doc{
+            "report DATABASE [-o DIR] [--worlds DIR]",
+            "write an HTML report (figures and tables) from a benchmark database into DIR/index.html",
+            "Runs analysis/report.py with /usr/bin/python3 (numpy, matplotlib). The report asks this program "
+            "for the worlds it draws (mhplan worlds FILE --json; MHPLAN_BIN is set for it).",
+            {{"DATABASE", "an SQLite database written by mhplan bench (or ompl_benchmark_statistics)"}},
+            {{"-o, --output", "DIR", "output directory (default: report)"},
+             {"--worlds", "DIR", "directory that relative world_file paths in the database are relative to"}},
+            {"report results/seeds.db -o report_seeds"},
+            "0 written, 1 bad input (not a database, output not writable), 2 internal error"};
+        return doc;
+    }
+
     int cmdReport(const Argv &argv)
     {
         const std::string script = reportScript();
@@ -66,6 +82,11 @@ namespace mhplan::cli
             throw InputError("mhplan report: cannot start " + python);
         if (pid == 0)
         {
+            // report.py asks this very program for the worlds it draws (mhplan worlds FILE --json).
+            std::error_code ec;
+            const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+            if (!ec)
+                setenv("MHPLAN_BIN", self.c_str(), 1);
             execv(python.c_str(), cargs.data());
             _exit(127);
         }

@@ -4,6 +4,8 @@
 #include "mhplan/cli/Commands.h"
 
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
+#include "mhplan/cli/Json.h"
 #include "mhplan/collision/Collision.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
@@ -27,9 +29,30 @@ namespace og = ompl::geometric;
 
 namespace mhplan::cli
 {
+    const CommandDoc &scenDoc()
+    {
+        static const CommandDoc doc{
+            "scen MAP.map SCEN.scen [options]",
+            "run every problem of a MovingAI scenario file and compare the lengths with the file's optima",
+            "Lengths are in cells (the .scen file's unit); a length matches when it is within max(1e-4, "
+            "1e-5 x optimal) of the file's optimal length (8-connected octile lengths: AStar reproduces "
+            "them).",
+            {{"MAP.map", "the MovingAI map"}, {"SCEN.scen", "its scenario file (version 1)"}},
+            {{"--planner", "NAME", "the planner (default AStar; one planner object for all problems)"},
+             {"--time", "S",
+              "time limit per problem in seconds, > 0 (default: none, until the planner stops)"},
+             {"--verbose", "", "print every problem, not only the mismatches"},
+             options::json("every problem's result and the totals")},
+            {"scen arena.map arena.map.scen",
+             "scen arena.map arena.map.scen --planner ThetaStar --time 1 --json"},
+            "0 every length matches, 1 bad input, 2 internal error, 3 some length does not match"};
+        return doc;
+    }
+
     int cmdScen(const Argv &argv)
     {
-        const Args args("scen", argv, {{"planner", "time"}, {}, {"verbose"}});
+        const Args args("scen", argv, {{"planner", "time"}, {}, {"verbose", "json"}});
+        const bool json = args.has("json");
         if (args.positional().size() != 2)
             throw InputError("mhplan scen: expected two arguments, MAP.map SCEN.scen");
         const std::string mapPath = args.positional()[0];
@@ -48,10 +71,22 @@ namespace mhplan::cli
         const std::vector<ScenProblem> problems = loadMovingAIScen(scenPath, grid);
         const CollisionModelPtr model = makeCollisionModel(world, CollisionBackend::Grid);
 
-        std::cout << "map:       " << mapPath << " (" << grid.width() << " x " << grid.height() << ", "
-                  << grid.blockedCount() << " blocked)\n";
-        std::cout << "scenario:  " << scenPath << " (" << problems.size() << " problems)\n";
-        std::cout << "planner:   " << plannerName << "\n";
+        JsonWriter out(std::cout);
+        if (json)
+            out.beginObject()
+                .field("command", "scen")
+                .field("map", mapPath)
+                .field("scenario", scenPath)
+                .field("planner", plannerName)
+                .field("problems", problems.size())
+                .key("results")
+                .beginArray();
+        else
+            std::cout << "map:       " << mapPath << " (" << grid.width() << " x " << grid.height() << ", "
+                      << grid.blockedCount() << " blocked)\n";
+        if (!json)
+            std::cout << "scenario:  " << scenPath << " (" << problems.size() << " problems)\n"
+                      << "planner:   " << plannerName << "\n";
 
         // One setup and one planner for all problems: only start and goal change.
         const auto query = [&](const ScenProblem &p)
@@ -95,7 +130,17 @@ namespace mhplan::cli
             const double length = exact ? ss->getSolutionPath().length() / grid.cellSize() : 0.0;
             const bool match = exact && scenOptimumMatches(p.optimal, length);
             matched += match ? 1 : 0;
-            if (verbose || !match)
+            if (json)
+            {
+                out.beginObject().field("line", p.line).field("bucket", p.bucket);
+                out.key("start").beginArray().value(p.sx).value(p.sy).endArray();
+                out.key("goal").beginArray().value(p.gx).value(p.gy).endArray();
+                out.field("status", status.asString()).field("exact", exact);
+                out.key("length");
+                exact ? out.value(length) : out.null();
+                out.field("optimal", p.optimal).field("match", match).endObject();
+            }
+            else if (verbose || !match)
             {
                 std::cout << std::setprecision(10) << scenPath << ":" << p.line << ": bucket " << p.bucket
                           << ", (" << p.sx << ", " << p.sy << ") -> (" << p.gx << ", " << p.gy << "): ";
@@ -105,6 +150,14 @@ namespace mhplan::cli
                     std::cout << "no exact path (" << status.asString() << ")";
                 std::cout << ", optimal " << p.optimal << (match ? "" : "  MISMATCH") << "\n";
             }
+        }
+        if (json)
+        {
+            out.endArray().field("matched", matched).field("time", totalSeconds);
+            out.key("iterations");
+            iterations != props.end() ? out.value(totalIterations) : out.null();
+            out.endObject().finish();
+            return matched == problems.size() ? 0 : 3;
         }
         std::cout << std::setprecision(6) << "time:      " << totalSeconds << " s";
         if (iterations != props.end())

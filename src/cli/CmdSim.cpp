@@ -4,11 +4,13 @@
 #include "mhplan/cli/Commands.h"
 
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/draw/SimRender.h"
 #include "mhplan/sim/Simulation.h"
+#include "mhplan/sim/SimulationReport.h"
 #include "mhplan/draw/Svg.h"
 
 #include <ompl/util/Time.h>
@@ -24,34 +26,6 @@ namespace mhplan::cli
 {
     namespace
     {
-        /** A scenario argument: an existing file, or the name of a shipped scenario
-            (environments/scenarios/NAME.yaml). */
-        std::string resolveScenarioPath(const std::string &arg)
-        {
-            if (fs::exists(arg))
-                return arg;
-            for (const fs::path &dir :
-                 {fs::path(environmentsDir()) / "scenarios", fs::path(environmentsDir())})
-                for (const char *ext : {".yaml", ".yml"})
-                {
-                    const fs::path p = dir / (arg + ext);
-                    if (fs::exists(p))
-                        return p.string();
-                }
-            throw InputError("scenario '" + arg +
-                             "': no such file, and no shipped scenario of that name in " +
-                             (fs::path(environmentsDir()) / "scenarios").string());
-        }
-
-        std::string metres(double v, int precision = 3)
-        {
-            if (std::isinf(v))
-                return "-";
-            std::ostringstream s;
-            s << std::fixed << std::setprecision(precision) << v;
-            return s.str();
-        }
-
         int positiveInt(const Args &args, const std::string &name, long long fallback, long long lo,
                         long long hi)
         {
@@ -63,6 +37,35 @@ namespace mhplan::cli
         }
     } // namespace
 
+    const CommandDoc &simDoc()
+    {
+        static const CommandDoc doc{
+            "sim SCENARIO --controller NAME [options]",
+            "run a moving-world scenario with a controller; print per-robot and run metrics; draw the run",
+            "Scenarios: 'mhplan scenarios'; controllers and their parameters: 'mhplan controllers'.",
+            {{"SCENARIO", "a scenario file or the name of a shipped scenario (e.g. mapf_15robots)"}},
+            {{"--controller", "NAME",
+              "dapf, aapf, bfo, atbfo or plan:<PLANNER> (required; see 'mhplan controllers')"},
+             options::seed(),
+             {"--set", "KEY=VALUE",
+              "set a controller parameter (repeatable); plan:<PLANNER> takes planner.<name>=value for the "
+              "planner's parameters"},
+             {"--time-limit", "S", "simulated seconds before the run stops (default: the scenario's)"},
+             options::svg("the run (static picture with an animated replay unless --no-replay)"),
+             {"--no-replay", "", "the SVG without the animated replay"},
+             {"--gif", "FILE", "write an animated GIF of the run (the directory must be writable)"},
+             {"--gif-width", "PX", "GIF width in pixels, 16..4096 (default 480)"},
+             {"--fps", "F", "frames per second of the replay and the GIF, (0, 100] (default 10)"},
+             {"--max-frames", "N",
+              "at most this many frames in the replay and the GIF, 2..100000 (default 300)"},
+             {"--csv", "FILE", "write every robot's trajectory as CSV"}},
+            {"sim mapf_2robots --controller aapf --seed 2 --svg run.svg",
+             "sim mapf_15robots --controller plan:ThetaStar --set plan_time=0.2 --gif run.gif",
+             "sim bfo_case3_lines --controller plan:SMA --set planner.population_size=40 --csv traj.csv"},
+            "0 every robot done, 1 bad input, 2 internal error, 3 some robot stuck or unfinished"};
+        return doc;
+    }
+
     int cmdSim(const Argv &argv)
     {
         const Args args(
@@ -70,6 +73,8 @@ namespace mhplan::cli
             {{"controller", "seed", "svg", "gif", "csv", "time-limit", "gif-width", "fps", "max-frames"},
              {"set"},
              {"no-replay"}});
+        for (const char *output : {"svg", "gif", "csv"})
+            checkOutputFile(args, output);
         if (args.positional().size() != 1)
             throw InputError(
                 "mhplan sim: expected exactly one SCENARIO (a scenario file or the name of a shipped "
@@ -132,34 +137,7 @@ namespace mhplan::cli
         Simulation sim(scenario, controller, static_cast<std::uint32_t>(seed));
         const SimulationResult r = sim.run();
 
-        std::cout << "\n"
-                  << std::left << std::setw(10) << "robot" << std::setw(11) << "status" << std::right
-                  << std::setw(11) << "time [s]" << std::setw(11) << "length [m]" << std::setw(14)
-                  << "clearance [m]" << std::setw(13) << "robot d [m]" << std::setw(12) << "collisions"
-                  << "\n";
-        for (const RobotResult &rr : r.robots)
-            std::cout << std::left << std::setw(10) << rr.name << std::setw(11) << toString(rr.status)
-                      << std::right << std::setw(11) << metres(rr.traversalTime, 2) << std::setw(11)
-                      << metres(rr.pathLength) << std::setw(14) << metres(rr.minObstacleClearance)
-                      << std::setw(13) << metres(rr.minRobotDistance) << std::setw(12) << rr.collisions
-                      << "\n";
-
-        std::cout << "\nrobots:     " << r.done << " done, " << r.stuck << " stuck, " << r.unfinished
-                  << " unfinished (of " << r.robots.size() << ")\n";
-        std::cout << "flowtime:   " << metres(r.flowtime, 3) << " s" << (r.allDone ? "" : " (lower bound)")
-                  << "\n";
-        std::cout << "makespan:   " << metres(r.makespan, 3) << " s" << (r.allDone ? "" : " (lower bound)")
-                  << "\n";
-        std::cout << "collisions: " << r.collisions() << " (static " << r.staticCollisions << ", moving "
-                  << r.movingCollisions << ", robot-robot " << r.robotCollisions << ")\n";
-        std::cout << "min robot distance:       " << metres(r.minRobotDistance) << " m\n";
-        std::cout << "min obstacle clearance:   " << metres(r.minObstacleClearance) << " m\n";
-        std::cout << "simulated:  " << metres(r.simulatedTime, 2) << " s in " << r.steps << " steps ("
-                  << r.robotSteps << " robot-steps)\n";
-        std::cout << "wall time:  " << std::setprecision(4) << r.wallTime << " s (" << std::setprecision(0)
-                  << std::fixed << (r.wallTime > 0.0 ? static_cast<double>(r.robotSteps) / r.wallTime : 0.0)
-                  << " robot-steps/s)\n"
-                  << std::defaultfloat;
+        printSimulationReport(std::cout, r);
         if (!r.counters.empty())
         {
             std::cout << "counters:  ";

@@ -17,6 +17,7 @@ namespace mhplan::cli
     int cmdWorlds(const Argv &argv);
     int cmdPlanners(const Argv &argv);
     int cmdControllers(const Argv &argv);
+    int cmdScenarios(const Argv &argv);
     int cmdCompare(const Argv &argv);
     int cmdBench(const Argv &argv);
     int cmdReport(const Argv &argv);
@@ -30,6 +31,9 @@ namespace mhplan::cli
     /** \brief A world argument: an existing file path, or the name of a shipped world
      * (environments/NAME.yaml). */
     std::string resolveWorldPath(const std::string &arg);
+    /** \brief A scenario argument: an existing file, or the name of a shipped scenario
+        (environments/scenarios/NAME.yaml). */
+    std::string resolveScenarioPath(const std::string &arg);
     /** \brief Every shipped world file (sorted). */
     std::vector<std::string> shippedWorldFiles();
 } // namespace mhplan::cli

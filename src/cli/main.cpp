@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the command-line program. One table of subcommands; each lives in its own function. */
 #include "mhplan/cli/Commands.h"
+#include "mhplan/cli/Help.h"
 #include "mhplan/base/Version.h"
 #include "mhplan/base/World.h"
 
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <map>
 
@@ -17,58 +19,27 @@ namespace
     struct Command
     {
         std::function<int(const mhplan::cli::Argv &)> run;
-        const char *usage;
+        const mhplan::cli::CommandDoc &(*doc)();
     };
 
+    /** Every subcommand: its function and its help table (Help.h). A new subcommand is one entry here. */
     const std::map<std::string, Command> &commands()
     {
         using namespace mhplan::cli;
         static const std::map<std::string, Command> table = {
-            {"plan",
-             {cmdPlan,
-              "plan WORLD [--query NAME | --start X,Y --goal X,Y] [--planner NAME] [--time S] [--seed N]\n"
-              "        [--set key=value]... [--backend auto|analytic|fcl|grid|hash] [--svg FILE]"}},
-            {"generate",
-             {cmdGenerate,
-              "generate circles|rectangles|maze|grid [--seed N] [--count N] [--min-size M] [--max-size M]\n"
-              "        [--bounds xmin,xmax,ymin,ymax] [--radius R] [--width W] [--height H]\n"
-              "        [--cell-size S] [--density D] [--name NAME] [--output FILE.yaml|FILE.map]"}},
-            {"worlds",
-             {cmdWorlds, "worlds [WORLD...]   (shipped worlds, or describe and validate the given files)"}},
-            {"compare",
-             {cmdCompare,
-              "compare [WORLD...] [--planners A,B,...] [--time S] [--runs N] [--seed N]\n"
-              "        (plan every shipped world, or the given ones, with each planner; print a table)"}},
-            {"optimum",
-             {cmdOptimum,
-              "optimum WORLD [--query NAME | --start X,Y --goal X,Y] [--octile] [--svg FILE]\n"
-              "        (the exact shortest path: tangent graph, any-angle or 8-connected on grids)"}},
-            {"report",
-             {cmdReport,
-              "report DATABASE [-o DIR]   (HTML report: figures and tables from a benchmark database)"}},
-            {"bench",
-             {cmdBench,
-              "bench CAMPAIGN [--jobs N] [--shard i/N] [--merge-only] [--no-merge] [--list]\n"
-              "        [--database FILE] [--logs DIR] [--runs N] [--time S] [--seed N] [--no-progress]"}},
-            {"scen",
-             {cmdScen,
-              "scen MAP.map SCEN.scen [--planner AStar] [--time S] [--verbose]\n"
-              "        (run every problem of a MovingAI scenario file; compare lengths with its optima)"}},
-            {"sim",
-             {cmdSim,
-              "sim SCENARIO --controller NAME [--seed N] [--set key=value]... [--time-limit S]\n"
-              "        [--svg FILE] [--no-replay] [--gif FILE] [--gif-width PX] [--fps F] [--max-frames N]\n"
-              "        [--csv FILE]   (run a moving-world scenario, e.g. mapf_15robots; exit 0: all robots\n"
-              "        done, 3: some stuck or unfinished, 1: bad input)"}},
-            {"arena",
-             {cmdArena, "arena DB [--port N] [--host H] [--no-install]   (serve OMPL's Planner Arena on a\n"
-                        "        benchmark database; prints the URL; Ctrl-C stops it)"}},
-            {"planners",
-             {cmdPlanners, "planners [NAME...] (registered planners, their parameters, defaults, ranges)"}},
-            {"controllers",
-             {cmdControllers,
-              "controllers [NAME...] (moving-world controllers for sim, their parameters, defaults, "
-              "ranges)"}},
+            {"plan", {cmdPlan, planDoc}},
+            {"generate", {cmdGenerate, generateDoc}},
+            {"worlds", {cmdWorlds, worldsDoc}},
+            {"compare", {cmdCompare, compareDoc}},
+            {"optimum", {cmdOptimum, optimumDoc}},
+            {"report", {cmdReport, reportDoc}},
+            {"bench", {cmdBench, benchDoc}},
+            {"scen", {cmdScen, scenDoc}},
+            {"sim", {cmdSim, simDoc}},
+            {"arena", {cmdArena, arenaDoc}},
+            {"planners", {cmdPlanners, plannersDoc}},
+            {"controllers", {cmdControllers, controllersDoc}},
+            {"scenarios", {cmdScenarios, scenariosDoc}},
         };
         return table;
     }
@@ -76,21 +47,39 @@ namespace
     void usage(std::ostream &out)
     {
         out << "mhplan " << mhplan::version() << " (OMPL " << mhplan::omplVersion()
-            << "): metaheuristic path planners in OMPL\n\nusage:\n";
+            << "): metaheuristic path planners in OMPL\n\nusage: mhplan SUBCOMMAND [ARGS] [OPTIONS]\n\n"
+            << "subcommands:\n";
         for (const auto &kv : commands())
-            out << "  mhplan " << kv.second.usage << "\n";
-        out << "  mhplan version\n";
+            out << "  " << std::left << std::setw(13) << kv.first << kv.second.doc().summary << "\n";
+        out << "  " << std::left << std::setw(13) << "version"
+            << "print mhplan's and OMPL's versions\n"
+            << "\n'mhplan SUBCOMMAND --help' (or 'mhplan help SUBCOMMAND') shows a subcommand's arguments, "
+               "every "
+               "option and examples.\n\nenvironment variables:\n";
+        for (const auto &kv : mhplan::cli::environmentVariables())
+            out << "  " << std::left << std::setw(21) << kv.first << kv.second << "\n";
+    }
+
+    /** `--help` or `-h` anywhere after the subcommand asks for its help (before any other check). */
+    bool asksForHelp(int argc, char **argv)
+    {
+        for (int i = 2; i < argc; ++i)
+            if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
+                return true;
+        return false;
     }
 } // namespace
 
 int main(int argc, char **argv)
 {
-    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "help") == 0)
+    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0 ||
+        (std::strcmp(argv[1], "help") == 0 && argc == 2))
     {
         usage(argc < 2 ? std::cerr : std::cout);
         return argc < 2 ? 1 : 0;
     }
-    const std::string name = argv[1];
+    const bool helpCommand = std::strcmp(argv[1], "help") == 0;
+    const std::string name = helpCommand ? argv[2] : argv[1];
     if (name == "version" || name == "--version")
     {
         std::cout << "mhplan " << mhplan::version() << " (OMPL " << mhplan::omplVersion() << ")\n";
@@ -102,6 +91,11 @@ int main(int argc, char **argv)
         std::cerr << "mhplan: unknown command '" << name << "'\n";
         usage(std::cerr);
         return 1;
+    }
+    if (helpCommand || asksForHelp(argc, argv))
+    {
+        mhplan::cli::printCommandHelp(std::cout, it->second.doc());
+        return 0;
     }
     // OMPL's informational chatter goes to stderr-level only when asked.
     ompl::msg::setLogLevel(std::getenv("MHPLAN_VERBOSE") ? ompl::msg::LOG_DEBUG : ompl::msg::LOG_WARN);

@@ -1,0 +1,160 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The report's comparisons between planners: per problem a compact matrix of pairwise tests (pairwise.py) on
+the gap and on the time to within 1 % of the optimum; per campaign performance profiles (profiles.py) and the
+share of runs within tau % of the optimum."""
+
+import html
+import math
+import os
+
+import numpy as np
+
+from . import db as dbmod
+from . import pairwise, profiles, quality
+
+
+def run_gaps(database, exp, planner, optimum):
+    """Per run of \\e planner: its gap in % when it found an exact path, else +inf (a failed run is worse
+    than any path)."""
+    out = []
+    gap_col = "optimality_gap" if "optimality_gap" in database.run_columns else None
+    for r in database.runs_of(exp.id, planner):
+        g = None
+        if r.outcome == "exact":
+            if gap_col:
+                g = dbmod.run_value(r, gap_col)
+            elif optimum:
+                length = quality._length(database, r)
+                g = None if length is None else 100.0 * (length - optimum) / optimum
+        out.append(math.inf if g is None else g)
+    return out
+
+
+def samples(database, exp, optimum):
+    """{"gap": planner -> run gaps, "t1": planner -> censored times to within 1 %} (t1 only with an
+    optimum)."""
+    planners = database.planners_of(exp.id)
+    out = {"gap": {p: run_gaps(database, exp, p, optimum) for p in planners}}
+    if optimum:
+        out["t1"] = {p: quality.censored_times(database, database.runs_of(exp.id, p), optimum, 0.01) for p in planners}
+    return out
+
+
+def matrix_html(values, alpha=0.05):
+    """A planners x planners table: cell (row, column) = A12 that the row beats the column (lower cost
+    better), bold with * when Holm-corrected p < alpha."""
+    names = [p for p in values if values[p]]
+    if len(names) < 2:
+        return None
+    m = pairwise.matrix(values, alpha)
+    rows = ["<table class='pairwise'><tr><th>row beats column</th>" + "".join("<th>%s</th>" % html.escape(n) for n in names) + "</tr>"]
+    for a in names:
+        cells = []
+        for b in names:
+            if a == b:
+                cells.append("<td>&ndash;</td>")
+                continue
+            c = m[(a, b)]
+            text = "%.2f" % c["better"]
+            title = "p = %.3g, Holm p = %.3g (%s)" % (c["p"], c["p_holm"], c["method"])
+            cells.append("<td title='%s'>%s</td>" % (title, "<b>%s*</b>" % text if c["significant"] else text))
+        rows.append("<tr><td>%s</td>%s</tr>" % (html.escape(a), "".join(cells)))
+    rows.append("</table>")
+    return "\n".join(rows)
+
+
+def problem_section(database, exp, optimum):
+    """HTML for one problem: the pairwise matrices on the gap and on the time to within 1 %."""
+    s = samples(database, exp, optimum)
+    out = []
+    for key, label in (("gap", "optimality gap (a run without an exact path counts +&infin;)"), ("t1", "time to within 1 % of the optimum (never: +&infin;)")):
+        if key not in s:
+            continue
+        table = matrix_html(s[key])
+        if table:
+            out.append("<p>Pairwise on the %s: A12 that the row planner has the lower value (0.5 = no difference); "
+                       "<b>*</b>: two-sided Mann-Whitney U, Holm-corrected over all pairs, p &lt; 0.05.</p>" % label)
+            out.append(table)
+    return out
+
+
+TAUS = np.logspace(0, 2, 121)
+GAP_TAUS = np.concatenate([[0.0], np.logspace(-2, 2, 120)])
+
+
+def campaign_costs(database, exps, optimum_of):
+    """Per planner and problem (experiments where the planner ran): the censored median time to within 1 %
+    and the median path length (runs without an exact path at +inf). Problems without an optimum are left
+    out of the time profile."""
+    planners = sorted({p for e in exps for p in database.planners_of(e.id)})
+    times = {p: [] for p in planners}
+    lengths = {p: [] for p in planners}
+    gaps = {p: [] for p in planners}
+    timed = 0
+    for e in exps:
+        opt = optimum_of(e)
+        present = database.planners_of(e.id)
+        for p in planners:
+            runs = database.runs_of(e.id, p) if p in present else []
+            ls = []
+            for r in runs:
+                length = quality._length(database, r) if r.outcome == "exact" else None
+                ls.append(math.inf if length is None else length)
+            lengths[p].append(float(np.median(ls)) if ls else math.inf)
+            if opt:
+                t = quality.censored_times(database, runs, opt, 0.01) if runs else []
+                times[p].append(float(np.median(t)) if t else math.inf)
+                gaps[p].extend(run_gaps(database, e, p, opt) if runs else [])
+        timed += 1 if opt else 0
+    return times if timed else None, lengths, gaps
+
+
+def profile_figure(database, exps, optimum_of, outdir, colors):
+    """Three panels: Dolan-More profiles of the time to within 1 % and of the median length, and the share
+    of runs within tau % of the optimum. None with fewer than two planners."""
+    import matplotlib.pyplot as plt
+
+    times, lengths, gaps = campaign_costs(database, exps, optimum_of)
+    if len(lengths) < 2:
+        return None
+    panels = []
+    if times:
+        panels.append(("time to within 1 % of the optimum", profiles.profile(times, list(TAUS)), TAUS, "factor tau of the best planner's time", True))
+    panels.append(("median path length", profiles.profile(lengths, list(TAUS)), TAUS, "factor tau of the best planner's length", True))
+    if any(gaps.values()):
+        panels.append(("runs within tau % of the optimum", profiles.within_gap(gaps, list(GAP_TAUS)), GAP_TAUS, "gap tau [%]", False))
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.0 * len(panels) + 1.5, 4.2), squeeze=False)
+    for ax, (title, curves, taus, xlabel, ratio) in zip(axes[0], panels):
+        for p, ys in curves.items():
+            ax.step(taus, ys, where="post", color=colors.get(p), label=p, linewidth=1.4)
+        ax.set_xscale("symlog", linthresh=0.01) if not ratio else ax.set_xscale("log")
+        ax.set_ylim(-0.02, 1.02)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("share of problems" if ratio else "share of runs")
+        ax.set_title(title, fontsize=10)
+        ax.grid(alpha=0.3, which="both")
+    axes[0, -1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    path = os.path.join(outdir, "profiles.png")
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return os.path.basename(path)
+
+
+def campaign_section(database, exps, optimum_of, outdir, colors):
+    """HTML of the campaign's performance profiles."""
+    fig = profile_figure(database, exps, optimum_of, outdir, colors)
+    if not fig:
+        return []
+    return [
+        "<h2>Performance profiles</h2>",
+        "<p>Dolan-Mor&eacute; profiles over the %d problems: the share of problems on which a planner's cost is "
+        "within a factor &tau; of the best planner's (left: median time to within 1 %% of the optimum, runs "
+        "that never got there at +&infin;; middle: median path length, runs without an exact path at "
+        "+&infin;). &tau; = 1: the planner is (one of) the best; the curve's end: the share it solves at all. "
+        "Right: the share of all runs with a gap of at most &tau; %%.</p>" % len(exps),
+        "<img src='%s' alt='performance profiles'>" % fig,
+    ]
+
+
+

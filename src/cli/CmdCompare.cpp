@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan compare: every planner on every world's first query; a table (or JSON) of success, lengths, the
+   optimum, the gap and time. */
+#include "mhplan/cli/Commands.h"
+
+#include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
+#include "mhplan/cli/Json.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/registry/Registry.h"
+
+#include <ompl/util/Time.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan::cli
+{
+    namespace
+    {
+        std::vector<std::string> splitList(const std::string &text)
+        {
+            std::vector<std::string> out;
+            std::stringstream ss(text);
+            std::string item;
+            while (std::getline(ss, item, ','))
+                if (!item.empty())
+                    out.push_back(item);
+            return out;
+        }
+
+        /** The default comparison set: OMPL's optimizing baselines plus every mhplan planner registered. */
+        std::vector<std::string> defaultComparePlanners()
+        {
+            std::vector<std::string> out = {"RRTstar", "InformedRRTstar", "PRMstar", "BITstar"};
+            const PlannerRegistry &reg = PlannerRegistry::builtin();
+            for (const auto &name : reg.names())
+                if (reg.get(name).origin == "mhplan")
+                    out.push_back(name);
+            return out;
+        }
+    } // namespace
+
+    const CommandDoc &compareDoc()
+    {
+        static const CommandDoc doc{
+            "compare [WORLD...] [options]",
+            "plan the first query of every shipped world (or of the given ones) with each planner; print a "
+            "table of success, lengths, optimum, gap and time",
+            "A run counts as exact when the planner reports an exact solution whose path passes the exact "
+            "segment check. Lengths and the gap are over exact runs; the gap is that of the median length.",
+            {{"WORLD", "world files or names of shipped worlds (default: every shipped world)"}},
+            {{"--planners", "A,B,...",
+              "comma-separated planners (default: RRTstar, InformedRRTstar, PRMstar, BITstar and every "
+              "mhplan planner)"},
+             {"--time", "S", "time limit per run in seconds, > 0 (default 1)"},
+             {"--runs", "N", "runs per world and planner, 1..1000 (default 1)"},
+             options::seed(),
+             options::json("one result per world and planner")},
+            {"compare bfo_case1 lrsma_scenario1 --planners RRTstar,SMA,LRSMA --runs 5 --time 0.5 --seed 3",
+             "compare --planners BITstar,GA --json"}};
+        return doc;
+    }
+
+    int cmdCompare(const Argv &argv)
+    {
+        const Args args("compare", argv, {{"planners", "time", "runs", "seed"}, {}, {"json"}});
+        const std::uint_fast32_t seed = seedFromArgs(args);
+        const double timeLimit = args.number("time", 1.0);
+        if (!(timeLimit > 0.0))
+            throw InputError("mhplan compare: --time must be > 0 seconds");
+        const long long runs = args.integer("runs", 1);
+        if (runs < 1 || runs > 1000)
+            throw InputError("mhplan compare: --runs must be in [1, 1000] (got " + args.get("runs") + ")");
+        std::vector<std::string> planners =
+            args.has("planners") ? splitList(args.get("planners")) : defaultComparePlanners();
+        if (planners.empty())
+            throw InputError("mhplan compare: --planners names no planner (got '" + args.get("planners") +
+                             "'); give a comma-separated list, e.g. RRTstar,SMA");
+        for (const auto &p : planners)
+            PlannerRegistry::builtin().get(p); // refuse unknown names before any work
+        std::vector<std::string> files;
+        for (const auto &w : args.positional())
+            files.push_back(resolveWorldPath(w));
+        if (files.empty())
+            files = shippedWorldFiles();
+
+        const bool json = args.has("json");
+        JsonWriter out(std::cout);
+        if (json)
+        {
+            out.beginObject()
+                .field("command", "compare")
+                .field("seed", static_cast<unsigned long long>(seed))
+                .field("time_limit", timeLimit)
+                .field("runs", runs);
+            out.key("results").beginArray();
+        }
+        else
+            std::cout << "seed " << seed << ", time limit " << timeLimit << " s, " << runs
+                      << " run(s) per pair\n\n";
+        if (!json)
+            std::cout << std::left << std::setw(18) << "world" << std::setw(17) << "planner" << std::right
+                      << std::setw(7) << "exact" << std::setw(12) << "best len" << std::setw(12)
+                      << "median len" << std::setw(12) << "optimum" << std::setw(12) << "median gap"
+                      << std::setw(11) << "time [s]"
+                      << "\n";
+        for (const auto &file : files)
+        {
+            const World world = loadWorld(file);
+            const Query &query = world.queryOrDefault("");
+            const CollisionModelPtr model = makeCollisionModel(world);
+            const OptimumOrReason optimum = optimumOrReason(world, query);
+            std::ostringstream optText;
+            optText << std::fixed << std::setprecision(4);
+            if (optimum.result.found)
+                optText << optimum.result.length;
+            else
+                optText << "-";
+            for (const auto &name : planners)
+            {
+                std::vector<double> lengths;
+                double totalTime = 0.0;
+                int exact = 0;
+                for (long long r = 0; r < runs; ++r)
+                {
+                    og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+                    ss->setPlanner(PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+                    const ompl::time::point t0 = ompl::time::now();
+                    const ob::PlannerStatus status = ss->solve(timeLimit);
+                    totalTime += ompl::time::seconds(ompl::time::now() - t0);
+                    if (status != ob::PlannerStatus::EXACT_SOLUTION || !ss->haveExactSolutionPath())
+                        continue;
+                    const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
+                    bool ok = true;
+                    for (std::size_t i = 1; i < pts.size() && ok; ++i)
+                        ok = model->segmentValid(pts[i - 1], pts[i]);
+                    if (!ok)
+                        continue;
+                    ++exact;
+                    lengths.push_back(polylineLength(pts));
+                }
+                std::sort(lengths.begin(), lengths.end());
+                const std::size_t n = lengths.size();
+                const double med =
+                    n == 0 ? 0.0 : (n % 2 ? lengths[n / 2] : 0.5 * (lengths[n / 2 - 1] + lengths[n / 2]));
+                if (json)
+                {
+                    out.beginObject().field("world", world.name).field("file", file);
+                    out.key("query");
+                    writeQuery(out, query);
+                    out.field("planner", name).field("runs", runs).field("exact", exact);
+                    out.key("optimum");
+                    optimum.result.found ? out.value(optimum.result.length) : out.null();
+                    out.key("best_length");
+                    n ? out.value(lengths.front()) : out.null();
+                    out.key("median_length");
+                    n ? out.value(med) : out.null();
+                    out.key("median_gap_percent");
+                    n &&optimum.result.found ? out.value(100.0 * optimalityGap(med, optimum.result))
+                                             : out.null();
+                    out.field("mean_time", totalTime / static_cast<double>(runs)).endObject();
+                    continue;
+                }
+                std::ostringstream best, median, gap;
+                best << std::fixed << std::setprecision(4);
+                median << std::fixed << std::setprecision(4);
+                gap << std::fixed << std::setprecision(2);
+                if (lengths.empty())
+                {
+                    best << "-";
+                    median << "-";
+                    gap << "-";
+                }
+                else
+                {
+                    best << lengths.front();
+                    median << med;
+                    if (optimum.result.found)
+                        gap << 100.0 * optimalityGap(med, optimum.result) << "%";
+                    else
+                        gap << "-";
+                }
+                std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name << std::right
+                          << std::setw(4) << exact << "/" << std::left << std::setw(2) << runs << std::right
+                          << std::setw(12) << best.str() << std::setw(12) << median.str() << std::setw(12)
+                          << optText.str() << std::setw(12) << gap.str() << std::setw(11) << std::fixed
+                          << std::setprecision(3) << totalTime / static_cast<double>(runs) << "\n"
+                          << std::defaultfloat;
+            }
+        }
+        if (json)
+            out.endArray().endObject().finish();
+        return 0;
+    }
+} // namespace mhplan::cli

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan plan WORLD: one planner on one query; the path, its length, the exact optimum and the gap. */
+#include "mhplan/cli/Commands.h"
+
+#include "mhplan/cli/Args.h"
+#include "mhplan/cli/Help.h"
+#include "mhplan/cli/Json.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/draw/Svg.h"
+#include "mhplan/io/WorldIO.h"
+#include "mhplan/optimum/Optimum.h"
+#include "mhplan/registry/Registry.h"
+
+#include <ompl/util/Time.h>
+
+#include <iomanip>
+#include <iostream>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace mhplan::cli
+{
+    const CommandDoc &planDoc()
+    {
+        static const CommandDoc doc{
+            "plan WORLD [options]",
+            "plan one query of a world with one planner; print the path, its length, the exact optimum and "
+            "the gap",
+            "The path is checked with the exact segment model; the gap is reported only for an exact, "
+            "collision-free path of a world whose exact optimum is known.",
+            {{"WORLD", "a world file (.yaml, .map) or the name of a shipped world (see 'mhplan worlds')"}},
+            {options::query(),
+             options::start(),
+             options::goal(),
+             {"--planner", "NAME", "the planner (default RRTstar; see 'mhplan planners')"},
+             {"--time", "S", "time limit of solve() in seconds, > 0 (default 1)"},
+             options::seed(),
+             {"--set", "KEY=VALUE",
+              "set a planner parameter (repeatable; names, defaults and ranges: 'mhplan planners NAME')"},
+             {"--backend", "NAME",
+              "collision model: auto (default: the exact model of the world's type), analytic, fcl, grid or "
+              "hash"},
+             options::svg("the world, the query and the path"),
+             options::json("the run (world, query, planner parameters, status, length, optimum, gap, path)"),
+             {"--quiet", "", "leave out the list of the path's states (text output)"}},
+            {"plan bfo_case1 --planner SMA --time 2 --seed 7",
+             "plan lrsma_scenario1 --planner LRSMA --set population_size=40 --set iterations=200 --svg p.svg",
+             "plan gms_grid20 --planner ThetaStar --json --quiet"},
+            "0 exact collision-free path, 1 bad input, 2 internal error, 3 no exact or no collision-free "
+            "path"};
+        return doc;
+    }
+
+    int cmdPlan(const Argv &argv)
+    {
+        const Args args("plan", argv,
+                        {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg"},
+                         {"set"},
+                         {"json", "quiet"}});
+        checkOutputFile(args, "svg");
+        // The seed must be fixed before any OMPL random number generator exists.
+        const std::uint_fast32_t seed = seedFromArgs(args);
+        const World world = loadWorldArg(args);
+        const Query query = queryFromArgs(world, args);
+        const std::string plannerName = args.get("planner", "RRTstar");
+        const double timeLimit = args.number("time", 1.0);
+        if (!(timeLimit > 0.0))
+            throw InputError("mhplan plan: --time must be > 0 seconds (got " + args.get("time") + ")");
+        std::map<std::string, std::string> params;
+        for (const auto &kv : args.all("set"))
+            parseKeyValue(kv, params);
+        const bool json = args.has("json");
+
+        const CollisionModelPtr model =
+            makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
+        og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+        ob::PlannerPtr planner =
+            PlannerRegistry::builtin().create(plannerName, ss->getSpaceInformation(), params);
+        ss->setPlanner(planner);
+        ss->setup();
+
+        if (!json)
+        {
+            std::cout << "world:     " << world.name << " (" << world.type() << ", " << world.obstacleCount()
+                      << " obstacles, robot radius " << world.robotRadius << ")\n";
+            std::cout << "query:     " << query.name << " (" << query.start.x << ", " << query.start.y
+                      << ") -> (" << query.goal.x << ", " << query.goal.y << ")\n";
+            std::cout << "planner:   " << plannerName << "\n";
+            std::cout << "seed:      " << seed << "\n";
+            std::cout << "collision: " << model->name() << "\n";
+        }
+
+        const ompl::time::point t0 = ompl::time::now();
+        const ob::PlannerStatus status = ss->solve(timeLimit);
+        const double solveTime = ompl::time::seconds(ompl::time::now() - t0);
+        const bool havePath = ss->haveSolutionPath();
+        const std::vector<Vec2> pts = havePath ? pathPoints(ss->getSolutionPath()) : std::vector<Vec2>{};
+        bool collisionFree = havePath;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            collisionFree = collisionFree && model->segmentValid(pts[i - 1], pts[i]);
+        const double length = polylineLength(pts);
+        const OptimumOrReason optimum =
+            havePath ? optimumOrReason(world, query) : OptimumOrReason{OptimumResult{}, "no path"};
+        const bool exactPath = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
+        const bool withGap = optimum.result.found && exactPath && collisionFree;
+        const int code = status == ob::PlannerStatus::EXACT_SOLUTION && collisionFree ? 0 : 3;
+        if (args.has("svg") && havePath)
+            writeTextFile(
+                args.get("svg"),
+                worldSvg(world, &query, {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}));
+
+        if (json)
+        {
+            JsonWriter out(std::cout);
+            out.beginObject().field("command", "plan");
+            out.key("world");
+            writeWorldSummary(out, world);
+            out.key("query");
+            writeQuery(out, query);
+            out.field("planner", plannerName);
+            std::map<std::string, std::string> values;
+            planner->params().getParams(values);
+            out.key("parameters").beginObject();
+            for (const auto &kv : values)
+                out.field(kv.first, kv.second);
+            out.endObject();
+            out.field("seed", static_cast<unsigned long long>(seed))
+                .field("collision", model->name())
+                .field("time_limit", timeLimit)
+                .field("status", status.asString())
+                .field("exact", exactPath)
+                .field("solve_time", solveTime)
+                .field("valid", collisionFree);
+            out.key("length");
+            havePath ? out.value(length) : out.null();
+            out.key("optimum");
+            if (optimum.result.found)
+                out.beginObject()
+                    .field("length", optimum.result.length)
+                    .field("method", optimum.result.method)
+                    .endObject();
+            else
+                out.null();
+            out.field("optimum_reason", optimum.reason);
+            out.key("gap_percent");
+            withGap ? out.value(100.0 * optimalityGap(length, optimum.result)) : out.null();
+            out.key("path").points(pts);
+            out.key("svg");
+            args.has("svg") && havePath ? out.value(args.get("svg")) : out.null();
+            out.field("exit_code", code).endObject().finish();
+            return code;
+        }
+
+        std::cout << "status:    " << status.asString() << "\n";
+        std::cout << std::setprecision(6) << "time:      " << solveTime << " s\n";
+        if (!havePath)
+        {
+            std::cout << "no path\n";
+            return 3;
+        }
+        std::cout << std::setprecision(9) << "length:    " << length << "\n";
+        if (optimum.result.found)
+        {
+            std::cout << "optimum:   " << optimum.result.length << " (" << optimum.result.method << ")\n";
+            // A gap means something only for a path that reaches the goal and is collision-free.
+            if (withGap)
+                std::cout << std::setprecision(4)
+                          << "gap:       " << 100.0 * optimalityGap(length, optimum.result) << " %\n"
+                          << std::setprecision(9);
+            else
+                std::cout << "gap:       - ("
+                          << (exactPath ? "the path is not collision-free" : "no exact path") << ")\n";
+        }
+        else
+            std::cout << "optimum:   not available (" << optimum.reason << ")\n";
+        std::cout << "valid:     " << (collisionFree ? "yes" : "NO") << " (exact segment check)\n";
+        std::cout << "path:      " << pts.size() << " states\n";
+        if (!args.has("quiet"))
+            for (const auto &p : pts)
+                std::cout << "  " << p.x << " " << p.y << "\n";
+        if (args.has("svg"))
+            std::cout << "svg:       " << args.get("svg") << "\n";
+        return code;
+    }
+} // namespace mhplan::cli
