@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/MovingAIWorlds.h"
 
 #include "mhplan/collision/Collision.h"
 #include "mhplan/sim/Controllers.h"
@@ -261,6 +262,8 @@ namespace mhplan::bench
                 WorldSpec w;
                 if (n[i].IsScalar())
                     w.world = r.nonEmptyText(n[i], field);
+                else if (n[i].IsMap() && n[i]["map"].IsDefined())
+                    detail::readMovingAIWorld(r, n[i], field, w);
                 else
                 {
                     r.allowKeys(n[i], field, {"world", "queries", "generate", "name"});
@@ -296,14 +299,37 @@ namespace mhplan::bench
         }
     } // namespace
 
+    Query experimentQuery(const World &world, const Experiment &e)
+    {
+        if (e.scenLine == 0)
+            return world.query(e.query);
+        Query q;
+        q.name = e.query;
+        q.start = {e.startX, e.startY};
+        q.goal = {e.goalX, e.goalY};
+        return q;
+    }
+
+    std::string simulationDatabaseFile(const Campaign &campaign)
+    {
+        if (!campaign.simulationDatabase.empty())
+            return campaign.simulationDatabase;
+        if (campaign.worlds.empty())
+            return campaign.database;
+        const fs::path db(campaign.database);
+        fs::path sim = db.parent_path() / (db.stem().string() + "-sim" + db.extension().string());
+        return db.has_parent_path() ? sim.string() : sim.filename().string();
+    }
+
     Campaign parseCampaign(const std::string &text, const std::string &fileName,
                            const PlannerRegistry &registry)
     {
         const YAML::Node root = loadYamlMapping(text, fileName, "campaign file", "benchmarks/README.md");
         const YamlReader r(fileName);
         r.allowKeys(root, "",
-                    {"campaign", "database", "logs", "time_limit", "time_limit_kind", "memory_limit", "runs",
-                     "seed", "progress_interval", "planner_data", "collision", "worlds", "planners",
+                    {"campaign", "database", "simulation_database", "logs", "time_limit", "time_limit_kind",
+                     "memory_limit", "runs", "seed", "progress_interval", "planner_data", "collision", "worlds",
+                     "planners",
                      "simulations"});
         Campaign c;
         c.file = fileName;
@@ -354,6 +380,8 @@ namespace mhplan::bench
         c.database =
             root["database"].IsDefined() ? r.nonEmptyText(root["database"], "database") : c.name + ".db";
         c.logDir = root["logs"].IsDefined() ? r.nonEmptyText(root["logs"], "logs") : c.database + ".logs";
+        if (root["simulation_database"].IsDefined())
+            c.simulationDatabase = r.nonEmptyText(root["simulation_database"], "simulation_database");
         // A campaign may consist of simulations only; planning experiments need both worlds and planners.
         const bool simulations = root["simulations"].IsDefined() && !root["simulations"].IsNull();
         const bool planning = root["worlds"].IsDefined() || root["planners"].IsDefined() || !simulations;
@@ -453,6 +481,11 @@ namespace mhplan::bench
         for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
         {
             const WorldSpec &spec = campaign.worlds[wi];
+            if (!spec.scen.empty())
+            {
+                detail::appendMovingAIExperiments(campaign, spec, wi, locate, common.str(), names, out);
+                continue;
+            }
             std::string file;
             try
             {

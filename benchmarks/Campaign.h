@@ -6,6 +6,7 @@
 #define MHPLAN_BENCH_CAMPAIGN_H
 
 #include "mhplan/base/PlannerRegistry.h"
+#include "mhplan/base/World.h"
 #include "mhplan/bench/GeneratedWorlds.h"
 
 #include <cstdint>
@@ -44,6 +45,15 @@ namespace mhplan::bench
         std::vector<std::string> queries;
         /** \brief A world generated at campaign time (GeneratedWorlds.h; then \c world is empty). */
         GeneratedWorldSpec generated;
+        /** \brief A MovingAI benchmark set {map: FILE.map, scen: FILE.map.scen, ...} (then \c world is the
+            map and \c scen the scenario; each selected .scen problem is one experiment). */
+        std::string scen;
+        /** \brief Which .scen problems (ScenIO.h: buckets, every k-th, the first K per bucket). */
+        std::vector<int> scenBuckets;
+        unsigned int scenEvery{1};
+        unsigned int scenPerBucket{0};
+        /** \brief Line of the entry in the campaign file (1-based; 0 when built in code), for messages. */
+        int line{0};
     };
 
     /** \brief One controller configuration of a simulation experiment (Controllers.h). */
@@ -118,6 +128,10 @@ namespace mhplan::bench
         std::string collision{"auto"};
         /** \brief The SQLite database (relative paths are relative to the working directory). */
         std::string database;
+        /** \brief The database of the simulation experiments; empty: see simulationDatabaseFile(). Planner
+            Arena lists every column of the experiments table as a problem parameter, so planning and
+            simulation experiments in one database would show each other's columns as "all (aggregate)". */
+        std::string simulationDatabase;
         /** \brief Directory of the per-experiment .log files (default: the database path + ".logs"). */
         std::string logDir;
     };
@@ -138,6 +152,11 @@ namespace mhplan::bench
         return p.runs > 0 ? p.runs : c.runs;
     }
 
+    /** \brief Where the simulation experiments of \e campaign go: its \c simulationDatabase when given; else,
+        when the campaign has planning experiments too, \c database with "-sim" before its extension
+        (results/seeds.db -> results/seeds-sim.db); else \c database itself. */
+    std::string simulationDatabaseFile(const Campaign &campaign);
+
     /** \brief One (world, query) planning experiment or one scenario's simulation experiment. */
     struct Experiment
     {
@@ -150,6 +169,14 @@ namespace mhplan::bench
         std::string worldFile;
         std::string worldName;
         std::string query;
+        /** \brief For a MovingAI experiment: the .scen file, its line, bucket and optimum (cells), mhplan's
+            octile optimum of the problem (cells), and the start and goal (world coordinates); else line 0. */
+        std::string scenFile;
+        int scenLine{0};
+        int scenBucket{0};
+        double scenOptimum{0.0};
+        double octileOptimum{0.0};
+        double startX{0.0}, startY{0.0}, goalX{0.0}, goalY{0.0};
         /** \brief For a simulation experiment: its index in Campaign::simulations (else kNoSimulation). */
         std::size_t simulation{kNoSimulation};
         /** \brief For a simulation experiment: the scenario file and the scenario's name. */
@@ -163,6 +190,10 @@ namespace mhplan::bench
             query, planners, limits, runs, seeds); a log with another fingerprint is re-run. */
         std::string configHash;
     };
+
+    /** \brief The query of planning experiment \e e on its \e world: a MovingAI problem's start and goal,
+       else the world's query of that name. */
+    Query experimentQuery(const World &world, const Experiment &e);
 
     /** \brief Resolve a world argument to a file path (a shipped world's name or a path). */
     using WorldResolver = std::function<std::string(const std::string &)>;

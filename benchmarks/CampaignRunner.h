@@ -123,7 +123,9 @@ namespace mhplan::bench
 
     /** \brief Append the complete logs of \e experiments that the database does not hold yet (or holds
         from another configuration, which is replaced) with ompl_benchmark_statistics, then add their
-        solution paths to the table solution_paths(runid, idx, x, y). Returns the number of logs merged. */
+        solution paths to the table solution_paths(runid, idx, x, y). Planning experiments go to the
+        campaign's database, simulation experiments to simulationDatabaseFile(campaign) (the same file for a
+        campaign of simulations only). Returns the number of logs merged. */
     std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
                               const std::string &statisticsTool);
 } // namespace mhplan::bench

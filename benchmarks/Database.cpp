@@ -272,8 +272,10 @@ namespace mhplan::bench
         };
     } // namespace
 
-    std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
-                              const std::string &statisticsTool)
+    /** Append the complete logs of \e experiments to the database \e target (static: this file's own). */
+    static std::size_t mergeInto(const std::string &target, const Campaign &campaign,
+                                 const std::vector<Experiment> &experiments,
+                                 const std::string &statisticsTool)
     {
         struct Pending
         {
@@ -281,15 +283,15 @@ namespace mhplan::bench
             std::string log;
             std::string content;
         };
-        const fs::path dbPath(campaign.database);
+        const fs::path dbPath(target);
         if (dbPath.has_parent_path())
             fs::create_directories(dbPath.parent_path());
         // A hot journal of the target (a database written in place by an older mhplan and killed) is
         // rolled back by opening it once; the copy below is then a consistent database.
-        if (fs::exists(campaign.database + "-journal"))
-            Database(campaign.database).hasTable("experiments");
-        WorkFile work(campaign.database + ".merging");
-        work.copyFrom(campaign.database);
+        if (fs::exists(target + "-journal"))
+            Database(target).hasTable("experiments");
+        WorkFile work(target + ".merging");
+        work.copyFrom(target);
 
         std::vector<Pending> pending;
         long long maxBefore = 0;
@@ -336,15 +338,15 @@ namespace mhplan::bench
         if (pending.empty())
         {
             // Nothing to append: a new database is still created (with its mhplan_logs table).
-            if (!fs::exists(campaign.database))
-                work.commit(campaign.database);
+            if (!fs::exists(target))
+                work.commit(target);
             return 0;
         }
 
         std::vector<std::string> argv{statisticsTool, "-a", "-d", work.name()};
         for (const auto &p : pending)
             argv.push_back(p.log);
-        const std::string output = campaign.database + ".merge-output.txt";
+        const std::string output = target + ".merge-output.txt";
         const int rc = runProgram(argv, output);
         if (rc != 0)
             throw std::runtime_error(statisticsTool + " failed with exit code " + std::to_string(rc) + ":\n" +
@@ -365,7 +367,7 @@ namespace mhplan::bench
             }
             if (ids.size() != pending.size())
                 throw std::runtime_error(
-                    "database '" + campaign.database + "': expected " + std::to_string(pending.size()) +
+                    "database '" + target + "': expected " + std::to_string(pending.size()) +
                     " new experiments after the merge, found " + std::to_string(ids.size()));
             Database::Statement record(
                 db, "INSERT OR REPLACE INTO mhplan_logs VALUES (?, ?, ?, ?, datetime('now'))");
@@ -409,7 +411,20 @@ namespace mhplan::bench
             }
             db.exec("COMMIT");
         }
-        work.commit(campaign.database);
+        work.commit(target);
         return pending.size();
+    }
+
+    std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
+                              const std::string &statisticsTool)
+    {
+        const std::string simulations = simulationDatabaseFile(campaign);
+        if (simulations == campaign.database)
+            return mergeInto(campaign.database, campaign, experiments, statisticsTool);
+        std::vector<Experiment> planning, moving;
+        for (const Experiment &e : experiments)
+            (e.simulation == Experiment::kNoSimulation ? planning : moving).push_back(e);
+        return mergeInto(campaign.database, campaign, planning, statisticsTool) +
+               mergeInto(simulations, campaign, moving, statisticsTool);
     }
 } // namespace mhplan::bench

@@ -135,7 +135,7 @@ namespace mhplan::bench
         if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
         {
             const World world = loadWorld(all.front().worldFile);
-            validatePlanners(campaign, registry, world, world.query(all.front().query));
+            validatePlanners(campaign, registry, world, experimentQuery(world, all.front()));
         }
         if (!campaign.simulations.empty())
             validateControllers(campaign, registry);
@@ -176,10 +176,13 @@ namespace mhplan::bench
             checkWritableDirectory(campaign.logDir, "the logs to '" + campaign.logDir + "'");
         if (options.merge)
         {
-            const fs::path db = fs::absolute(campaign.database);
-            checkWritableDirectory(db.parent_path(), "the database '" + campaign.database + "'");
-            if (fs::is_directory(db))
-                throw InputError("the database '" + campaign.database + "' is a directory");
+            for (const std::string &file : {campaign.database, simulationDatabaseFile(campaign)})
+            {
+                const fs::path db = fs::absolute(file);
+                checkWritableDirectory(db.parent_path(), "the database '" + file + "'");
+                if (fs::is_directory(db))
+                    throw InputError("the database '" + file + "' is a directory");
+            }
         }
 
         if (options.run && !todo.empty())

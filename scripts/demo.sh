@@ -12,3 +12,6 @@ JOBS=$(nproc 2>/dev/null || echo 2)
 "$BUILD_DIR/mhplan" bench benchmarks/seeds.yaml --jobs "$JOBS" "$@"
 "$BUILD_DIR/mhplan" report results/seeds.db -o results/report >/dev/null
 echo "report: $(pwd)/results/report/index.html"
+# The simulation experiments are in their own database (Planner Arena: mhplan arena results/seeds-sim.db).
+"$BUILD_DIR/mhplan" report results/seeds-sim.db -o results/report-sim >/dev/null
+echo "simulations: $(pwd)/results/report-sim/index.html"

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # Install the Debian packages mhplan needs (only those missing), then configure and build out of source.
-# Idempotent and quiet when everything is present. Usage: scripts/setup.sh [BUILD_DIR]
+# Idempotent and quiet when everything is present. Usage: scripts/setup.sh [--arena] [BUILD_DIR]
+#   --arena  also OMPL's Planner Arena for 'mhplan arena' and its browser test (R's packages, Chromium,
+#            puppeteer-core; scripts/arena/install.sh), not installed by default.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+ARENA=0
+if [ "${1:-}" = "--arena" ]; then ARENA=1; shift; fi
 BUILD_DIR="${1:-${MHPLAN_BUILD_DIR:-build}}"
 
 PACKAGES=(
@@ -59,6 +63,10 @@ if [ "${MHPLAN_NO_ROS:-0}" != "1" ]; then
     $SUDO apt-get install -y -qq --no-install-recommends "${ros_missing[@]}" >/dev/null
     ros_installed=1
   fi
+fi
+
+if [ "$ARENA" = 1 ]; then
+  scripts/arena/install.sh --browser >/dev/null
 fi
 
 JOBS=$(nproc 2>/dev/null || echo 2)

@@ -183,9 +183,16 @@ TEST(SimulationCampaign, RowsCarryTheValuesTheSimulationReturns)
     EXPECT_EQ(summary.crashes, 0u);
     EXPECT_EQ(summary.mergedLogs, 2u);
 
-    const Sql sql(c.database);
-    // One experiment per scenario, in the same database as the planning experiment.
-    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments"), 2);
+    // Planning and simulation experiments in their own databases (sim.db and sim-sim.db), so that Planner
+    // Arena shows each kind's columns only: one experiment per scenario in the simulation database.
+    ASSERT_EQ(simulationDatabaseFile(c), (fs::path(c.database).parent_path() / "sim-sim.db").string());
+    const Sql planning(c.database);
+    EXPECT_EQ(planning.count("SELECT count(*) FROM experiments"), 1);
+    EXPECT_EQ(
+        planning.count("SELECT count(*) FROM experiments WHERE kind = 'planning' AND world = 'bfo_case1'"),
+        1);
+    const Sql sql(simulationDatabaseFile(c));
+    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments"), 1);
     const auto exp = sql.rows("SELECT name, scenario, robot_count, moving_obstacle_count, "
                               "reference_traversal_time_reduction_percent, kind, version, start_jitter "
                               "FROM experiments WHERE kind = 'simulation'");
@@ -196,8 +203,12 @@ TEST(SimulationCampaign, RowsCarryTheValuesTheSimulationReturns)
     EXPECT_EQ(exp[0][3], "0");
     EXPECT_DOUBLE_EQ(std::atof(exp[0][4].c_str()), 35.0);
     EXPECT_EQ(exp[0][6].rfind("OMPL 1.", 0), 0u) << exp[0][6];
-    EXPECT_EQ(sql.count("SELECT count(*) FROM experiments WHERE kind = 'planning' AND world = 'bfo_case1'"),
-              1);
+    // Neither database carries the other kind's experiment columns (Planner Arena's "Problem parameters").
+    const std::set<std::string> planningColumns = planning.columns("experiments");
+    for (const char *col : {"scenario", "robot_count", "start_jitter"})
+        EXPECT_EQ(planningColumns.count(col), 0u) << "planning experiments have the column " << col;
+    EXPECT_EQ(sql.columns("experiments").count("world_file"), 0u);
+    EXPECT_EQ(planningColumns.count("world_file"), 1u);
     // Planner Arena joins runs with experiments: no run property may repeat an experiment column.
     const std::set<std::string> expColumns = sql.columns("experiments");
     for (const std::string &col : sql.columns("runs"))
@@ -393,4 +404,22 @@ TEST(SimulationCampaign, AHangingRunIsKilledAndRecordedAsCrash)
     EXPECT_EQ(rows[1][2], "0");
     EXPECT_EQ(rows[1][3], "NULL");
     fs::remove_all(dir);
+}
+
+TEST(Campaign, SimulationsGoToTheirOwnDatabaseByDefault)
+{
+    const std::string sims = "simulations:\n  - {scenario: scenarios/mapf_2robots, controllers: [dapf]}\n";
+    const std::string planning = "worlds: [bfo_case1]\nplanners: [RRTstar]\n";
+    // Planning and simulation experiments: "-sim" before the extension, in the database's directory.
+    Campaign c = parseCampaign("campaign: both\ndatabase: results/both.db\n" + planning + sims, "both.yaml");
+    EXPECT_EQ(simulationDatabaseFile(c), "results/both-sim.db");
+    c.database = "plain.sqlite";
+    EXPECT_EQ(simulationDatabaseFile(c), "plain-sim.sqlite");
+    // Simulations only: one database, the campaign's.
+    c = parseCampaign("campaign: only\n" + sims, "only.yaml");
+    EXPECT_EQ(simulationDatabaseFile(c), "only.db");
+    // Named in the campaign file: used as it is.
+    c = parseCampaign("campaign: named\nsimulation_database: moving.db\n" + planning + sims, "named.yaml");
+    EXPECT_EQ(simulationDatabaseFile(c), "moving.db");
+    EXPECT_THROW(parseCampaign("simulation_database: ''\n" + planning + sims, "empty.yaml"), InputError);
 }

@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import comparisons, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
+from . import comparisons, movingai, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -491,6 +491,9 @@ def write_report(database_path, outdir, world_dir=None):
 
     if planning:
         parts.extend(scaling.scaling_section(database, planning, outdir, colors, notes, _table))
+
+    if planning:
+        parts.extend(movingai.section(database, planning, lambda r: _run_length(database, r), _table, _fmt))
 
     if moving:
         parts.extend(moving_worlds_section(database, moving, outdir, notes))

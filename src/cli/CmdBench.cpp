@@ -337,6 +337,11 @@ namespace mhplan::cli
                       << " -o REPORT_DIR; Planner Arena; or "
                       << "ompl_benchmark_statistics -d " << campaign.database << " -p (plots in "
                       << std::filesystem::path(campaign.database).replace_extension(".pdf").string() << ")\n";
+        const std::string simulations = mhplan::bench::simulationDatabaseFile(campaign);
+        if (options.merge && !campaign.simulations.empty() && simulations != campaign.database)
+            std::cout << "simulations: " << simulations
+                      << " (their own database: Planner Arena lists every experiment column as a problem "
+                         "parameter)\n";
         else if (options.shardCount > 1)
             std::cout << "database:    not built by a shard; after all shards: mhplan bench "
                       << args.positional()[0] << " --merge-only\n";

@@ -128,7 +128,7 @@ namespace mhplan::cli
                 totalIterations += std::stoul(iterations->second());
             const bool exact = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
             const double length = exact ? ss->getSolutionPath().length() / grid.cellSize() : 0.0;
-            const bool match = exact && std::fabs(length - p.optimal) <= std::max(1e-4, 1e-5 * p.optimal);
+            const bool match = exact && scenOptimumMatches(p.optimal, length);
             matched += match ? 1 : 0;
             if (json)
             {

@@ -24,6 +24,7 @@ namespace mhplan::cli
     int cmdScen(const Argv &argv);
     int cmdOptimum(const Argv &argv);
     int cmdSim(const Argv &argv);
+    int cmdArena(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */
     std::string environmentsDir();

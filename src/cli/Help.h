@@ -67,6 +67,7 @@ namespace mhplan::cli
     const CommandDoc &compareDoc();
     const CommandDoc &benchDoc();
     const CommandDoc &reportDoc();
+    const CommandDoc &arenaDoc();
     const CommandDoc &scenDoc();
     const CommandDoc &optimumDoc();
     const CommandDoc &simDoc();

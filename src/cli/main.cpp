@@ -36,6 +36,7 @@ namespace
             {"bench", {cmdBench, benchDoc}},
             {"scen", {cmdScen, scenDoc}},
             {"sim", {cmdSim, simDoc}},
+            {"arena", {cmdArena, arenaDoc}},
             {"planners", {cmdPlanners, plannersDoc}},
             {"controllers", {cmdControllers, controllersDoc}},
             {"scenarios", {cmdScenarios, scenariosDoc}},

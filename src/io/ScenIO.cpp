@@ -3,10 +3,12 @@
 
 #include "mhplan/io/GridIO.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace mhplan
@@ -107,6 +109,34 @@ namespace mhplan
         if (out.empty())
             throw InputError(path + ": the scenario has no problems");
         return out;
+    }
+
+    std::vector<ScenProblem> selectScenProblems(const std::vector<ScenProblem> &problems,
+                                                const ScenSelection &selection)
+    {
+        const unsigned int every = std::max(1u, selection.every);
+        std::map<int, std::pair<unsigned int, unsigned int>> seen; // bucket -> (problems seen, taken)
+        std::vector<ScenProblem> out;
+        for (const ScenProblem &p : problems)
+        {
+            if (!selection.buckets.empty() && std::find(selection.buckets.begin(), selection.buckets.end(),
+                                                        p.bucket) == selection.buckets.end())
+                continue;
+            auto &count = seen[p.bucket];
+            const bool take = count.first++ % every == 0 &&
+                              (selection.perBucket == 0 || count.second < selection.perBucket);
+            if (take)
+            {
+                ++count.second;
+                out.push_back(p);
+            }
+        }
+        return out;
+    }
+
+    bool scenOptimumMatches(double scenOptimal, double cells)
+    {
+        return std::fabs(cells - scenOptimal) <= std::max(1e-4, 1e-5 * scenOptimal);
     }
 
     std::vector<ScenProblem> loadMovingAIScen(const std::string &path, const OccupancyGrid &grid)

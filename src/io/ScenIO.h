@@ -26,6 +26,23 @@ namespace mhplan
     std::vector<ScenProblem> parseMovingAIScen(std::istream &in, const std::string &fileName,
                                                const OccupancyGrid &grid);
     std::vector<ScenProblem> loadMovingAIScen(const std::string &path, const OccupancyGrid &grid);
+
+    /** \brief Which problems of a scenario to use: those of \e buckets (empty: every bucket), in each bucket
+        every \e every-th problem in file order (1: all), of those the first \e perBucket (0: all). */
+    struct ScenSelection
+    {
+        std::vector<int> buckets;
+        unsigned int every{1};
+        unsigned int perBucket{0};
+    };
+    /** \brief The selected problems, in file order. */
+    std::vector<ScenProblem> selectScenProblems(const std::vector<ScenProblem> &problems,
+                                                const ScenSelection &selection);
+
+    /** \brief True when a .scen optimum (written with 6 significant digits in MovingAI's own files, in
+        full precision in others) equals an octile length \e cells within the format's precision: a
+        relative 1e-5 (twice the rounding of 6 significant digits), at least 1e-4 cells. */
+    bool scenOptimumMatches(double scenOptimal, double cells);
 } // namespace mhplan
 
 #endif
