@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace mhplan::test
 {
@@ -66,6 +67,8 @@ namespace mhplan::test
         while (fgets(buf.data(), buf.size(), pipe) != nullptr)
             out += buf.data();
         pclose(pipe);
+        std::remove(file.c_str());
+        std::remove(py.c_str());
         while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
             out.pop_back();
         return out;
