@@ -299,14 +299,24 @@ namespace mhplan::bench
         const YAML::Node root = loadYamlMapping(text, fileName, "campaign file", "benchmarks/README.md");
         const YamlReader r(fileName);
         r.allowKeys(root, "",
-                    {"campaign", "database", "logs", "time_limit", "memory_limit", "runs", "seed",
-                     "progress_interval", "planner_data", "collision", "worlds", "planners", "simulations"});
+                    {"campaign", "database", "logs", "time_limit", "time_limit_kind", "memory_limit", "runs",
+                     "seed", "progress_interval", "planner_data", "collision", "worlds", "planners",
+                     "simulations"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
                                               : fs::path(fileName).stem().string();
         if (root["time_limit"].IsDefined())
             c.timeLimit = r.number(root["time_limit"], "time_limit", 1e-3, 1e6);
+        if (root["time_limit_kind"].IsDefined())
+        {
+            const std::string kind = r.nonEmptyText(root["time_limit_kind"], "time_limit_kind");
+            if (kind != "wall" && kind != "cpu")
+                r.fail(root["time_limit_kind"], "time_limit_kind",
+                       "expected wall (elapsed seconds, OMPL's) or cpu (CPU seconds of the run), got '" +
+                           kind + "'");
+            c.cpuTimeLimit = kind == "cpu";
+        }
         if (root["memory_limit"].IsDefined())
             c.memoryLimit = r.number(root["memory_limit"], "memory_limit", 1.0, 1e9);
         if (root["runs"].IsDefined())
@@ -413,6 +423,8 @@ namespace mhplan::bench
         common << "time " << campaign.timeLimit << "\nmemory " << campaign.memoryLimit << "\nruns "
                << campaign.runs << "\nseed " << campaign.seed << "\ninterval " << campaign.progressInterval
                << "\ncollision " << campaign.collision << "\nplanner data " << campaign.plannerData << "\n";
+        if (campaign.cpuTimeLimit) // absent for wall-clock limits: older logs keep their fingerprints
+            common << "time limit kind cpu\n";
         for (const auto &p : campaign.planners)
         {
             common << "planner " << p.displayName << " " << p.planner;

@@ -79,6 +79,10 @@ namespace mhplan::bench
         int line{0};
     };
 
+    /** \brief With time_limit_kind: cpu, a run still ends after this many times its CPU limit (+ 10 s) of
+        wall-clock time. */
+    constexpr double kCpuLimitWallFactor = 10.0;
+
     /** \brief A parsed campaign file. */
     struct Campaign
     {
@@ -92,6 +96,11 @@ namespace mhplan::bench
         std::vector<SimulationSpec> simulations;
         /** \brief Seconds per run. */
         double timeLimit{1.0};
+        /** \brief What \c timeLimit bounds: false: wall-clock seconds (OMPL's maxTime); true
+            (time_limit_kind: cpu): CPU seconds of the run's process, so that time-bounded planners get the
+            same budget however loaded the machine is (the wall clock then only stops a run after
+            kCpuLimitWallFactor x timeLimit + 10 s). */
+        bool cpuTimeLimit{false};
         /** \brief MB per run (OMPL's termination condition checks the process's memory). */
         double memoryLimit{4096.0};
         /** \brief Runs per planner and experiment. */

@@ -33,6 +33,9 @@ namespace mhplan::bench
         bool run{true};
         /** \brief Append the finished logs to the campaign's database afterwards. */
         bool merge{true};
+        /** \brief Run more experiments at once than there are cores available (availableCores()); without
+            it runCampaign refuses, because time-limited planners would silently get a fraction of a core. */
+        bool oversubscribe{false};
         /** \brief Draw a progress bar on stderr (only when stderr is a terminal). */
         bool progressBar{true};
         /** \brief Where progress lines and the summary go when there is no bar (may be null). */
@@ -59,11 +62,44 @@ namespace mhplan::bench
         double wallSeconds{0.0};    ///< whole call
         double workerSeconds{0.0};  ///< sum over experiments of their processes' wall time
         double solveSeconds{0.0};   ///< sum of the planners' solve times (OMPL's "time" of each run)
+        double cpuSeconds{0.0};     ///< sum of the runs' CPU times (column cpu_time)
         double mergeSeconds{0.0};   ///< building the database
         std::vector<std::string> errors;
         /** \brief (worker + merge - solve) / (worker + merge): time outside solve calls. */
         double overheadFraction() const;
     };
+
+    /** \brief The cores this process may use: its CPU affinity mask (which honours taskset, cgroup cpusets
+        and Slurm's task binding), and inside a Slurm job no more than the CPUs allocated to it
+        (SLURM_CPUS_PER_TASK, else SLURM_JOB_CPUS_PER_NODE). At least 1. */
+    unsigned int availableCores();
+
+    /** \brief Refuse (InputError naming --jobs and --oversubscribe) or, when \e allow, warn on \e warn
+        (may be null) when \e concurrent experiment processes exceed \e cores. */
+    void checkOversubscription(unsigned int concurrent, unsigned int cores, bool allow, std::ostream *warn);
+
+    /** \brief Where an experiment stands (mhplan bench --status). */
+    enum class ExperimentState
+    {
+        Complete, ///< its log is complete with the current fingerprint
+        Missing,  ///< never run, or its log is stale (another fingerprint) or unfinished
+        Running,  ///< an experiment process on this host is running it, or one on another host started it
+        Failed    ///< its process failed, or was killed (the marker of a dead process is left)
+    };
+
+    /** \brief The state of \e experiment and why (e.g. "exit code 4 on node3", "started on node2 by
+        process 123"). */
+    ExperimentState experimentState(const Campaign &campaign, const Experiment &experiment, std::string &why);
+
+    /** \brief "complete", "missing", "running", "failed". */
+    const char *stateName(ExperimentState state);
+
+    /** \brief The markers the scheduler keeps next to an experiment's log: LOG.running (host and process
+        of the experiment in flight) and LOG.failed (why its last attempt failed). */
+    std::string runningMarker(const Campaign &campaign, const Experiment &experiment);
+    std::string failedMarker(const Campaign &campaign, const Experiment &experiment);
+    /** \brief This machine's host name (as the markers record it). */
+    std::string currentHostName();
 
     /** \brief Run (the shard of) a campaign and merge its logs. Throws InputError for a bad campaign
         (unknown planner or parameter, missing world) before any work starts. */

@@ -4,6 +4,7 @@
 #include "mhplan/base/World.h"
 
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include <poll.h>
 #include <signal.h>
@@ -15,6 +16,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -25,6 +27,14 @@ namespace mhplan::bench::detail
     double secondsSince(Clock::time_point t0)
     {
         return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+
+    double processCpuSeconds()
+    {
+        timespec ts{};
+        if (::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0)
+            return 0.0;
+        return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
     }
 
     std::string encodeMap(const std::map<std::string, std::string> &m)
@@ -222,6 +232,14 @@ namespace mhplan::bench::detail
         out.elapsed = std::min(secondsSince(last), out.killed ? watchdog : 1e9);
         out.runSeconds = secondsSince(runStart);
         return out;
+    }
+
+    void seedRunProcess(std::uint32_t seed)
+    {
+        const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        ompl::RNG::setSeed(seed);
+        ompl::msg::setLogLevel(level);
     }
 
     /** The end of a run process: run \e body; an exception is reported on \e fd as an 'X' message

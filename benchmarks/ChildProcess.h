@@ -9,6 +9,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -19,6 +20,9 @@ namespace mhplan::bench::detail
     using Clock = std::chrono::steady_clock;
 
     double secondsSince(Clock::time_point t0);
+
+    /** CPU seconds this process has used so far, all its threads (CLOCK_PROCESS_CPUTIME_ID). */
+    double processCpuSeconds();
 
     /** Separators of the payload encodings (never part of a property name or value). */
     constexpr char kFieldSep = '\x1f';
@@ -110,6 +114,13 @@ namespace mhplan::bench::detail
     /** The end of a run process: run \e body; an exception is reported on \e fd as an 'X' message (exit
         code 3), then the process exits without running destructors. */
     [[noreturn]] void finishRunChild(int fd, const std::function<void()> &body);
+
+    /** Seed OMPL's random number generators for the run process about to plan or simulate: every generator
+        the run uses is made after this call, so the run is determined by \e seed. The campaign process has
+        usually made generators already (parseCampaign builds each planner once to check its parameters), and
+        OMPL 1.5.2's setSeed then logs that "random number generation already started" although it reseeds
+        its seed generator all the same; that message is muted here. */
+    void seedRunProcess(std::uint32_t seed);
 
     /** Run \e check in a throw-away child process; the message it returns (empty = fine) is thrown here as
         InputError. A crash of the child is a runtime_error naming \e what. */

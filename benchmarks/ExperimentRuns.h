@@ -26,6 +26,17 @@ namespace mhplan::bench::detail
     /** Numbers as OMPL writes them (full precision; "nan"/"inf" become NULL in the database). */
     std::string num(double v);
 
+    /** Summed over an experiment's runs: OMPL's "time" (wall-clock seconds of solve) and "cpu time". */
+    struct SolveTimes
+    {
+        double wall{0.0};
+        double cpu{0.0};
+    };
+
+    /** Wall-clock bound of a run of \e c: its time limit, or with CPU-time limits the safety bound
+        kCpuLimitWallFactor x limit + 10 s. */
+    double runWallBound(const Campaign &c);
+
     /** Everything a planning experiment's processes share (built before the children are forked; nothing
         here owns a random number generator). */
     struct ExperimentSetup
@@ -47,7 +58,7 @@ namespace mhplan::bench::detail
     /** Experiment process of a planning experiment: every planner of the campaign, every run in its own
         child process; then the log and the sidecars. Reports each run to \e progressFd; returns the exit
         code of the process. */
-    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, double &solveSeconds);
+    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, SolveTimes &times);
 
     /** Everything the run processes of a simulation experiment share. */
     struct SimulationSetup
@@ -64,7 +75,7 @@ namespace mhplan::bench::detail
 
     /** Experiment process of a simulation experiment: every controller, every run, each in its own
         process; then the log (OMPL's format and writer) and an empty path sidecar. */
-    int runSimulationExperiment(SimulationSetup &xs, int progressFd, double &solveSeconds);
+    int runSimulationExperiment(SimulationSetup &xs, int progressFd, SolveTimes &times);
 
     /** The data of one planner (or controller) across all its runs, gathered from several processes. */
     struct PlannerRecord

@@ -11,6 +11,7 @@
 #include <ompl/tools/benchmark/Benchmark.h>
 
 #include <algorithm>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -75,11 +76,34 @@ namespace mhplan::bench::detail
         {
             if (recorder_)
                 recorder_->begin();
-            const ompl::base::PlannerStatus status = inner_->solve(ptc);
+            const double cpu0 = cpuClock_ ? cpuClock_() : 0.0;
+            ompl::base::PlannerStatus status;
+            if (cpuClock_ && cpuLimit_ > 0.0)
+            {
+                // The CPU clock is read in OMPL's checking thread every 1/100 of the limit (at most 10 ms),
+                // not in the planner's loop (reading it is a system call).
+                const auto clock = cpuClock_;
+                const double limit = cpuLimit_;
+                const ompl::base::PlannerTerminationCondition cpu(
+                    [clock, cpu0, limit] { return clock() - cpu0 >= limit; }, std::min(0.01, limit / 100.0));
+                status = inner_->solve(ompl::base::plannerOrTerminationCondition(ptc, cpu));
+            }
+            else
+                status = inner_->solve(ptc);
+            cpuSeconds_ = cpuClock_ ? cpuClock_() - cpu0 : 0.0;
             if (recorder_)
                 recorder_->end();
             return status;
         }
+        /** Measure the CPU time of every solve() with \e clock (seconds, monotone), and end solve() when
+            it has used \e limit CPU seconds (0: no CPU limit; the caller's condition still applies). */
+        void setCpuClock(std::function<double()> clock, double limit)
+        {
+            cpuClock_ = std::move(clock);
+            cpuLimit_ = limit;
+        }
+        /** CPU seconds the last solve() used (0 without a clock). */
+        double cpuSeconds() const { return cpuSeconds_; }
         /** Times solve() for \e recorder (Improvements.h). */
         void setRecorder(ImprovementRecorder *recorder) { recorder_ = recorder; }
         void clear() override
@@ -105,6 +129,9 @@ namespace mhplan::bench::detail
         ompl::base::PlannerPtr inner_;
         bool plannerData_;
         ImprovementRecorder *recorder_{nullptr};
+        std::function<double()> cpuClock_;
+        double cpuLimit_{0.0};
+        double cpuSeconds_{0.0};
     };
 } // namespace mhplan::bench::detail
 

@@ -61,9 +61,8 @@ namespace mhplan::bench::detail
                 [&]()
                 {
                     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                    // The seed must be set before any random number generator exists in this process; the
-                    // campaign process and the experiment process never allocate one.
-                    ompl::RNG::setSeed(seed);
+                    // The seed before any random number generator of the run exists (ChildProcess.h).
+                    seedRunProcess(seed);
                     const Campaign &c = *xs.campaign;
                     // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
                     // generator (its path simplifier's).
@@ -72,6 +71,8 @@ namespace mhplan::bench::detail
                     ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
                     inner->setName(spec.displayName);
                     auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
+                    // CPU time of every run; with time_limit_kind: cpu also its limit.
+                    planner->setCpuClock(processCpuSeconds, c.cpuTimeLimit ? c.timeLimit : 0.0);
                     ss->setPlanner(planner);
                     ImprovementRecorder improvements;
                     planner->setRecorder(&improvements);
@@ -125,6 +126,7 @@ namespace mhplan::bench::detail
                             }
                             run["run index INTEGER"] = std::to_string(runIndex);
                             run["run seed INTEGER"] = std::to_string(seed);
+                            run["cpu time REAL"] = num(planner->cpuSeconds());
                             run["exact optimum length REAL"] = num(xs.optimum);
                             if (!p->getPlannerProgressProperties().empty())
                             {
@@ -168,8 +170,8 @@ namespace mhplan::bench::detail
                             payload["\x01improvements"] = encodeImprovements(better);
                             sendMessage(fd, 'R', runIndex, encodeMap(payload));
                         });
-                    const ot::Benchmark::Request req(c.timeLimit, c.memoryLimit, 1, c.progressInterval, false,
-                                                     false, false);
+                    const ot::Benchmark::Request req(runWallBound(c), c.memoryLimit, 1, c.progressInterval,
+                                                     false, false, false);
                     benchmark.benchmark(req);
                     const auto &pd = benchmark.getRecordedExperimentData().planners;
                     if (!pd.empty() && !pd[0].runsProgressData.empty())
@@ -192,6 +194,11 @@ namespace mhplan::bench::detail
                 });
         }
     } // namespace
+
+    double runWallBound(const Campaign &c)
+    {
+        return c.cpuTimeLimit ? kCpuLimitWallFactor * c.timeLimit + 10.0 : c.timeLimit;
+    }
 
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs)
@@ -217,7 +224,7 @@ namespace mhplan::bench::detail
         xs.optimumSeconds = secondsSince(t0);
     }
 
-    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, double &solveSeconds)
+    int runPlanningExperiment(ExperimentSetup &xs, int progressFd, SolveTimes &times)
     {
         const Campaign &c = *xs.campaign;
         const Experiment &e = *xs.experiment;
@@ -225,9 +232,9 @@ namespace mhplan::bench::detail
         const ompl::time::point start = ompl::time::now();
         WorkerInfo info;
         std::vector<PlannerRecord> records(c.planners.size());
-        solveSeconds = 0.0;
+        times = SolveTimes{};
         const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
-        const double watchdog = 2.0 * c.timeLimit + 20.0;
+        const double watchdog = 2.0 * runWallBound(c) + 20.0;
 
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {
@@ -269,7 +276,10 @@ namespace mhplan::bench::detail
                             rec.have[m.index] = true;
                             const auto t = props.find("time REAL");
                             if (t != props.end())
-                                solveSeconds += std::atof(t->second.c_str());
+                                times.wall += std::atof(t->second.c_str());
+                            const auto cpu = props.find("cpu time REAL");
+                            if (cpu != props.end())
+                                times.cpu += std::atof(cpu->second.c_str());
                             reportRun(progressFd, e.index, props["status ENUM"] == std::to_string(crashCode),
                                       pi, runSeconds);
                         }
@@ -289,7 +299,7 @@ namespace mhplan::bench::detail
                 crash["exact optimum length REAL"] = num(xs.optimum);
                 rec.runs[k] = crash;
                 rec.have[k] = true;
-                solveSeconds += outcome.elapsed;
+                times.wall += outcome.elapsed;
                 reportRun(progressFd, e.index, true, pi, outcome.runSeconds);
                 reportCrash(e.name, "planner " + spec.displayName, k, outcome, watchdog);
             }

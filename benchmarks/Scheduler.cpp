@@ -180,8 +180,13 @@ namespace mhplan::bench
         }
 
         if (options.run && !todo.empty())
+            checkOversubscription(static_cast<unsigned int>(std::min<std::size_t>(options.jobs, todo.size())),
+                                  availableCores(), options.oversubscribe, msg);
+
+        if (options.run && !todo.empty())
         {
             removeStaleTemporaryFiles(campaign.logDir);
+            const std::string host = currentHostName();
             std::vector<std::size_t> slotRuns(slots, 0);
             for (const Experiment *e : todo)
             {
@@ -201,6 +206,7 @@ namespace mhplan::bench
                 bool ended{false};
                 double workerSeconds{0.0};
                 double solveSeconds{0.0};
+                double cpuSeconds{0.0};
                 std::size_t runsSeen{0};
             };
             std::map<pid_t, Active> active;
@@ -221,7 +227,7 @@ namespace mhplan::bench
                             try
                             {
                                 const Clock::time_point w0 = Clock::now();
-                                double solve = 0.0;
+                                SolveTimes solve;
                                 if (e->simulation == Experiment::kNoSimulation)
                                 {
                                     ExperimentSetup xs;
@@ -244,7 +250,7 @@ namespace mhplan::bench
                                 }
                                 std::ostringstream done;
                                 done.precision(17);
-                                done << secondsSince(w0) << " " << solve;
+                                done << secondsSince(w0) << " " << solve.wall << " " << solve.cpu;
                                 sendMessage(fd, 'e', e->index, done.str());
                             }
                             catch (const std::exception &ex)
@@ -260,7 +266,9 @@ namespace mhplan::bench
                         },
                         others);
                     const pid_t pid = process->pid();
-                    active[pid] = Active{e, std::move(process), false, 0.0, 0.0, 0};
+                    // For --status: which process runs the experiment (left behind if it is killed).
+                    std::ofstream(runningMarker(campaign, *e), std::ios::trunc) << host << " " << pid << "\n";
+                    active[pid] = Active{e, std::move(process), false, 0.0, 0.0, 0.0, 0};
                 }
                 std::vector<pollfd> pfds;
                 std::vector<pid_t> pids;
@@ -295,7 +303,7 @@ namespace mhplan::bench
                                 summary.crashes += crashed ? 1 : 0;
                             }
                             else if (m.type == 'e')
-                                in >> a.workerSeconds >> a.solveSeconds;
+                                in >> a.workerSeconds >> a.solveSeconds >> a.cpuSeconds;
                         });
                 }
                 bar.update(expDone, runsDone, summary.crashes);
@@ -315,20 +323,26 @@ namespace mhplan::bench
                     runsDone += expected > a.runsSeen ? expected - a.runsSeen : 0;
                     const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
                                     logIsComplete(logFile(campaign, *a.experiment), a.experiment->configHash);
+                    std::error_code ec;
+                    fs::remove(runningMarker(campaign, *a.experiment), ec);
                     if (ok)
                     {
                         ++summary.completed;
                         summary.workerSeconds += a.workerSeconds;
                         summary.solveSeconds += a.solveSeconds;
+                        summary.cpuSeconds += a.cpuSeconds;
+                        fs::remove(failedMarker(campaign, *a.experiment), ec);
                     }
                     else
                     {
                         ++summary.failed;
-                        summary.errors.push_back("experiment " + a.experiment->name + " failed (" +
-                                                 (WIFSIGNALED(status)
-                                                      ? "signal " + std::to_string(WTERMSIG(status))
-                                                      : "exit code " + std::to_string(WEXITSTATUS(status))) +
+                        const std::string why = WIFSIGNALED(status)
+                                                    ? "signal " + std::to_string(WTERMSIG(status))
+                                                    : "exit code " + std::to_string(WEXITSTATUS(status));
+                        summary.errors.push_back("experiment " + a.experiment->name + " failed (" + why +
                                                  "); re-run the campaign to retry it");
+                        std::ofstream(failedMarker(campaign, *a.experiment), std::ios::trunc)
+                            << why << " on " << host << "\n";
                     }
                     if (msg && !(options.progressBar && ::isatty(2)))
                         *msg << "[" << expDone << "/" << todo.size() << "] " << a.experiment->name

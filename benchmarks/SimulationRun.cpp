@@ -123,7 +123,7 @@ namespace mhplan::bench
                         ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
                         // As for planners: the seed before any random number generator exists in this
                         // process (plan-then-follow controllers run OMPL planners).
-                        ompl::RNG::setSeed(seed);
+                        seedRunProcess(seed);
                         Scenario scenario = xs.scenario;
                         applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
                         const ControllerPtr controller = makeController(spec.controller, *xs.registry);
@@ -136,19 +136,22 @@ namespace mhplan::bench
                         sendMessage(fd, 'C', 0, encodeMap(common));
                         Simulation sim(std::move(scenario), controller, seed);
                         const Clock::time_point t0 = Clock::now();
+                        const double cpu0 = processCpuSeconds();
                         const SimulationResult result = sim.run();
+                        const double cpu = processCpuSeconds() - cpu0;
                         const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
                         ot::Benchmark::RunProperties run = simulationProperties(result, wall);
                         run["run index INTEGER"] = std::to_string(runIndex);
                         run["run seed INTEGER"] = std::to_string(seed);
                         run["start seed INTEGER"] = std::to_string(startSeed);
+                        run["cpu time REAL"] = num(cpu);
                         sendMessage(fd, 'R', runIndex, encodeMap(run));
                         sendMessage(fd, 'E', runIndex, "");
                     });
             }
         } // namespace
 
-        int runSimulationExperiment(SimulationSetup &xs, int progressFd, double &solveSeconds)
+        int runSimulationExperiment(SimulationSetup &xs, int progressFd, SolveTimes &times)
         {
             const Campaign &c = *xs.campaign;
             const Experiment &e = *xs.experiment;
@@ -156,7 +159,7 @@ namespace mhplan::bench
             const Clock::time_point t0 = Clock::now();
             const ompl::time::point start = ompl::time::now();
             const double watchdog = spec.wallLimit;
-            solveSeconds = 0.0;
+            times = SolveTimes{};
             std::vector<PlannerRecord> records(spec.controllers.size());
             for (std::size_t ci = 0; ci < spec.controllers.size(); ++ci)
             {
@@ -179,7 +182,8 @@ namespace mhplan::bench
                                 auto props = decodeMap(m.payload);
                                 rec.runs[m.index] = props;
                                 rec.have[m.index] = true;
-                                solveSeconds += std::atof(props["time REAL"].c_str());
+                                times.wall += std::atof(props["time REAL"].c_str());
+                                times.cpu += std::atof(props["cpu time REAL"].c_str());
                                 reportRun(progressFd, e.index, false, xs.slotBase + ci, runSeconds);
                             }
                         },
@@ -190,7 +194,7 @@ namespace mhplan::bench
                     crash["start seed INTEGER"] = std::to_string(startSeed);
                     rec.runs[k] = crash;
                     rec.have[k] = true;
-                    solveSeconds += outcome.elapsed;
+                    times.wall += outcome.elapsed;
                     reportRun(progressFd, e.index, true, xs.slotBase + ci, outcome.runSeconds);
                     reportCrash(e.name, "controller " + ctl.displayName, k, outcome, watchdog);
                 }

@@ -3,6 +3,7 @@
    and exact motion checks, on the 12-circle world of [BFO] case 2 and on generated worlds of 1,000 and
    10,000 circles. Query points and segments
    are drawn before the timed loops. Run: mhplan_microbench --benchmark_min_time=0.2 */
+#include "mhplan/base/Geometry.h"
 #include "mhplan/collision/Collision.h"
 #include "mhplan/collision/FclCollision.h"
 #include "mhplan/collision/Problem.h"
@@ -187,6 +188,25 @@ namespace
                                          }
                                      });
     }
+
+    /** \brief Simplicity check of an n-vertex star-shaped polygon (issue 19: an O(n log n) sweep; the
+        all-pairs test it replaced took 5 s at 20,000 vertices). */
+    void polygonSimplicity(benchmark::State &st)
+    {
+        const auto n = static_cast<std::size_t>(st.range(0));
+        std::mt19937 rng(1);
+        std::uniform_real_distribution<double> radius(0.9, 1.0);
+        std::vector<Vec2> poly;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+            const double r = radius(rng);
+            poly.push_back({r * std::cos(t), r * std::sin(t)});
+        }
+        for (auto _ : st)
+            benchmark::DoNotOptimize(polygonIsSimple(poly));
+        st.SetComplexityN(static_cast<benchmark::IterationCount>(n));
+    }
 } // namespace
 
 int main(int argc, char **argv)
@@ -202,6 +222,11 @@ int main(int argc, char **argv)
         for (CollisionBackend b : {CollisionBackend::Analytic, CollisionBackend::FCL, CollisionBackend::Hash})
             registerCase(std::make_shared<Case>(w, b, queries));
     }
+    benchmark::RegisterBenchmark("polygonIsSimple", polygonSimplicity)
+        ->RangeMultiplier(10)
+        ->Range(20, 200000)
+        ->Unit(benchmark::kMicrosecond)
+        ->Complexity(benchmark::oNLogN);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -33,7 +33,38 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+# The ROS 1 component (src/ros, docs/ros.md): Debian's ROS 1 core and messages, installed unless
+# MHPLAN_NO_ROS=1 (about 80 packages, ~12 s to install from a warm apt cache). The build turns MHPLAN_ROS on
+# when it finds them.
+ROS_PACKAGES=(
+  libroscpp-dev libgeometry-msgs-dev libnav-msgs-dev libstd-msgs-dev libros-rosgraph-msgs-dev
+  python3-rosmaster python3-roslaunch python3-rostopic
+)
+ros_installed=0
+if [ "${MHPLAN_NO_ROS:-0}" != "1" ]; then
+  ros_missing=()
+  for p in "${ROS_PACKAGES[@]}"; do
+    status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+    [ "$status" = "installed" ] || ros_missing+=("$p")
+  done
+  if [ ${#ros_missing[@]} -gt 0 ]; then
+    echo "setup: installing the ROS 1 packages (src/ros; MHPLAN_NO_ROS=1 skips them): ${ros_missing[*]}"
+    SUDO=""
+    if [ "$(id -u)" -ne 0 ]; then
+      command -v sudo >/dev/null 2>&1 || { echo "setup: need root (or sudo) to install: ${ros_missing[*]}" >&2; exit 1; }
+      SUDO="sudo"
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    $SUDO apt-get update -qq >/dev/null
+    $SUDO apt-get install -y -qq --no-install-recommends "${ros_missing[@]}" >/dev/null
+    ros_installed=1
+  fi
+fi
+
 JOBS=$(nproc 2>/dev/null || echo 2)
+if [ "$ros_installed" = "1" ] && [ -f "$BUILD_DIR/CMakeCache.txt" ]; then
+  cmake "$BUILD_DIR" -DMHPLAN_ROS=ON >/dev/null # configured before ROS was there
+fi
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi

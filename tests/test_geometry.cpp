@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace mhplan;
@@ -126,4 +127,111 @@ TEST(Geometry, RectangleCorners)
     EXPECT_NEAR(r[0].x, 0.0, 1e-12);
     EXPECT_NEAR(r[0].y, -std::sqrt(2.0), 1e-12);
     EXPECT_NEAR(std::abs(signedArea2(r)), 8.0, 1e-12);
+}
+
+namespace
+{
+    /** \brief The definition of a simple polygon, checked over all pairs of edges: no repeated vertex, no two
+        non-adjacent edges meet, adjacent edges do not fold back, non-zero area. The oracle for the
+        O(n log n) sweep behind polygonIsSimple (which uses it only below 17 vertices). */
+    bool simpleByAllPairs(const std::vector<mhplan::Vec2> &p)
+    {
+        using mhplan::Vec2;
+        const std::size_t n = p.size();
+        if (n < 3)
+            return false;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                if (p[i] == p[j])
+                    return false;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+            {
+                const Vec2 &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+                if (j == i + 1 || (i == 0 && j == n - 1))
+                {
+                    const Vec2 &s = j == i + 1 ? b : a;
+                    const Vec2 &u = j == i + 1 ? a : b;
+                    const Vec2 &v = j == i + 1 ? d : c;
+                    if (mhplan::cross(u - s, v - s) == 0.0 && mhplan::dot(u - s, v - s) > 0.0)
+                        return false;
+                }
+                else if (mhplan::segmentsIntersect(a, b, c, d))
+                    return false;
+            }
+        return std::abs(mhplan::signedArea2(p)) > 0.0;
+    }
+
+    std::vector<mhplan::Vec2> starPolygon(std::mt19937 &rng, std::size_t n, double rmin, double rmax)
+    {
+        std::uniform_real_distribution<double> radius(rmin, rmax);
+        std::vector<mhplan::Vec2> p;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+            const double r = radius(rng);
+            p.push_back({r * std::cos(t), r * std::sin(t)});
+        }
+        return p;
+    }
+} // namespace
+
+// Issue 19: the simplicity check is an O(n log n) sweep; it gives the all-pairs answer on polygons that are
+// simple, that cross, and that touch exactly (integer grids: collinear edges, vertices on edges, verticals).
+TEST(Geometry, PolygonSimplicitySweepAgreesWithAllPairs)
+{
+    std::mt19937 rng(20261201);
+    int simple = 0, notSimple = 0;
+    for (int trial = 0; trial < 3000; ++trial)
+    {
+        const std::size_t n = 17 + static_cast<std::size_t>(trial % 40);
+        std::vector<mhplan::Vec2> p;
+        switch (trial % 4)
+        {
+        case 0: // star-shaped: simple
+            p = starPolygon(rng, n, 0.5, 1.0);
+            break;
+        case 1: // star-shaped with one vertex thrown far: usually crosses
+        {
+            p = starPolygon(rng, n, 0.5, 1.0);
+            std::uniform_real_distribution<double> u(-2.0, 2.0);
+            p[static_cast<std::size_t>(trial) % n] = {u(rng), u(rng)};
+            break;
+        }
+        case 2: // vertices on a small integer grid: exact touching, collinearity, vertical edges
+        {
+            std::uniform_int_distribution<int> c(0, 6);
+            for (std::size_t i = 0; i < n; ++i)
+                p.push_back({static_cast<double>(c(rng)), static_cast<double>(c(rng))});
+            break;
+        }
+        default: // rectilinear star on a grid: simple or touching at exactly representable points
+        {
+            std::uniform_int_distribution<int> r(2, 4);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const double t = 2.0 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+                p.push_back({std::round(r(rng) * std::cos(t) * 2.0), std::round(r(rng) * std::sin(t) * 2.0)});
+            }
+            break;
+        }
+        }
+        const bool expected = simpleByAllPairs(p);
+        ASSERT_EQ(mhplan::polygonIsSimple(p), expected) << "trial " << trial;
+        (expected ? simple : notSimple) += 1;
+    }
+    // Both answers occur often enough for the comparison to mean something.
+    EXPECT_GT(simple, 700);
+    EXPECT_GT(notSimple, 700);
+}
+
+// Issue 19: a 20,000-vertex polygon is checked (the sweep; the all-pairs test took 5 s); one vertex moved
+// across the polygon makes it non-simple.
+TEST(Geometry, LargePolygonSimplicity)
+{
+    std::mt19937 rng(7);
+    std::vector<mhplan::Vec2> p = starPolygon(rng, 20000, 0.9, 1.0);
+    EXPECT_TRUE(mhplan::polygonIsSimple(p));
+    p[5000] = {0.0, -1.5}; // outside the bottom of the polygon: both new edges cross it
+    EXPECT_FALSE(mhplan::polygonIsSimple(p));
 }

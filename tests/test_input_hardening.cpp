@@ -8,7 +8,9 @@
 #include "mhplan/sim/ScenarioIO.h"
 
 #include <ompl/base/ScopedState.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
@@ -190,6 +192,48 @@ TEST(PlannerSetup, UnsupportedSpaceThrowsAndLogs)
         ASSERT_FALSE(log.errors.empty()) << name << " logged no error";
         EXPECT_NE(log.errors.back().find(name), std::string::npos) << log.errors.back();
     }
+}
+
+// Issue 19: BIT* is registered as "BITstar" and its messages name it so (OMPL 1.5.2 renames the k-nearest
+// BIT* it constructs "kBITstar"). Only messages that OMPL prints inside setup() itself, such as its notice
+// that no objective was given, still carry OMPL's name.
+TEST(PlannerSetup, BitStarMessagesNameBitStar)
+{
+    auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 1.0);
+    auto ss = std::make_shared<ompl::geometric::SimpleSetup>(space);
+    ss->setStateValidityChecker([](const ompl::base::State *) { return true; });
+    ompl::base::ScopedState<> start(space), goal(space);
+    start = std::vector<double>{0.1, 0.1};
+    goal = std::vector<double>{0.9, 0.9};
+    ss->setStartAndGoalStates(start, goal);
+    ss->setOptimizationObjective(
+        std::make_shared<ompl::base::PathLengthOptimizationObjective>(ss->getSpaceInformation()));
+    ss->setPlanner(mhplan::PlannerRegistry::builtin().create("BITstar", ss->getSpaceInformation()));
+    EXPECT_EQ(ss->getPlanner()->getName(), "BITstar");
+    struct AllMessages : ompl::msg::OutputHandler
+    {
+        void log(const std::string &text, ompl::msg::LogLevel, const char *, int) override
+        {
+            messages.push_back(text);
+        }
+        std::vector<std::string> messages;
+    } log;
+    ompl::msg::OutputHandler *previous = ompl::msg::getOutputHandler();
+    const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+    ompl::msg::useOutputHandler(&log);
+    ompl::msg::setLogLevel(ompl::msg::LOG_DEBUG);
+    ss->solve(ompl::base::IterationTerminationCondition(50));
+    ompl::msg::useOutputHandler(previous);
+    ompl::msg::setLogLevel(level);
+    ASSERT_FALSE(log.messages.empty());
+    bool named = false;
+    for (const std::string &m : log.messages)
+    {
+        EXPECT_EQ(m.find("kBITstar"), std::string::npos) << m;
+        named = named || m.find("BITstar:") != std::string::npos;
+    }
+    EXPECT_TRUE(named) << "no message names BITstar";
 }
 
 // Issue 19: resource limits are stated and enforced with a message, not run into.

@@ -556,6 +556,90 @@ TEST(OptimumRandom, PolygonWorlds)
     checkAgainstRoadmap(Kind::Polygons, "polygons");
 }
 
+namespace
+{
+    /** \brief \e w's admissible space for its disc robot as a point-robot world of polygons: each circle,
+        grown by the robot radius, replaced by the regular k-gon inscribed in it (\e scale 1) or
+        circumscribed about it (\e scale 1 / cos(pi / k)); the box shrunk by the robot radius. */
+    World circlesAsPolygons(const World &w, int k, bool circumscribed)
+    {
+        World out = box10(0.0);
+        out.name = w.name;
+        out.bounds = w.bounds.inflated(-w.robotRadius);
+        const double scale = circumscribed ? 1.0 / std::cos(kPi / k) : 1.0;
+        for (const Circle &c : w.circles)
+        {
+            std::vector<Vec2> v;
+            const double r = (c.radius + w.robotRadius) * scale;
+            for (int i = 0; i < k; ++i)
+                v.push_back({c.center.x + r * std::cos(2.0 * kPi * i / k),
+                             c.center.y + r * std::sin(2.0 * kPi * i / k)});
+            out.polygons.push_back(makePolygon(v));
+        }
+        return out;
+    }
+
+    /** \brief The graph nodes for \e w's regular polygons: their vertices moved out from the centre by a
+        relative 1e-9, so that a path running along an edge keeps a clearance above the rounding of the exact
+        segment test (which may judge a segment lying on an obstacle's edge to enter it by 1e-16). The lengths
+        change by less than 1e-8 relative. */
+    std::vector<Vec2> nodesAround(const World &w)
+    {
+        std::vector<Vec2> out;
+        for (const auto &p : w.polygons)
+        {
+            Vec2 c{0.0, 0.0};
+            for (const Vec2 &v : p.vertices)
+                c = c + v;
+            c = c * (1.0 / static_cast<double>(p.vertices.size()));
+            for (const Vec2 &v : p.vertices)
+                out.push_back(c + (v - c) * (1.0 + 1e-9));
+        }
+        return out;
+    }
+} // namespace
+
+// Issue 19, the lower-side oracle: on random circle worlds (point and disc robots) the optimum lies between
+// the shortest paths among inscribed polygons (a larger free space: a lower bound) and among circumscribed
+// ones (a smaller free space: an upper bound where it has a path), both found by a brute-force visibility
+// graph that knows nothing of arcs or tangents. A too-short optimum fails the lower bound.
+TEST(OptimumRandom, CircleWorldsBetweenInscribedAndCircumscribedPolygons)
+{
+    const int k = 32;
+    int bracketed = 0;
+    double worst = 0.0;
+    for (int i = 0; i < 30; ++i)
+    {
+        const World w = randomWorld(Kind::Circles, i);
+        const Query &q = w.queries.front();
+        const OptimumResult r = computeOptimum(w, q);
+        const World inner = circlesAsPolygons(w, k, false);
+        const World outer = circlesAsPolygons(w, k, true);
+        const double lower = bruteVisibility(inner, q, nodesAround(inner));
+        const double upper = bruteVisibility(outer, q, nodesAround(outer));
+        if (!r.found)
+        {
+            EXPECT_FALSE(std::isfinite(upper))
+                << "world " << i << ": no optimum, yet a path around the polygons";
+            continue;
+        }
+        ASSERT_TRUE(std::isfinite(lower)) << "world " << i;
+        EXPECT_GE(r.length, lower * (1.0 - 1e-8))
+            << "world " << i << ": optimum shorter than the lower bound";
+        if (std::isfinite(upper))
+        {
+            EXPECT_LE(r.length, upper * (1.0 + 1e-8)) << "world " << i;
+            // The bounds close in as k grows: the k-gons are within (1 / cos(pi / k) - 1) of the circles.
+            EXPECT_LT(upper / lower - 1.0, 0.01) << "world " << i;
+            worst = std::max(worst, upper / lower - 1.0);
+            ++bracketed;
+        }
+    }
+    EXPECT_GE(bracketed, 20);
+    std::cout << "[optimum] circles between " << k << "-gons: " << bracketed
+              << " of 30 worlds bracketed, widest " << worst << "\n";
+}
+
 TEST(OptimumRandom, MixedWorlds)
 {
     checkAgainstRoadmap(Kind::Mixed, "mixed");

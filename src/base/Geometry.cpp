@@ -2,7 +2,10 @@
 #include "mhplan/base/Geometry.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <limits>
+#include <set>
 
 namespace mhplan
 {
@@ -115,38 +118,167 @@ namespace mhplan
         return sign != 0 && polygonIsSimple(poly);
     }
 
+    namespace
+    {
+        /** \brief Lexicographic order of points (x, then y): the sweep's event order. */
+        bool lexLess(const Vec2 &a, const Vec2 &b)
+        {
+            return a.x < b.x || (a.x == b.x && a.y < b.y);
+        }
+
+        /** \brief Edges i and j of an n-gon touch in a way a simple polygon forbids: non-adjacent edges must
+            not meet at all, adjacent edges (sharing one vertex) must not fold back onto each other. */
+        bool edgesConflict(const std::vector<Vec2> &poly, std::size_t i, std::size_t j)
+        {
+            const std::size_t n = poly.size();
+            if (i > j)
+                std::swap(i, j);
+            const Vec2 &a = poly[i];
+            const Vec2 &b = poly[(i + 1) % n];
+            const Vec2 &c = poly[j];
+            const Vec2 &d = poly[(j + 1) % n];
+            const bool next = j == i + 1;
+            const bool wrap = i == 0 && j == n - 1;
+            if (next || wrap)
+            {
+                const Vec2 &shared = next ? b : a;
+                const Vec2 &p = next ? a : b;
+                const Vec2 &q = next ? d : c;
+                return orientation(p, shared, q) == 0 && dot(p - shared, q - shared) > 0.0;
+            }
+            return segmentsIntersect(a, b, c, d);
+        }
+
+        /** \brief The all-pairs test: O(n^2), used for small polygons. */
+        bool anyEdgesConflictBruteForce(const std::vector<Vec2> &poly)
+        {
+            const std::size_t n = poly.size();
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = i + 1; j < n; ++j)
+                    if (edgesConflict(poly, i, j))
+                        return true;
+            return false;
+        }
+
+        /** \brief Shamos-Hoey sweep (docs/conventions.md, "Polygon simplicity"): O(n log n). The edges
+            crossing a vertical sweep line are kept ordered by height; an intersection exists if and only if
+            two edges that become neighbours in that order at some event intersect, so each edge is tested
+            only against its neighbours when it is inserted and its two neighbours are tested against each
+            other when it is removed. Vertices are unique (checked before), so two edges sharing an end point
+            are adjacent edges of the polygon. The order compares two edges at the larger of their left end
+            points' abscissae (the moment the later one enters), a vertical edge by its lower end; ties are
+            broken by slope and then by index so that the order is strict. The intersection tests themselves
+            are the exact orientation predicates of segmentsIntersect. */
+        bool anyEdgesConflictSweep(const std::vector<Vec2> &poly)
+        {
+            const std::size_t n = poly.size();
+            struct Edge
+            {
+                Vec2 l, r; // lexicographically smaller and larger end point
+            };
+            std::vector<Edge> edges(n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const Vec2 &a = poly[i];
+                const Vec2 &b = poly[(i + 1) % n];
+                edges[i] = lexLess(a, b) ? Edge{a, b} : Edge{b, a};
+            }
+            const auto heightAt = [](const Edge &e, double x)
+            {
+                if (e.l.x == e.r.x)
+                    return e.l.y;
+                if (x <= e.l.x)
+                    return e.l.y;
+                if (x >= e.r.x)
+                    return e.r.y;
+                return e.l.y + (e.r.y - e.l.y) * ((x - e.l.x) / (e.r.x - e.l.x));
+            };
+            const auto below = [&](std::size_t i, std::size_t j)
+            {
+                if (i == j)
+                    return false;
+                const Edge &a = edges[i];
+                const Edge &b = edges[j];
+                const double x = std::max(a.l.x, b.l.x);
+                const double ya = heightAt(a, x);
+                const double yb = heightAt(b, x);
+                if (ya != yb)
+                    return ya < yb;
+                // Same height at x: the one that rises less slowly is below; vertical edges rise fastest.
+                const Vec2 da = a.r - a.l;
+                const Vec2 db = b.r - b.l;
+                const double c = cross(da, db); // > 0: b turns left of a, so a is below
+                if (c != 0.0)
+                    return c > 0.0;
+                return i < j;
+            };
+            std::set<std::size_t, decltype(below)> active(below);
+            std::vector<std::set<std::size_t, decltype(below)>::iterator> where(n, active.end());
+
+            // Events: (point, kind, edge); at equal points insertions (kind 0) come before removals (kind 1),
+            // so edges meeting at a point are compared while both are in the order.
+            struct Event
+            {
+                Vec2 p;
+                int kind;
+                std::size_t edge;
+            };
+            std::vector<Event> events;
+            events.reserve(2 * n);
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                events.push_back({edges[i].l, 0, i});
+                events.push_back({edges[i].r, 1, i});
+            }
+            std::sort(events.begin(), events.end(),
+                      [](const Event &a, const Event &b)
+                      {
+                          if (a.p.x != b.p.x)
+                              return a.p.x < b.p.x;
+                          if (a.kind != b.kind)
+                              return a.kind < b.kind;
+                          return a.p.y < b.p.y;
+                      });
+            for (const Event &ev : events)
+            {
+                if (ev.kind == 0)
+                {
+                    const auto [it, inserted] = active.insert(ev.edge);
+                    if (!inserted)
+                        return true; // unreachable with a strict order; conservative
+                    where[ev.edge] = it;
+                    if (std::next(it) != active.end() && edgesConflict(poly, ev.edge, *std::next(it)))
+                        return true;
+                    if (it != active.begin() && edgesConflict(poly, ev.edge, *std::prev(it)))
+                        return true;
+                }
+                else
+                {
+                    const auto it = where[ev.edge];
+                    if (it != active.begin() && std::next(it) != active.end() &&
+                        edgesConflict(poly, *std::prev(it), *std::next(it)))
+                        return true;
+                    active.erase(it);
+                }
+            }
+            return false;
+        }
+    } // namespace
+
     bool polygonIsSimple(const std::vector<Vec2> &poly)
     {
         const std::size_t n = poly.size();
         if (n < 3)
             return false;
-        for (std::size_t i = 0; i < n; ++i)
-            if (poly[i] == poly[(i + 1) % n])
+        // A repeated vertex (consecutive or not) makes a polygon non-simple; after this check two edges
+        // sharing an end point are adjacent edges.
+        std::vector<Vec2> sorted(poly);
+        std::sort(sorted.begin(), sorted.end(), lexLess);
+        for (std::size_t i = 1; i < n; ++i)
+            if (sorted[i] == sorted[i - 1])
                 return false;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            const Vec2 &a = poly[i];
-            const Vec2 &b = poly[(i + 1) % n];
-            for (std::size_t j = i + 1; j < n; ++j)
-            {
-                const Vec2 &c = poly[j];
-                const Vec2 &d = poly[(j + 1) % n];
-                const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
-                if (adjacent)
-                {
-                    // Adjacent edges share one vertex; they must not fold back onto each other.
-                    const Vec2 &shared = (j == i + 1) ? b : a;
-                    const Vec2 &p = (j == i + 1) ? a : b;
-                    const Vec2 &q = (j == i + 1) ? d : c;
-                    if (orientation(p, shared, q) == 0 && dot(p - shared, q - shared) > 0.0)
-                        return false;
-                    continue;
-                }
-                if (segmentsIntersect(a, b, c, d))
-                    return false;
-            }
-        }
-        return std::abs(signedArea2(poly)) > 0.0;
+        const bool conflict = n <= 16 ? anyEdgesConflictBruteForce(poly) : anyEdgesConflictSweep(poly);
+        return !conflict && std::abs(signedArea2(poly)) > 0.0;
     }
 
     bool pointInPolygon(const Vec2 &p, const std::vector<Vec2> &poly)

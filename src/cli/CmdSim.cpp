@@ -10,6 +10,7 @@
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/draw/SimRender.h"
 #include "mhplan/sim/Simulation.h"
+#include "mhplan/sim/SimulationReport.h"
 #include "mhplan/draw/Svg.h"
 
 #include <ompl/util/Time.h>
@@ -25,15 +26,6 @@ namespace mhplan::cli
 {
     namespace
     {
-        std::string metres(double v, int precision = 3)
-        {
-            if (std::isinf(v))
-                return "-";
-            std::ostringstream s;
-            s << std::fixed << std::setprecision(precision) << v;
-            return s.str();
-        }
-
         int positiveInt(const Args &args, const std::string &name, long long fallback, long long lo,
                         long long hi)
         {
@@ -145,34 +137,7 @@ namespace mhplan::cli
         Simulation sim(scenario, controller, static_cast<std::uint32_t>(seed));
         const SimulationResult r = sim.run();
 
-        std::cout << "\n"
-                  << std::left << std::setw(10) << "robot" << std::setw(11) << "status" << std::right
-                  << std::setw(11) << "time [s]" << std::setw(11) << "length [m]" << std::setw(14)
-                  << "clearance [m]" << std::setw(13) << "robot d [m]" << std::setw(12) << "collisions"
-                  << "\n";
-        for (const RobotResult &rr : r.robots)
-            std::cout << std::left << std::setw(10) << rr.name << std::setw(11) << toString(rr.status)
-                      << std::right << std::setw(11) << metres(rr.traversalTime, 2) << std::setw(11)
-                      << metres(rr.pathLength) << std::setw(14) << metres(rr.minObstacleClearance)
-                      << std::setw(13) << metres(rr.minRobotDistance) << std::setw(12) << rr.collisions
-                      << "\n";
-
-        std::cout << "\nrobots:     " << r.done << " done, " << r.stuck << " stuck, " << r.unfinished
-                  << " unfinished (of " << r.robots.size() << ")\n";
-        std::cout << "flowtime:   " << metres(r.flowtime, 3) << " s" << (r.allDone ? "" : " (lower bound)")
-                  << "\n";
-        std::cout << "makespan:   " << metres(r.makespan, 3) << " s" << (r.allDone ? "" : " (lower bound)")
-                  << "\n";
-        std::cout << "collisions: " << r.collisions() << " (static " << r.staticCollisions << ", moving "
-                  << r.movingCollisions << ", robot-robot " << r.robotCollisions << ")\n";
-        std::cout << "min robot distance:       " << metres(r.minRobotDistance) << " m\n";
-        std::cout << "min obstacle clearance:   " << metres(r.minObstacleClearance) << " m\n";
-        std::cout << "simulated:  " << metres(r.simulatedTime, 2) << " s in " << r.steps << " steps ("
-                  << r.robotSteps << " robot-steps)\n";
-        std::cout << "wall time:  " << std::setprecision(4) << r.wallTime << " s (" << std::setprecision(0)
-                  << std::fixed << (r.wallTime > 0.0 ? static_cast<double>(r.robotSteps) / r.wallTime : 0.0)
-                  << " robot-steps/s)\n"
-                  << std::defaultfloat;
+        printSimulationReport(std::cout, r);
         if (!r.counters.empty())
         {
             std::cout << "counters:  ";

@@ -26,6 +26,29 @@
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
+namespace
+{
+    /** \brief OMPL's BIT* (k-nearest, its default), named "BITstar" in its messages, benchmark logs and
+        databases. OMPL 1.5.2 reserves "BITstar" for the r-disc variant: its constructor and setup() rename
+        the k-nearest one "kBITstar" (setup() with a warning), so users who asked for "BITstar" read messages
+        about a planner they never named. The name is handed to OMPL as it expects during setup() and given
+        back afterwards (messages printed inside setup() itself, such as the notice that no objective was
+        given, keep OMPL's name); the planner itself is unchanged. */
+    class NamedBITstar : public ompl::geometric::BITstar
+    {
+      public:
+        explicit NamedBITstar(const ompl::base::SpaceInformationPtr &si) : BITstar(si) { setName("BITstar"); }
+
+        void setup() override
+        {
+            if (getUseKNearest())
+                setName("kBITstar");
+            BITstar::setup();
+            setName("BITstar");
+        }
+    };
+} // namespace
+
 namespace mhplan
 {
     void registerOmplPlanners(PlannerRegistry &r)
@@ -44,10 +67,9 @@ namespace mhplan
         r.add({"PRMstar", "ompl", "Asymptotically optimal PRM* (Karaman & Frazzoli 2011)",
                allocatorFor<og::PRMstar>()});
         r.add({"LazyPRMstar", "ompl", "Lazy PRM* (Bohlin & Kavraki 2000)", allocatorFor<og::LazyPRMstar>()});
-        // OMPL reserves the name "BITstar" for the r-disc variant and renames its default k-nearest one.
         r.add({"BITstar", "ompl", "Batch informed trees, k-nearest (Gammell et al. 2015)",
                [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
-               { return std::make_shared<og::BITstar>(si, "kBITstar"); }});
+               { return std::make_shared<NamedBITstar>(si); }});
         r.add({"ABITstar", "ompl", "Advanced BIT* (Strub & Gammell 2020)", allocatorFor<og::ABITstar>()});
         r.add({"AITstar", "ompl", "Adaptively informed trees (Strub & Gammell 2020)",
                allocatorFor<og::AITstar>()});

@@ -81,6 +81,21 @@ namespace mhplan
         return {};
     }
 
+    Command unicycleCommand(const RobotSpec &spec, double heading, const Vec2 &v, double dt)
+    {
+        Command u;
+        const double speed = std::min(norm(v), spec.maxSpeed);
+        if (speed > 1e-12 && std::isfinite(speed))
+        {
+            const double error = wrapAngle(std::atan2(v.y, v.x) - heading);
+            const double maxTurn = spec.maxTurnRate * dt;
+            u.unicycle = true;
+            u.turn = std::clamp(error, -maxTurn, maxTurn);
+            u.forward = speed * std::max(0.0, std::cos(error - u.turn));
+        }
+        return u;
+    }
+
     void Controller::setParameter(const std::string &name, const std::string &value)
     {
         throw InputError("controller '" + this->name() + "' has no parameter '" + name + "' (value '" +
@@ -311,8 +326,48 @@ namespace mhplan
         }
     }
 
+    void Simulation::addTask(std::size_t i, const Task &task)
+    {
+        RobotSpec &s = scenario_.robots.at(i);
+        s.tasks.push_back(task);
+        if (started_ && robots_.at(i).status == RobotStatus::Done)
+            robots_[i].status = RobotStatus::Waiting;
+    }
+
+    void Simulation::setJoinTime(std::size_t i, double t)
+    {
+        RobotSpec &s = scenario_.robots.at(i);
+        if (started_ && robots_.at(i).joined)
+            throw std::logic_error("Simulation::setJoinTime: robot '" + s.name + "' has joined already");
+        s.joinTime = t;
+    }
+
+    void Simulation::observe(double time, const std::vector<RobotState> &robots,
+                             const std::vector<Vec2> &obstaclePos, const std::vector<Vec2> &obstacleVel)
+    {
+        if (robots.size() != scenario_.robots.size() ||
+            obstaclePos.size() != scenario_.movingObstacles.size() ||
+            obstacleVel.size() != obstaclePos.size())
+            throw std::invalid_argument(
+                "Simulation::observe: expected " + std::to_string(scenario_.robots.size()) + " robots and " +
+                std::to_string(scenario_.movingObstacles.size()) + " moving obstacles");
+        time_ = time;
+        robots_ = robots;
+        obstaclePos_ = obstaclePos;
+        obstacleVel_ = obstacleVel;
+        if (!observed_)
+        {
+            observed_ = started_ = ended_ = true;
+            result_ = SimulationResult{};
+            result_.robots.resize(robots.size());
+            controller_->reset(*this, rng_);
+        }
+    }
+
     bool Simulation::step()
     {
+        if (observed_)
+            return false;
         if (!started_)
             start();
         if (ended_)
@@ -339,16 +394,17 @@ namespace mhplan
             ++moving;
             const RobotSpec &s = scenario_.robots[i];
             r.traversalTime += dt;
-            const Vec2 v = commands_[i].velocity;
-            const double speed = std::min(norm(v), s.maxSpeed);
+            const Command u = commands_[i].unicycle
+                                  ? commands_[i]
+                                  : unicycleCommand(s, r.heading, commands_[i].velocity, dt);
             Vec2 next = r.position;
-            if (speed > 1e-12 && std::isfinite(speed))
+            if (u.unicycle)
             {
-                const double error = wrapAngle(std::atan2(v.y, v.x) - r.heading);
                 const double maxTurn = s.maxTurnRate * dt;
-                const double turn = std::clamp(error, -maxTurn, maxTurn);
+                const double turn = std::isfinite(u.turn) ? std::clamp(u.turn, -maxTurn, maxTurn) : 0.0;
+                const double forward =
+                    std::isfinite(u.forward) ? std::clamp(u.forward, 0.0, s.maxSpeed) : 0.0;
                 r.heading = wrapAngle(r.heading + turn);
-                const double forward = speed * std::max(0.0, std::cos(error - turn));
                 next = r.position + Vec2(std::cos(r.heading), std::sin(r.heading)) * (forward * dt);
             }
             bool blocked = false;

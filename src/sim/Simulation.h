@@ -161,7 +161,24 @@ namespace mhplan
     struct Command
     {
         Vec2 velocity;
+        /** \brief When true, the command is already a unicycle command (a ROS geometry_msgs/Twist, src/ros):
+            the robot turns by \c turn radians (clamped to maxTurnRate * dt), then drives \c forward m/s
+            (clamped to [0, maxSpeed]) along its new heading; \c velocity is ignored. */
+        bool unicycle{false};
+        /** \brief Unicycle command: the turn of this step (radians). */
+        double turn{0.0};
+        /** \brief Unicycle command: the forward speed (m/s). */
+        double forward{0.0};
     };
+
+    struct RobotSpec;
+
+    /** \brief The unicycle motion the simulator makes from the world-frame command \e velocity for a robot
+        at \e heading in one step of \e dt (see Command): the turn toward the command's direction, at most
+        maxTurnRate * dt, and the forward speed min(|v|, maxSpeed) max(0, cos(remaining error)). Returned as
+        a unicycle Command (a zero command when |v| is zero or not finite: the robot neither turns nor
+        drives). */
+    Command unicycleCommand(const RobotSpec &spec, double heading, const Vec2 &velocity, double dt);
 
     class Simulation;
 
@@ -286,6 +303,20 @@ namespace mhplan
         /** \brief Same for every point of the segment [a, b] (exact). */
         bool staticSegmentFree(const Vec2 &a, const Vec2 &b, double r) const;
 
+        /** \brief Hooks for running the simulator and its controllers as separate processes (src/ros).
+            The world side: append a task to robot \e i during the run (a robot that was done waits for it,
+            and is done again when it reaches it); move the join time of a robot that has not joined yet
+            (a robot that joins when its controller starts). Throw std::out_of_range for a bad index and
+            std::logic_error for a robot that has joined already (setJoinTime). */
+        void addTask(std::size_t i, const Task &task);
+        void setJoinTime(std::size_t i, double t);
+        /** \brief The controller side: set the dynamic state from outside (the time, every robot's state,
+            the moving obstacles' positions and velocities), so that a controller computes a robot's command
+            from observed states. The first call resets the controller. An observed simulation is a mirror:
+            step() and run() do nothing on it (they return false / the empty result). */
+        void observe(double time, const std::vector<RobotState> &robots, const std::vector<Vec2> &obstaclePos,
+                     const std::vector<Vec2> &obstacleVel);
+
       private:
         void start();
         /** \brief Positions of moving obstacles and goals at time_. */
@@ -306,7 +337,7 @@ namespace mhplan
         std::vector<Command> commands_;
         std::vector<Vec2> obstaclePos_, obstacleVel_;
         double time_{0.0};
-        bool started_{false}, ended_{false};
+        bool started_{false}, ended_{false}, observed_{false};
         // Bookkeeping (implementation).
         std::vector<double> progressBest_, progressSince_;
         std::vector<std::uint8_t> staticContact_, movingContact_;
