@@ -30,8 +30,8 @@ else
 fi
 
 command -v clang++ >/dev/null || { echo "scripts/fuzz.sh: needs clang++ (apt-get install clang)" >&2; exit 1; }
-LAUNCHER=()
-command -v ccache >/dev/null && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+. scripts/ccache-env.sh
+LAUNCHER=("${MHPLAN_LAUNCHER[@]}")
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DMHPLAN_BUILD_FUZZERS=ON -DMHPLAN_BUILD_TESTS=OFF -DMHPLAN_BUILD_BENCHMARKS=OFF "${LAUNCHER[@]}" >/dev/null

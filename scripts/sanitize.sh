@@ -5,18 +5,19 @@
 # the run (UBSan halts on the first error). Usage: scripts/sanitize.sh [BUILD_DIR] (default build-sanitize).
 # Known leaks of OMPL 1.5.2 itself are suppressed, each documented, in tests/sanitizer/lsan.supp.
 # Excluded: the tests that only configure and build (consumer_package, layering_*): they check the build,
-# not memory, and the normal pass (scripts/test.sh) runs them.
+# not memory; and the tests of outside systems (ROS nodes, a Slurm cluster, GNU parallel, Planner Arena in a
+# browser), whose own processes are not mhplan's code. The normal pass (scripts/test.sh) runs them all.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${1:-${MHPLAN_SANITIZE_BUILD_DIR:-build-sanitize}}"
 JOBS=$(nproc 2>/dev/null || echo 2)
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
-LAUNCHER=()
-command -v ccache >/dev/null && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+. scripts/ccache-env.sh
+LAUNCHER=("${MHPLAN_LAUNCHER[@]}")
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
     -DCMAKE_CXX_FLAGS="$FLAGS" -DCMAKE_EXE_LINKER_FLAGS="$FLAGS" -DCMAKE_SHARED_LINKER_FLAGS="$FLAGS" \
-    -DMHPLAN_BUILD_BENCHMARKS=OFF "${LAUNCHER[@]}" >/dev/null
+    -DMHPLAN_BUILD_BENCHMARKS=OFF -DMHPLAN_ROS=OFF "${LAUNCHER[@]}" >/dev/null
 fi
 if ! cmake --build "$BUILD_DIR" -j "$JOBS" > "$BUILD_DIR/build-output.txt" 2>&1; then
   grep -E "error|warning" "$BUILD_DIR/build-output.txt" | head -50 >&2 || true
@@ -29,4 +30,4 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressi
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # The sanitizer build runs about 3-5 times slower: tests with wall-clock limits scale them by this factor.
 export MHPLAN_TEST_TIME_SCALE=4
-ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 1800 -E '^(consumer_package|layering_)'
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 1800 -E '^(consumer_package|layering_|ros_|slurm_|gnu_parallel|arena)'

@@ -12,7 +12,7 @@ PACKAGES=(
   libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev
   ompl-demos sqlite3 libsqlite3-dev libgif-dev
-  python3-matplotlib python3-numpy python3-yaml
+  python3-matplotlib python3-numpy python3-yaml ccache
 )
 
 missing=()
@@ -65,8 +65,10 @@ JOBS=$(nproc 2>/dev/null || echo 2)
 if [ "$ros_installed" = "1" ] && [ -f "$BUILD_DIR/CMakeCache.txt" ]; then
   cmake "$BUILD_DIR" -DMHPLAN_ROS=ON >/dev/null # configured before ROS was there
 fi
+# The compiler cache (scripts/ccache-env.sh): a rebuild of an unchanged file, in any clone, is a cache hit.
+. scripts/ccache-env.sh
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
-  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${MHPLAN_LAUNCHER[@]}" >/dev/null
 fi
 # Show compiler diagnostics (the build is warning-free), not the progress lines.
 if ! cmake --build "$BUILD_DIR" -j "$JOBS" > "$BUILD_DIR/build-output.txt" 2>&1; then

@@ -270,6 +270,16 @@ namespace mhplan
         const std::size_t n = poly.size();
         if (n < 3)
             return false;
+        // Small polygons: the all-pairs test, which allocates nothing (it also runs inside collision
+        // queries, through polygonIsConvex).
+        if (n <= 16)
+        {
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = i + 1; j < n; ++j)
+                    if (poly[i] == poly[j])
+                        return false;
+            return !anyEdgesConflictBruteForce(poly) && std::abs(signedArea2(poly)) > 0.0;
+        }
         // A repeated vertex (consecutive or not) makes a polygon non-simple; after this check two edges
         // sharing an end point are adjacent edges.
         std::vector<Vec2> sorted(poly);
@@ -277,8 +287,7 @@ namespace mhplan
         for (std::size_t i = 1; i < n; ++i)
             if (sorted[i] == sorted[i - 1])
                 return false;
-        const bool conflict = n <= 16 ? anyEdgesConflictBruteForce(poly) : anyEdgesConflictSweep(poly);
-        return !conflict && std::abs(signedArea2(poly)) > 0.0;
+        return !anyEdgesConflictSweep(poly) && std::abs(signedArea2(poly)) > 0.0;
     }
 
     bool pointInPolygon(const Vec2 &p, const std::vector<Vec2> &poly)

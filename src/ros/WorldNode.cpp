@@ -30,6 +30,8 @@ namespace mhplan::ros1
     namespace
     {
         constexpr double kNotYet = std::numeric_limits<double>::max();
+        /** \brief Wall seconds without the command of a moving robot after which the step is sent again. */
+        constexpr double kResend = 0.5;
 
         /** \brief The world's side of the run: publishes states, collects commands, admits robots and
             tasks. It is also the controller of the world's Simulation: command() returns the Twist that
@@ -53,15 +55,25 @@ namespace mhplan::ros1
             std::map<std::string, double> counters() const override
             {
                 return {{"ros_commands", static_cast<double>(commandsReceived_)},
-                        {"ros_state_messages", static_cast<double>(published_)}};
+                        {"ros_state_messages", static_cast<double>(published_)},
+                        {"ros_steps_resent", static_cast<double>(resent_)}};
             }
 
             Command command(const Simulation &sim, std::size_t i) override
             {
                 publish(sim, false);
                 const double t0 = wallNow();
+                double lastSent = t0;
                 while (!fresh_[i])
                 {
+                    // A node whose subscription was still being set up when the state went out missed a
+                    // message of this step: send the step again (a node answers each step once).
+                    if (wallNow() - lastSent > kResend)
+                    {
+                        publish(sim, false, true);
+                        lastSent = wallNow();
+                        ++resent_;
+                    }
                     if (!::ros::ok())
                         throw std::runtime_error("interrupted");
                     if (wallNow() - t0 > commandTimeout_)
@@ -160,10 +172,10 @@ namespace mhplan::ros1
             }
 
             /** \brief Publish the state at the simulation's time (once per time), the tick last. */
-            void publish(const Simulation &sim, bool end)
+            void publish(const Simulation &sim, bool end, bool again = false)
             {
                 const auto step = static_cast<long>(std::llround(sim.time() / sim.dt()));
-                if (step == publishedStep_ && !end)
+                if (step == publishedStep_ && !end && !again)
                     return;
                 publishedStep_ = step;
                 const ::ros::Time stamp = stampOf(sim.time());
@@ -208,7 +220,7 @@ namespace mhplan::ros1
             ::ros::Publisher tick_, clock_;
             ::ros::Subscriber join_, assign_;
             long publishedStep_{-1};
-            unsigned long published_{0}, commandsReceived_{0}, tasksAssigned_{0};
+            unsigned long published_{0}, commandsReceived_{0}, tasksAssigned_{0}, resent_{0};
         };
 
         /** \brief Spin until \e done or \e timeout wall seconds; false on timeout. */
