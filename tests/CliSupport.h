@@ -44,7 +44,10 @@ namespace mhplan::test
     inline std::string pyJson(const std::string &json, const std::string &expr,
                               const std::string &tag = "doc")
     {
-        const std::string file = std::string(P_tmpdir) + "/mhplan_json_" + tag + ".json";
+        // One file per process and call: ctest runs the tests of a binary in parallel processes.
+        static int calls = 0;
+        const std::string file = std::string(P_tmpdir) + "/mhplan_json_" + tag + "_" +
+                                 std::to_string(getpid()) + "_" + std::to_string(++calls) + ".json";
         FILE *f = std::fopen(file.c_str(), "w");
         if (f == nullptr)
             return "cannot write " + file;
