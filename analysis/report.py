@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
 """mhplan report DB -o DIR: write DIR/index.html with figures and tables from a benchmark database.
-Runs with Debian's /usr/bin/python3 (matplotlib, numpy, yaml)."""
+Runs with Debian's /usr/bin/python3 (matplotlib, numpy); worlds are drawn from `mhplan worlds FILE --json`
+($MHPLAN_BIN, set by mhplan report, else mhplan on PATH)."""
 
 import argparse
 import os

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace mhplan::test
 {
@@ -43,7 +44,10 @@ namespace mhplan::test
     inline std::string pyJson(const std::string &json, const std::string &expr,
                               const std::string &tag = "doc")
     {
-        const std::string file = std::string(P_tmpdir) + "/mhplan_json_" + tag + ".json";
+        // One file per process and call: ctest runs the tests of a binary in parallel processes.
+        static int calls = 0;
+        const std::string file = std::string(P_tmpdir) + "/mhplan_json_" + tag + "_" +
+                                 std::to_string(getpid()) + "_" + std::to_string(++calls) + ".json";
         FILE *f = std::fopen(file.c_str(), "w");
         if (f == nullptr)
             return "cannot write " + file;
@@ -66,6 +70,8 @@ namespace mhplan::test
         while (fgets(buf.data(), buf.size(), pipe) != nullptr)
             out += buf.data();
         pclose(pipe);
+        std::remove(file.c_str());
+        std::remove(py.c_str());
         while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
             out.pop_back();
         return out;

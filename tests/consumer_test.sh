@@ -19,9 +19,19 @@ test -x "$work/prefix/bin/mhplan"
 # The installed program finds its installed worlds (not the source tree's).
 worlds=$(env -u MHPLAN_ENVIRONMENTS "$work/prefix/bin/mhplan" worlds)
 grep -q bfo_case2 <<<"$worlds"
-cmake -S "$src/tests/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The consumer project, plus the README's complete main.cpp (the ```cpp block of "Use from your OMPL
+# program"), built against the non-system prefix through CMAKE_PREFIX_PATH.
+cp -r "$src/tests/consumer" "$work/consumer_src"
+awk '/^## Use from your OMPL program/ {section = 1; next}
+     /^## / {section = 0}
+     section && /^```cpp$/ {code = 1; next}
+     code && /^```$/ {exit}
+     code {print}' "$src/README.md" >"$work/consumer_src/readme_example.cpp"
+grep -q "int main" "$work/consumer_src/readme_example.cpp"
+cmake -S "$work/consumer_src" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/consumer" -j 2 >/dev/null
 "$work/consumer/consumer"
+"$work/consumer/readme_example" | grep -q "allocated LRSMA"
 # The Debian package, with its dependencies.
 (cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" >/dev/null)
 deb=$(ls "$work"/mhplan_*.deb)

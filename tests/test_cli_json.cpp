@@ -262,3 +262,16 @@ TEST(CliListings, ScenariosListsEveryShippedScenario)
     EXPECT_TRUE(contains(r.out, "time_limit"));
     EXPECT_EQ(runCli("scenarios no_such_scenario").code, 1);
 }
+
+TEST(CliListings, PlanControllersListAndCheckThePlannersParameters)
+{
+    const auto r = runCli("controllers plan:SMA");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(contains(r.out, "planner.population_size      default 30")) << r.out;
+    EXPECT_TRUE(contains(r.out, "planner.iterations"));
+    EXPECT_FALSE(contains(r.out, "Warning:"));
+    // A planner parameter out of its declared range is refused by the controller, naming it.
+    const auto bad = runCli("sim mapf_2robots --controller plan:SMA --set planner.population_size=1");
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_TRUE(contains(bad.out, "planner.population_size")) << bad.out;
+}

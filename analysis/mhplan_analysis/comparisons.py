@@ -152,7 +152,8 @@ def campaign_section(database, exps, optimum_of, outdir, colors):
         "within a factor &tau; of the best planner's (left: median time to within 1 %% of the optimum, runs "
         "that never got there at +&infin;; middle: median path length, runs without an exact path at "
         "+&infin;). &tau; = 1: the planner is (one of) the best; the curve's end: the share it solves at all. "
-        "Right: the share of all runs with a gap of at most &tau; %%.</p>" % len(exps),
+        "Right: the share of all runs with a gap of at most &tau; %%. A planner that did not run on a problem counts "
+        "as not solving it.</p>" % len(exps),
         "<img src='%s' alt='performance profiles'>" % fig,
     ]
 

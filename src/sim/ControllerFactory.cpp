@@ -2,7 +2,11 @@
 /* mhplan: controllers by name (see Controllers.h). */
 #include "mhplan/sim/Controllers.h"
 
+#include "mhplan/base/Parameters.h"
 #include "mhplan/sim/detail/Sensing.h"
+
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/util/Console.h>
 
 #include <functional>
 #include <iomanip>
@@ -83,7 +87,26 @@ namespace mhplan
                     << "\n";
         };
         for (const std::string &n : list)
+        {
             print(n, n);
+            if (n.compare(0, kPlanPrefix.size(), kPlanPrefix) == 0)
+            {
+                // The planner's own parameters, set with planner.<name>=value.
+                auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+                space->setBounds(0.0, 1.0);
+                auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+                ompl::msg::noOutputHandler();
+                const ompl::base::PlannerPtr planner = registry.create(n.substr(kPlanPrefix.size()), si);
+                ompl::msg::restorePreviousOutputHandler();
+                std::map<std::string, std::string> values;
+                planner->params().getParams(values);
+                for (const auto &kv : values)
+                    out << "    " << std::left << std::setw(28) << ("planner." + kv.first) << " default "
+                        << std::setw(12) << kv.second << " range " << std::setw(16)
+                        << planner->params()[kv.first].getRangeSuggestion() << " "
+                        << parameterDescription(planner->params()[kv.first]) << "\n";
+            }
+        }
         if (!planExample.empty())
             print("plan:<PLANNER> (any planner of `mhplan planners`; planner.<name>=value sets the planner's "
                   "parameters)",
