@@ -163,23 +163,41 @@ namespace
         long long paths{0};
     };
 
+    /** The campaign's simulation database beside \e db (Campaign.h: simulationDatabaseFile). */
+    std::string simulationDb(const std::string &db)
+    {
+        const fs::path p(db);
+        return (p.parent_path() / (p.stem().string() + "-sim" + p.extension().string())).string();
+    }
+
+    /** What the campaign's two databases hold together: planning runs in \e db, simulation runs in its
+        simulation database. */
     Contents contents(const std::string &db)
     {
         Contents c;
-        for (const auto &r : query(db, "SELECT name FROM experiments"))
-            c.experiments.insert(r[0]);
-        for (const auto &r : query(
-                 db,
-                 "SELECT experiments.name, plannerConfigs.name, runs.run_index, runs.run_seed, runs.status, "
-                 "runs.best_cost, runs.path_length, runs.makespan, runs.flowtime FROM runs "
-                 "JOIN experiments ON runs.experimentid = experiments.id "
-                 "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
-            c.runs[r[0] + "|" + r[1] + "|" + r[2]] = "seed " + r[3] + " status " + r[4] + " cost " + r[5] +
-                                                     " length " + r[6] + " makespan " + r[7] + " flowtime " +
-                                                     r[8];
-        c.runRows = scalar(db, "SELECT count(*) FROM runs");
-        c.logs = scalar(db, "SELECT count(*) FROM mhplan_logs");
-        c.paths = scalar(db, "SELECT count(*) FROM paths");
+        const std::string sim = simulationDb(db);
+        for (const std::string &file : {db, sim})
+        {
+            if (!fs::exists(file))
+                continue;
+            const bool planning = file == db;
+            for (const auto &r : query(file, "SELECT name FROM experiments"))
+                c.experiments.insert(r[0]);
+            const std::string results =
+                planning ? "runs.best_cost, runs.path_length" : "runs.makespan, runs.flowtime";
+            for (const auto &r : query(file, "SELECT experiments.name, plannerConfigs.name, runs.run_index, "
+                                             "runs.run_seed, runs.status, " +
+                                                 results +
+                                                 " FROM runs "
+                                                 "JOIN experiments ON runs.experimentid = experiments.id "
+                                                 "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
+                c.runs[r[0] + "|" + r[1] + "|" + r[2]] = "seed " + r[3] + " status " + r[4] +
+                                                         (planning ? " cost " : " makespan ") + r[5] +
+                                                         (planning ? " length " : " flowtime ") + r[6];
+            c.runRows += scalar(file, "SELECT count(*) FROM runs");
+            c.logs += scalar(file, "SELECT count(*) FROM mhplan_logs");
+            c.paths += scalar(file, "SELECT count(*) FROM paths");
+        }
         return c;
     }
 

@@ -91,14 +91,16 @@ namespace mhplan
         declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
                               &PopulationPlanner::getCrossingWeight);
         declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
-                      &PopulationPlanner::getInfeasibleBase, "path,constant");
+                      &PopulationPlanner::getInfeasibleBase, "path,constant",
+                      "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
         declareRanged<unsigned long>(params(), this, kSeed, &PopulationPlanner::setSeed,
                                      &PopulationPlanner::getSeed);
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
         declareSwitch(params(), this, "gms_initial", &PopulationPlanner::setGmsInitial,
-                      &PopulationPlanner::getGmsInitial);
+                      &PopulationPlanner::getGmsInitial,
+                      "[GMS] repair and node improvement of the initial population and of new individuals");
         declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
                       &PopulationPlanner::getGmsRepair,
                       "[GMS] node and line-segment repair after every iteration");
