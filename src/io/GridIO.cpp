@@ -82,7 +82,8 @@ namespace mhplan
         /** \brief A grid may hold at most kMaxGridCells cells (see GridIO.h). */
         void checkGridCells(long long width, long long height, const std::string &fileName, int lineNo)
         {
-            if (width * height > kMaxGridCells)
+            // Division, not multiplication: the dimensions may be any values the reader accepted.
+            if (width > 0 && height > 0 && width > kMaxGridCells / height)
                 throw InputError(where(fileName, lineNo) + "grid too large: " + std::to_string(width) +
                                  " x " + std::to_string(height) + " cells (at most " +
                                  std::to_string(kMaxGridCells) + " cells)");
