@@ -62,10 +62,13 @@ async function waitForPlot(page, id, previous) {
 async function selectOnly(page, name, wanted) {
   const boxes = await page.$$(`input[type=checkbox][name="${name}"]`);
   if (boxes.length === 0) fail(`no checkbox group '${name}'`);
-  for (const box of boxes) {
-    const [value, checked] = await box.evaluate((b) => [b.value, b.checked]);
-    if ((value === wanted) !== checked) await box.click();
-  }
+  // Check the wanted box first, then clear the others: the group is never empty in between (with no planner
+  // selected, Planner Arena renders "Select some planners" in place of the plot, which a check could read).
+  for (const pass of [true, false])
+    for (const box of boxes) {
+      const [value, checked] = await box.evaluate((b) => [b.value, b.checked]);
+      if ((value === wanted) === pass && (value === wanted) !== checked) await box.click();
+    }
 }
 
 async function checkboxValues(page, name) {
