@@ -227,6 +227,7 @@ namespace mhplan
             throw std::invalid_argument("parameter 'infeasible_base' must be 'path' or 'constant'; got '" +
                                         base + "'");
         weights_.infeasibleBaseIsPath = base == "path";
+        invalidate(); // the fitness changes, as with every other weight
     }
 
     void PopulationPlanner::setCrossingWeight(double w)
