@@ -502,12 +502,17 @@ TEST(NdEvaluation, NoHeapAllocationPerFitnessEvaluation)
     og::SimpleSetupPtr ss = sphereProblem(6, true);
     auto probe = std::make_shared<EvaluationProbe>(ss->getSpaceInformation());
     probe->setFitness("gms");
+    probe->setSeed(9);
     probe->setMaxIterations(1);
     ss->setPlanner(probe);
     ss->solve(never());
-    std::vector<double> x(probe->candidateDimension());
-    probe->randomCandidate(x.data());
+    // One random candidate may end its first segment inside the obstacle, and the validator then returns
+    // before it allocates; fifty candidates (from a fixed seed) always reach a full segment check.
+    std::vector<double> xs(50 * std::size_t(probe->candidateDimension()));
+    for (std::size_t i = 0; i < 50; ++i)
+        probe->randomCandidate(xs.data() + i * probe->candidateDimension());
     const unsigned long allocations = test::heapAllocations();
-    probe->evaluateCandidate(x.data());
+    for (std::size_t i = 0; i < 50; ++i)
+        probe->evaluateCandidate(xs.data() + i * probe->candidateDimension());
     EXPECT_GT(test::heapAllocations() - allocations, 0u);
 }
