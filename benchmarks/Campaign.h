@@ -6,6 +6,7 @@
 #define MHPLAN_BENCH_CAMPAIGN_H
 
 #include "mhplan/base/PlannerRegistry.h"
+#include "mhplan/registry/Registry.h"
 #include "mhplan/base/World.h"
 #include "mhplan/bench/GeneratedWorlds.h"
 
@@ -138,12 +139,11 @@ namespace mhplan::bench
 
     /** \brief Read a campaign file; throws InputError naming the file, line and field on any problem.
         Controller names "plan:<PLANNER>" are checked against \e registry. */
-    Campaign loadCampaign(const std::string &path,
-                          const PlannerRegistry &registry = PlannerRegistry::builtin());
+    Campaign loadCampaign(const std::string &path, const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief Parse campaign YAML; \e fileName is used in messages and to resolve relative world paths. */
     Campaign parseCampaign(const std::string &text, const std::string &fileName,
-                           const PlannerRegistry &registry = PlannerRegistry::builtin());
+                           const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief Runs of planner \e p in every planning experiment of \e c (its own \c runs, else the
         campaign's). */

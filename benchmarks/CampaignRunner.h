@@ -43,7 +43,7 @@ namespace mhplan::bench
         /** \brief The converter from logs to the database. */
         std::string statisticsTool{"/usr/bin/ompl_benchmark_statistics"};
         /** \brief Planners to draw from, for the campaign's planners and its "plan:<PLANNER>" controllers
-            (default: PlannerRegistry::builtin()). */
+            (default: builtinPlanners()). */
         const PlannerRegistry *registry{nullptr};
         /** \brief How world names are resolved (required). */
         WorldResolver resolveWorld;

@@ -123,7 +123,7 @@ namespace mhplan::bench
             throw std::invalid_argument("runCampaign: options.resolveWorld must be set");
         if (options.jobs < 1 || options.jobs > 256)
             throw InputError("--jobs must be in [1, 256] (got " + std::to_string(options.jobs) + ")");
-        const PlannerRegistry &registry = options.registry ? *options.registry : PlannerRegistry::builtin();
+        const PlannerRegistry &registry = options.registry ? *options.registry : builtinPlanners();
         std::ostream *msg = options.messages;
 
         const std::vector<Experiment> all = enumerateExperiments(campaign, options.resolveWorld);

@@ -3,6 +3,7 @@
 
 #include "mhplan/planners/field/ArtificialPotentialField.h"
 #include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/planners/field/BacterialWalk.h"
 #include "mhplan/planners/lattice/AStar.h"
 #include "mhplan/planners/lattice/ThetaStar.h"
 #include "mhplan/planners/memetic/MemeticGenetic.h"
@@ -79,11 +80,22 @@ namespace mhplan
         r.add({"ThetaStar", "mhplan", "Theta*, any-angle A* on the same lattice (Nash et al. 2007)",
                allocatorFor<ThetaStar>(), "lattice", kFaithful, kPlanar});
         r.add({"BFO", "mhplan", "Bacterial foraging optimization, online APF walk (Passino 2002; [BFO])",
-               allocatorFor<BacterialForaging>(), "walk", kFaithful, kPlanar});
+               allocatorFor<BacterialWalk>(), "walk", kFaithful, kPlanar});
         r.add({"ATBFO", "mhplan", "Adaptive-tumble bacterial foraging, online APF walk (Abbas & Ali 2016)",
                [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
-               { return std::make_shared<BacterialForaging>(si, true); },
+               { return std::make_shared<BacterialWalk>(si, true); },
                "walk", kFaithful, kPlanar});
+        r.add({"BFO-GLOBAL", "mhplan",
+               "BFO searching whole paths (waypoint vectors, the population planners' fitness), improved "
+               "variant (not in the paper: [BFO] walks online)",
+               allocatorFor<BacterialForaging>(), "population", kImproved, kAnyDimension});
+        r.add({"ATBFO-GLOBAL", "mhplan",
+               "ATBFO searching whole paths (waypoint vectors), improved variant (not in the paper: [BFO] "
+               "walks "
+               "online)",
+               [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
+               { return std::make_shared<BacterialForaging>(si, true); },
+               "population", kImproved, kAnyDimension});
         r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
                allocatorFor<ArtificialPotentialField>(), "walk", kFaithful, kPlanar});
         r.add({"SMA", "mhplan",

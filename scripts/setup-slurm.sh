@@ -8,18 +8,6 @@
 set -euo pipefail
 [ "${MHPLAN_NO_SLURM:-0}" = 1 ] && exit 0
 PACKAGES=(slurm-wlm parallel)
-missing=()
-for p in "${PACKAGES[@]}"; do
-  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
-  [ "$status" = "installed" ] || missing+=("$p")
-done
-[ ${#missing[@]} -eq 0 ] && exit 0
-echo "setup-slurm: installing missing Debian packages: ${missing[*]}"
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null 2>&1 || { echo "setup-slurm: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
-  SUDO="sudo"
-fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq >/dev/null
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+cd "$(dirname "$0")/.."
+. scripts/debian-packages.sh
+mhplan_ensure_debs setup-slurm "missing Debian packages" "${PACKAGES[@]}"

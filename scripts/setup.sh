@@ -19,23 +19,8 @@ PACKAGES=(
   python3-matplotlib python3-numpy python3-yaml ccache
 )
 
-missing=()
-for p in "${PACKAGES[@]}"; do
-  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
-  [ "$status" = "installed" ] || missing+=("$p")
-done
-
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing missing Debian packages: ${missing[*]}"
-  SUDO=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null 2>&1 || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
-    SUDO="sudo"
-  fi
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -qq >/dev/null
-  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+. scripts/debian-packages.sh
+mhplan_ensure_debs setup "missing Debian packages" "${PACKAGES[@]}" || exit 1
 
 # The ROS 1 component (src/ros, docs/ros.md): Debian's ROS 1 core and messages, installed unless
 # MHPLAN_NO_ROS=1 (about 80 packages, ~12 s to install from a warm apt cache). The build turns MHPLAN_ROS on
@@ -46,23 +31,9 @@ ROS_PACKAGES=(
 )
 ros_installed=0
 if [ "${MHPLAN_NO_ROS:-0}" != "1" ]; then
-  ros_missing=()
-  for p in "${ROS_PACKAGES[@]}"; do
-    status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
-    [ "$status" = "installed" ] || ros_missing+=("$p")
-  done
-  if [ ${#ros_missing[@]} -gt 0 ]; then
-    echo "setup: installing the ROS 1 packages (src/ros; MHPLAN_NO_ROS=1 skips them): ${ros_missing[*]}"
-    SUDO=""
-    if [ "$(id -u)" -ne 0 ]; then
-      command -v sudo >/dev/null 2>&1 || { echo "setup: need root (or sudo) to install: ${ros_missing[*]}" >&2; exit 1; }
-      SUDO="sudo"
-    fi
-    export DEBIAN_FRONTEND=noninteractive
-    $SUDO apt-get update -qq >/dev/null
-    $SUDO apt-get install -y -qq --no-install-recommends "${ros_missing[@]}" >/dev/null
-    ros_installed=1
-  fi
+  MHPLAN_DEBS_INSTALLED=0
+  mhplan_ensure_debs setup "the ROS 1 packages (src/ros; MHPLAN_NO_ROS=1 skips them)" "${ROS_PACKAGES[@]}" || exit 1
+  ros_installed=$MHPLAN_DEBS_INSTALLED
 fi
 
 if [ "$ARENA" = 1 ]; then

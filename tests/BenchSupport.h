@@ -57,7 +57,7 @@ namespace mhplan::test
     {
         static const PlannerRegistry registry = []
         {
-            PlannerRegistry r = PlannerRegistry::builtin();
+            PlannerRegistry r = builtinPlanners();
             r.add({"CrashTest", "test", "always fails",
                    [](const ob::SpaceInformationPtr &si) { return std::make_shared<CrashPlanner>(si); }});
             r.add({"ThetaStarHere", "test", "Theta* under a name only this registry knows",

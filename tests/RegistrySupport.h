@@ -19,7 +19,7 @@ namespace mhplan::test
                                                    const std::string &what)
     {
         std::vector<std::string> out;
-        const PlannerRegistry &registry = PlannerRegistry::builtin();
+        const PlannerRegistry &registry = builtinPlanners();
         for (const std::string &name : registry.names())
             if (registry.get(name).origin == "mhplan" && keep(registry.get(name)))
                 out.push_back(name);
@@ -45,7 +45,7 @@ namespace mhplan::test
     /** \brief The entry's family, "" for a planner the registry does not know (never throws). */
     inline std::string familyOf(const std::string &name)
     {
-        const PlannerRegistry &registry = PlannerRegistry::builtin();
+        const PlannerRegistry &registry = builtinPlanners();
         return registry.has(name) ? registry.get(name).family : std::string();
     }
 } // namespace mhplan::test

@@ -105,7 +105,7 @@ namespace
     {
         const CollisionModelPtr model = makeCollisionModel(world);
         og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), params);
+        ob::PlannerPtr p = builtinPlanners().create(planner, ss->getSpaceInformation(), params);
         ss->setPlanner(p);
         ss->setup();
         PlanRun r;
@@ -409,7 +409,7 @@ TEST_F(LatticeContract, ContinuesAfterABudgetAndIsDeterministic)
 
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
     ob::PlannerPtr p =
-        PlannerRegistry::builtin().create("AStar", ss->getSpaceInformation(), {{"max_iterations", "7"}});
+        builtinPlanners().create("AStar", ss->getSpaceInformation(), {{"max_iterations", "7"}});
     ss->setPlanner(p);
     ss->setup();
     unsigned calls = 0;
@@ -433,7 +433,7 @@ TEST_F(LatticeContract, PlannerDataHoldsThePath)
 {
     const World w = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/gms_grid20.yaml");
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
-    ob::PlannerPtr p = PlannerRegistry::builtin().create("ThetaStar", ss->getSpaceInformation());
+    ob::PlannerPtr p = builtinPlanners().create("ThetaStar", ss->getSpaceInformation());
     ss->setPlanner(p);
     ss->setup();
     ASSERT_EQ(p->solve(ob::plannerNonTerminatingCondition()), ob::PlannerStatus::EXACT_SOLUTION);
@@ -454,7 +454,7 @@ TEST_F(LatticeContract, ParametersAreCheckedByName)
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
     for (const char *name : {"AStar", "ThetaStar"})
     {
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(name, ss->getSpaceInformation());
+        ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation());
         auto *lp = dynamic_cast<LatticePlanner *>(p.get());
         ASSERT_NE(lp, nullptr);
         try
@@ -468,9 +468,9 @@ TEST_F(LatticeContract, ParametersAreCheckedByName)
                 << e.what();
         }
         EXPECT_THROW(lp->setLattice("hexagonal"), std::invalid_argument);
-        EXPECT_THROW(PlannerRegistry::builtin().create(name, ss->getSpaceInformation(),
-                                                       {{"max_iterations", "2000000000"}}),
-                     InputError);
+        EXPECT_THROW(
+            builtinPlanners().create(name, ss->getSpaceInformation(), {{"max_iterations", "2000000000"}}),
+            InputError);
         EXPECT_EQ(lp->getLattice(), "auto");
     }
 }

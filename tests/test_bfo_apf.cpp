@@ -17,6 +17,7 @@
 */
 #include "mhplan/planners/field/ArtificialPotentialField.h"
 #include "mhplan/planners/field/BacterialForaging.h"
+#include "mhplan/planners/field/BacterialWalk.h"
 #include "mhplan/planners/field/PotentialField.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
@@ -132,7 +133,7 @@ namespace
         std::map<std::string, std::string> all = params;
         if (name != "APF")
             all["seed"] = std::to_string(seed);
-        ob::PlannerPtr planner = PlannerRegistry::builtin().create(name, ss->getSpaceInformation(), all);
+        ob::PlannerPtr planner = builtinPlanners().create(name, ss->getSpaceInformation(), all);
         ss->setPlanner(planner);
         ss->setup();
         RunResult r;
@@ -224,7 +225,7 @@ TEST_F(BfoApf, PlannersRefuseACheckerWithoutClearance)
         }());
     for (const char *name : {"BFO", "ATBFO", "APF"})
     {
-        ss.setPlanner(PlannerRegistry::builtin().create(name, ss.getSpaceInformation()));
+        ss.setPlanner(builtinPlanners().create(name, ss.getSpaceInformation()));
         try
         {
             ss.setup();
@@ -235,9 +236,8 @@ TEST_F(BfoApf, PlannersRefuseACheckerWithoutClearance)
             EXPECT_NE(std::string(e.what()).find("clearance"), std::string::npos) << e.what();
         }
     }
-    // Global mode does not need clearance.
-    ob::PlannerPtr global =
-        PlannerRegistry::builtin().create("BFO", ss.getSpaceInformation(), {{"mode", "global"}});
+    // The global BFO does not need clearance.
+    ob::PlannerPtr global = builtinPlanners().create("BFO-GLOBAL", ss.getSpaceInformation());
     ss.setPlanner(global);
     EXPECT_NO_THROW(ss.setup());
 }
@@ -249,7 +249,7 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
 {
     const World w = case1();
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
-    BacterialForaging bfo(ss->getSpaceInformation());
+    BacterialWalk bfo(ss->getSpaceInformation());
     ArtificialPotentialField apf(ss->getSpaceInformation());
     auto message = [](const std::function<void()> &f)
     {
@@ -270,8 +270,6 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
     EXPECT_NE(m.find("'elimination_probability'"), std::string::npos) << m;
     EXPECT_NE(m.find("[0, 1]"), std::string::npos) << m;
     EXPECT_NE(m.find("1.5"), std::string::npos) << m;
-    m = message([&] { bfo.setMode("sideways"); });
-    EXPECT_NE(m.find("'mode'"), std::string::npos) << m;
     m = message([&] { bfo.setRepulsion("all"); });
     EXPECT_NE(m.find("'repulsion'"), std::string::npos) << m;
     m = message([&] { bfo.setSectorAngle(200); });
@@ -291,7 +289,7 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
     {
         try
         {
-            PlannerRegistry::builtin().create(bad.first, ss->getSpaceInformation(), bad.second);
+            builtinPlanners().create(bad.first, ss->getSpaceInformation(), bad.second);
             ADD_FAILURE() << bad.first << " accepted " << bad.second.begin()->first;
         }
         catch (const InputError &e)
@@ -301,7 +299,7 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
     }
 
     // Defaults of [BFO] section 6; ATBFO is the same class with the adaptive tumble on.
-    const ob::PlannerPtr at = PlannerRegistry::builtin().create("ATBFO", ss->getSpaceInformation());
+    const ob::PlannerPtr at = builtinPlanners().create("ATBFO", ss->getSpaceInformation());
     EXPECT_EQ(at->params()["adaptive_tumble"].getValue(), "1");
     EXPECT_EQ(bfo.params()["adaptive_tumble"].getValue(), "0");
     EXPECT_EQ(bfo.params()["population_size"].getValue(), "100");
@@ -321,8 +319,24 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
     EXPECT_FALSE(bfo.params().hasParam("iterations"));
     EXPECT_FALSE(bfo.getSpecs().optimizingPaths);
     EXPECT_TRUE(bfo.getSpecs().approximateSolutions);
-    bfo.setMode("global");
-    EXPECT_TRUE(bfo.getSpecs().optimizingPaths);
+    // The walk declares only what it uses: no mode, no waypoint encoding, no fitness, no [GMS] operator.
+    for (const char *unused : {"mode", "waypoints", "decoding", "fitness", "length_weight", "gms_initial",
+                               "gms_repair", "spline_samples", "stagnation_restart"})
+        EXPECT_FALSE(bfo.params().hasParam(unused)) << unused;
+    // The global BFO is a population planner with the colony's parameters and none of the field's.
+    BacterialForaging global(ss->getSpaceInformation());
+    EXPECT_EQ(global.getName(), "BFO-GLOBAL");
+    EXPECT_TRUE(global.getSpecs().optimizingPaths);
+    EXPECT_EQ(global.params()["population_size"].getValue(), "100");
+    EXPECT_EQ(global.getChemotacticSteps(), 8u);
+    EXPECT_DOUBLE_EQ(global.getStepSize(), 0.1);
+    for (const char *used : {"waypoints", "fitness", "swim_length", "adaptive_tumble", "seed"})
+        EXPECT_TRUE(global.params().hasParam(used)) << used;
+    for (const char *unused :
+         {"mode", "robot_step", "sector_angle", "attraction_gain", "sensing_range", "iterations"})
+        EXPECT_FALSE(global.params().hasParam(unused)) << unused;
+    m = message([&] { global.setSwimLength(100001); });
+    EXPECT_NE(m.find("'swim_length'"), std::string::npos) << m;
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -331,23 +345,17 @@ TEST_F(BfoApf, InvalidParametersAreRefusedByName)
 TEST_F(BfoApf, TerminationAlreadyTrueReturnsAtOnce)
 {
     const World w = case1();
-    for (const char *name : {"BFO", "ATBFO", "APF"})
-        for (const char *mode : {"online", "global"})
-        {
-            if (std::string(name) == "APF" && std::string(mode) == "global")
-                continue;
-            og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
-            std::map<std::string, std::string> params;
-            if (std::string(name) != "APF")
-                params["mode"] = mode;
-            ob::PlannerPtr p = PlannerRegistry::builtin().create(name, ss->getSpaceInformation(), params);
-            ss->setPlanner(p);
-            ss->setup();
-            const ob::PlannerStatus s = p->solve(ob::PlannerTerminationCondition([] { return true; }));
-            EXPECT_EQ(s, ob::PlannerStatus::TIMEOUT) << name << " " << mode;
-            EXPECT_EQ(statusOf(p, "iterations INTEGER"), "0") << name;
-            EXPECT_EQ(statusOf(p, "best cost REAL"), "inf") << name;
-        }
+    for (const char *name : {"BFO", "ATBFO", "APF", "BFO-GLOBAL", "ATBFO-GLOBAL"})
+    {
+        og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
+        ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation());
+        ss->setPlanner(p);
+        ss->setup();
+        const ob::PlannerStatus s = p->solve(ob::PlannerTerminationCondition([] { return true; }));
+        EXPECT_EQ(s, ob::PlannerStatus::TIMEOUT) << name;
+        EXPECT_EQ(statusOf(p, "iterations INTEGER"), "0") << name;
+        EXPECT_EQ(statusOf(p, "best cost REAL"), "inf") << name;
+    }
 }
 
 TEST_F(BfoApf, SolveContinuesAndClearResets)
@@ -359,7 +367,7 @@ TEST_F(BfoApf, SolveContinuesAndClearResets)
         std::map<std::string, std::string> params{{"max_iterations", "5"}};
         if (std::string(name) == "BFO")
             params["seed"] = "5";
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(name, ss->getSpaceInformation(), params);
+        ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation(), params);
         ss->setPlanner(p);
         ss->setup();
         const auto never = ob::PlannerTerminationCondition([] { return false; });
@@ -513,10 +521,9 @@ TEST_F(BfoApf, ApfOnThePaperWorlds)
 TEST_F(BfoApf, GlobalModeSearchesTheWaypointEncoding)
 {
     const World w = case1();
-    for (const char *name : {"BFO", "ATBFO"})
+    for (const char *name : {"BFO-GLOBAL", "ATBFO-GLOBAL"})
     {
-        const RunResult r =
-            runPlanner(w, name, 3, {{"mode", "global"}, {"max_iterations", "40"}, {"step_size", "0.5"}});
+        const RunResult r = runPlanner(w, name, 3, {{"max_iterations", "40"}, {"step_size", "0.5"}});
         EXPECT_TRUE(r.status == ob::PlannerStatus::EXACT_SOLUTION ||
                     r.status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
             << name;
@@ -579,8 +586,8 @@ TEST_F(BfoApf, GlobalModeIntermediateSolutionsAndForeignChecker)
     start[0] = start[1] = 1.0;
     goal[0] = goal[1] = 9.0;
     ss->setStartAndGoalStates(start, goal, 1e-9);
-    ob::PlannerPtr p = PlannerRegistry::builtin().create(
-        "ATBFO", si, {{"mode", "global"}, {"seed", "4"}, {"step_size", "0.5"}, {"max_iterations", "30"}});
+    ob::PlannerPtr p = builtinPlanners().create(
+        "ATBFO-GLOBAL", si, {{"seed", "4"}, {"step_size", "0.5"}, {"max_iterations", "30"}});
     ss->setPlanner(p);
     ss->setup();
     EXPECT_TRUE(p->getSpecs().canReportIntermediateSolutions);

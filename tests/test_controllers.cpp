@@ -160,7 +160,7 @@ TEST(ControllerNames, PlanDrawsFromTheRegistryItIsHanded)
 {
     // A planner only this registry knows, counting its allocations.
     static int allocations = 0;
-    PlannerRegistry registry = PlannerRegistry::builtin();
+    PlannerRegistry registry = builtinPlanners();
     registry.add({"OnlyHere", "test", "Theta* under a name the built-in registry does not know",
                   [](const ompl::base::SpaceInformationPtr &si) -> ompl::base::PlannerPtr
                   {

@@ -55,7 +55,7 @@ namespace
         const World w = seedWorld(world);
         PlannerRun r;
         r.ss = makeSimpleSetup(w, w.queries[0], makeCollisionModel(w));
-        r.planner = PlannerRegistry::builtin().create(planner, r.ss->getSpaceInformation());
+        r.planner = builtinPlanners().create(planner, r.ss->getSpaceInformation());
         applyPlannerParameters(*r.planner, params);
         r.ss->setPlanner(r.planner);
         r.ss->setup();

@@ -51,7 +51,7 @@ namespace
         const Query &q = world.queries.front();
         const CollisionModelPtr model = makeCollisionModel(world);
         auto ss = makeSimpleSetup(world, q, model);
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), {});
+        ob::PlannerPtr p = builtinPlanners().create(planner, ss->getSpaceInformation(), {});
         ss->setPlanner(p);
         ss->setup();
         ImprovementRecorder recorder;

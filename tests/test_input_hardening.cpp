@@ -170,7 +170,7 @@ TEST(PlannerSetup, UnsupportedSpaceThrowsAndLogs)
         start = std::vector<double>{0.1, 0.1, 0.1};
         goal = std::vector<double>{0.9, 0.9, 0.9};
         ss->setStartAndGoalStates(start, goal);
-        ss->setPlanner(mhplan::PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+        ss->setPlanner(mhplan::builtinPlanners().create(name, ss->getSpaceInformation()));
         ErrorLog log;
         ompl::msg::OutputHandler *previous = ompl::msg::getOutputHandler();
         const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
@@ -209,7 +209,7 @@ TEST(PlannerSetup, BitStarMessagesNameBitStar)
     ss->setStartAndGoalStates(start, goal);
     ss->setOptimizationObjective(
         std::make_shared<ompl::base::PathLengthOptimizationObjective>(ss->getSpaceInformation()));
-    ss->setPlanner(mhplan::PlannerRegistry::builtin().create("BITstar", ss->getSpaceInformation()));
+    ss->setPlanner(mhplan::builtinPlanners().create("BITstar", ss->getSpaceInformation()));
     EXPECT_EQ(ss->getPlanner()->getName(), "BITstar");
     struct AllMessages : ompl::msg::OutputHandler
     {

@@ -35,7 +35,7 @@ namespace
     std::vector<std::string> memeticPlanners()
     {
         std::vector<std::string> out;
-        const PlannerRegistry &r = PlannerRegistry::builtin();
+        const PlannerRegistry &r = builtinPlanners();
         for (const std::string &name : r.names())
             if (r.get(name).origin == "mhplan" && name.size() > 4 &&
                 name.compare(name.size() - 4, 4, "-MEM") == 0)
@@ -117,7 +117,7 @@ namespace
                   std::map<std::string, std::string> params)
     {
         og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
-        ss->setPlanner(PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), params));
+        ss->setPlanner(builtinPlanners().create(planner, ss->getSpaceInformation(), params));
         ss->setup();
         Outcome r;
         r.status = ss->solve(ob::PlannerTerminationCondition([] { return false; }));
@@ -174,8 +174,8 @@ TEST_P(Memetic, SameSeedSamePathAndClearRepeats)
 
     // clear() then solve() on the same planner repeats the run.
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
-    ob::PlannerPtr p = PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(),
-                                                         {{"seed", "9"}, {"max_iterations", "4"}});
+    ob::PlannerPtr p = builtinPlanners().create(GetParam(), ss->getSpaceInformation(),
+                                                {{"seed", "9"}, {"max_iterations", "4"}});
     ss->setPlanner(p);
     ss->setup();
     auto never = ob::PlannerTerminationCondition([] { return false; });
@@ -200,7 +200,7 @@ TEST_P(Memetic, HonoursTheTerminationCondition)
     const World w = generateCircles(o);
     const CollisionModelPtr model = makeCollisionModel(w);
     og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
-    ss->setPlanner(PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(), {{"seed", "1"}}));
+    ss->setPlanner(builtinPlanners().create(GetParam(), ss->getSpaceInformation(), {{"seed", "1"}}));
     ss->setup();
     const ompl::time::point t0 = ompl::time::now();
     const ob::PlannerStatus s = ss->solve(0.05);
@@ -297,7 +297,7 @@ TEST(AnytimeRestarts, OnlyWithoutAnIterationBudgetAndOnlyForTheVariants)
                    unsigned long &restarts)
     {
         og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(name, ss->getSpaceInformation(), params);
+        ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation(), params);
         ss->setPlanner(p);
         ss->setup();
         ob::IterationTerminationCondition checks(ptcChecks);
@@ -309,14 +309,14 @@ TEST(AnytimeRestarts, OnlyWithoutAnIterationBudgetAndOnlyForTheVariants)
     unsigned long restarts = 0;
     // The registry switches the restarts on for the improved variants only.
     for (const char *name : {"SMA-OPS", "LRSMA-OPS", "MGO-OPS", "GA-WALK"})
-        EXPECT_EQ(PlannerRegistry::builtin()
+        EXPECT_EQ(builtinPlanners()
                       .create(name, makeSimpleSetup(w, w.queries[0], model)->getSpaceInformation())
                       ->params()["stagnation_restart"]
                       .getValue(),
                   "30")
             << name;
     for (const char *name : {"SMA", "LRSMA", "MGO", "GA"})
-        EXPECT_EQ(PlannerRegistry::builtin()
+        EXPECT_EQ(builtinPlanners()
                       .create(name, makeSimpleSetup(w, w.queries[0], model)->getSpaceInformation())
                       ->params()["stagnation_restart"]
                       .getValue(),

@@ -66,7 +66,7 @@ namespace
         const CollisionModelPtr model = makeCollisionModel(world);
         og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], model);
         params["seed"] = std::to_string(seed);
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), params);
+        ob::PlannerPtr p = builtinPlanners().create(planner, ss->getSpaceInformation(), params);
         ss->setPlanner(p);
         RunResult r;
         ss->getProblemDefinition()->setIntermediateSolutionCallback(
@@ -344,7 +344,7 @@ TEST_P(MetaheuristicQuality, PapersSettingsOnEverySeedWorld)
         for (unsigned long seed = 1; seed <= 20; ++seed)
         {
             // max_iterations = the schedule length T: the papers' fixed budgets.
-            const ob::PlannerPtr probe = PlannerRegistry::builtin().create(
+            const ob::PlannerPtr probe = builtinPlanners().create(
                 planner, std::make_shared<ob::SpaceInformation>(makeStateSpace(world)));
             const RunResult r = runPlanner(world, planner, seed,
                                            {{"max_iterations", probe->params()["iterations"].getValue()}});
@@ -385,8 +385,8 @@ TEST(MetaheuristicQuality, EveryExpectationNamesARegisteredFaithfulPopulationPla
     // A misspelt or removed name in the table fails here instead of being skipped.
     for (const auto &kv : expectations())
     {
-        ASSERT_TRUE(PlannerRegistry::builtin().has(kv.first)) << kv.first;
-        EXPECT_EQ(PlannerRegistry::builtin().get(kv.first).family, "population") << kv.first;
-        EXPECT_FALSE(PlannerRegistry::builtin().get(kv.first).improved) << kv.first;
+        ASSERT_TRUE(builtinPlanners().has(kv.first)) << kv.first;
+        EXPECT_EQ(builtinPlanners().get(kv.first).family, "population") << kv.first;
+        EXPECT_FALSE(builtinPlanners().get(kv.first).improved) << kv.first;
     }
 }

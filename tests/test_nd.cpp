@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -144,7 +146,7 @@ namespace
     ob::PlannerPtr makePlanner(const og::SimpleSetupPtr &ss, const std::string &name, unsigned long seed,
                                unsigned int iterations)
     {
-        ob::PlannerPtr p = PlannerRegistry::builtin().create(
+        ob::PlannerPtr p = builtinPlanners().create(
             name, ss->getSpaceInformation(),
             {{"seed", std::to_string(seed)}, {"max_iterations", std::to_string(iterations)}});
         ss->setPlanner(p);
@@ -199,8 +201,10 @@ INSTANTIATE_TEST_SUITE_P(Planners, NdPlanner,
                                             ::testing::Values(3u, 6u), ::testing::Bool()),
                          [](const auto &info)
                          {
-                             return std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) +
-                                    "D_" + (std::get<2>(info.param) ? "clearance" : "validityOnly");
+                             std::string name = std::get<0>(info.param); // GoogleTest names: [A-Za-z0-9_]
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name + "_" + std::to_string(std::get<1>(info.param)) + "D_" +
+                                    (std::get<2>(info.param) ? "clearance" : "validityOnly");
                          });
 
 TEST(NdPlanner, GmsFitnessKeepsSplinePathsInsideTheBounds)
@@ -355,7 +359,7 @@ TEST_P(NdRefusal, SE2StateSpaceIsRefusedAtSetup)
     start->setXY(0.1, 0.1);
     goal->setXY(0.9, 0.9);
     ss->setStartAndGoalStates(start, goal);
-    ob::PlannerPtr p = PlannerRegistry::builtin().create(GetParam(), ss->getSpaceInformation(), {});
+    ob::PlannerPtr p = builtinPlanners().create(GetParam(), ss->getSpaceInformation(), {});
     ss->setPlanner(p);
 
     const std::string msg = thrownMessage([&] { ss->setup(); });

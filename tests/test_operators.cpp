@@ -73,8 +73,7 @@ namespace
             params["seed"] = std::to_string(seed);
             params.emplace("population_size", "30");
             params.emplace("max_iterations", "30");
-            const ob::PlannerPtr p =
-                PlannerRegistry::builtin().create(planner, ss->getSpaceInformation(), params);
+            const ob::PlannerPtr p = builtinPlanners().create(planner, ss->getSpaceInformation(), params);
             ss->setPlanner(p);
             const ob::PlannerStatus status = ss->solve(ob::PlannerTerminationCondition([] { return false; }));
             out.evaluations +=
@@ -112,7 +111,7 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
     {
         if (name.find("-GMS") != std::string::npos)
             continue; // [GMS]'s SMA and MGO switch operators on (VariantsAreRegistered... checks them)
-        const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
+        const ob::PlannerPtr p = builtinPlanners().create(name, planarSpace());
         auto *pp = dynamic_cast<PopulationPlanner *>(p.get());
         ASSERT_NE(pp, nullptr) << name;
         for (const char *s : kSwitches)
@@ -159,11 +158,11 @@ TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
     unsigned int faithfulGms = 0, improved = 0;
     for (const std::string &name : test::ofFamily("population"))
     {
-        const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, planarSpace());
+        const ob::PlannerPtr p = builtinPlanners().create(name, planarSpace());
         EXPECT_EQ(p->getName(), name);
         const bool gms = name.find("-GMS") != std::string::npos;
         const bool ops = name.find("-OPS") != std::string::npos;
-        const PlannerEntry &entry = PlannerRegistry::builtin().get(name);
+        const PlannerEntry &entry = builtinPlanners().get(name);
         EXPECT_EQ(dynamic_cast<PopulationPlanner &>(*p).gmsOperatorsEnabled(), gms || ops) << name;
         if (gms)
         {
@@ -196,7 +195,7 @@ TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
     EXPECT_EQ(faithfulGms, 2u);
     EXPECT_EQ(improved, 3u);
     // The original SMA is [LRSMA]'s: spline decoding, fitness S, no operator.
-    const ob::PlannerPtr sma = PlannerRegistry::builtin().create("SMA", planarSpace());
+    const ob::PlannerPtr sma = builtinPlanners().create("SMA", planarSpace());
     EXPECT_EQ(sma->params()["decoding"].getValue(), "spline");
     EXPECT_EQ(sma->params()["fitness"].getValue(), "lrsma");
 }
@@ -234,7 +233,7 @@ TEST(GmsOperators, RefusedInKDAndByAlgorithmsWithoutAPopulationView)
     sma.setGmsRepair(false);
     EXPECT_NO_THROW(sma.setup());
     // The GA (its own operators) exposes no waypoint population.
-    const ob::PlannerPtr ga = PlannerRegistry::builtin().create("GA", planarSpace());
+    const ob::PlannerPtr ga = builtinPlanners().create("GA", planarSpace());
     ga->params().setParam("gms_simplify", "1");
     try
     {
@@ -259,11 +258,11 @@ TEST(GmsOperators, OffMeansBitIdentical)
         for (const std::string scope : {"best", "all"})
         {
             og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], makeCollisionModel(world));
-            const ob::PlannerPtr p = PlannerRegistry::builtin().create(name, ss->getSpaceInformation(),
-                                                                       {{"seed", "7"},
-                                                                        {"max_iterations", "10"},
-                                                                        {"gms_scope", scope},
-                                                                        {"gms_replace_fraction", "0"}});
+            const ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation(),
+                                                              {{"seed", "7"},
+                                                               {"max_iterations", "10"},
+                                                               {"gms_scope", scope},
+                                                               {"gms_replace_fraction", "0"}});
             ss->setPlanner(p);
             ss->solve(ob::PlannerTerminationCondition([] { return false; }));
             costs.push_back(polylineLength(pathPoints(ss->getSolutionPath())));
@@ -299,8 +298,7 @@ TEST(GmsOperators, EveryOperatorAndReplacementRunsAndKeepsTheReportConsistent)
             og::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], makeCollisionModel(world));
             params["seed"] = "3";
             params["max_iterations"] = "10";
-            const ob::PlannerPtr p =
-                PlannerRegistry::builtin().create(name, ss->getSpaceInformation(), params);
+            const ob::PlannerPtr p = builtinPlanners().create(name, ss->getSpaceInformation(), params);
             ss->setPlanner(p);
             const ob::PlannerStatus status = ss->solve(ob::PlannerTerminationCondition([] { return false; }));
             if (status != ob::PlannerStatus::EXACT_SOLUTION)

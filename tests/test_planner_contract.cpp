@@ -93,7 +93,7 @@ namespace
         static const PlannerRegistry registry = []
         {
             PlannerRegistry r;
-            const PlannerRegistry &builtin = PlannerRegistry::builtin();
+            const PlannerRegistry &builtin = builtinPlanners();
             for (const std::string &name : builtin.names())
                 if (builtin.get(name).origin == "mhplan")
                     r.add(builtin.get(name));
@@ -116,7 +116,7 @@ namespace
     std::vector<std::string> mhplanPlanners()
     {
         std::vector<std::string> out;
-        const PlannerRegistry &registry = PlannerRegistry::builtin();
+        const PlannerRegistry &registry = builtinPlanners();
         for (const std::string &name : registry.names())
             if (registry.get(name).origin == "mhplan")
                 out.push_back(name);
@@ -612,7 +612,7 @@ TEST(PlannerContractRegistry, HoldsEveryBuiltinMhplanPlannerAndTheTestsOwn)
     expected.push_back("StraightLineRestarts");
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(contractPlanners(), expected);
-    EXPECT_FALSE(PlannerRegistry::builtin().has("StraightLineRestarts"));
+    EXPECT_FALSE(builtinPlanners().has("StraightLineRestarts"));
 }
 
 TEST(PlannerRegistryTags, EveryMhplanPlannerHasAKnownFamily)
@@ -623,7 +623,7 @@ TEST(PlannerRegistryTags, EveryMhplanPlannerHasAKnownFamily)
     std::set<std::string> seen;
     for (const std::string &name : mhplanPlanners())
     {
-        const PlannerEntry &e = PlannerRegistry::builtin().get(name);
+        const PlannerEntry &e = builtinPlanners().get(name);
         EXPECT_EQ(families.count(e.family), 1u) << name << " has family '" << e.family << "'";
         seen.insert(e.family);
         // An improved variant says so in its description; a faithful planner does not.

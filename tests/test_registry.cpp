@@ -50,7 +50,7 @@ namespace
 
 TEST(Registry, HoldsOmplBaselines)
 {
-    const PlannerRegistry &reg = PlannerRegistry::builtin();
+    const PlannerRegistry &reg = builtinPlanners();
     for (const char *name :
          {"RRT", "RRTConnect", "RRTstar", "InformedRRTstar", "PRM", "PRMstar", "BITstar", "FMTstar"})
         EXPECT_TRUE(reg.has(name)) << name;
@@ -63,18 +63,18 @@ TEST(Registry, HoldsOmplBaselines)
 
 TEST(Registry, UnknownPlannerListsRegisteredNames)
 {
-    const std::string msg = errorOf([] { PlannerRegistry::builtin().get("RRTsharp!"); });
+    const std::string msg = errorOf([] { builtinPlanners().get("RRTsharp!"); });
     EXPECT_NE(msg.find("unknown planner 'RRTsharp!'"), std::string::npos) << msg;
-    for (const auto &name : PlannerRegistry::builtin().names())
+    for (const auto &name : builtinPlanners().names())
         EXPECT_NE(msg.find(name), std::string::npos) << name;
 }
 
 TEST(Registry, EveryParameterRoundTripsThroughItsDefault)
 {
     const auto si = unitSquare();
-    for (const auto &name : PlannerRegistry::builtin().names())
+    for (const auto &name : builtinPlanners().names())
     {
-        const ob::PlannerPtr planner = PlannerRegistry::builtin().create(name, si);
+        const ob::PlannerPtr planner = builtinPlanners().create(name, si);
         ASSERT_TRUE(planner) << name;
         std::map<std::string, std::string> defaults;
         planner->params().getParams(defaults);
@@ -88,7 +88,7 @@ TEST(Registry, EveryParameterRoundTripsThroughItsDefault)
 TEST(Registry, ParametersAreSetAndValidated)
 {
     const auto si = unitSquare();
-    const PlannerRegistry &reg = PlannerRegistry::builtin();
+    const PlannerRegistry &reg = builtinPlanners();
     ob::PlannerPtr p =
         reg.create("RRTstar", si, {{"range", "0.25"}, {"goal_bias", "0.1"}, {"use_k_nearest", "false"}});
     EXPECT_EQ(p->params()["range"].getValue(), "0.25");
@@ -160,10 +160,10 @@ TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
     const CollisionModelPtr model = makeCollisionModel(world);
     ASSERT_TRUE(world.polygons.empty() && !world.circles.empty())
         << "the independent check below knows circles only";
-    for (const auto &name : PlannerRegistry::builtin().names())
+    for (const auto &name : builtinPlanners().names())
     {
         ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], model);
-        ss->setPlanner(PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+        ss->setPlanner(builtinPlanners().create(name, ss->getSpaceInformation()));
         // Any path satisfies the objective, so every planner stops at its first exact solution (10 s is only
         // a safety net): no assertion depends on the machine's speed.
         ss->getProblemDefinition()->getOptimizationObjective()->setCostThreshold(

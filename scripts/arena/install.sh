@@ -38,13 +38,7 @@ R_LIBRARIES="shiny shinyjs dplyr dbplyr tidyr ggplot2 Hmisc RSQLite markdown DBI
 BROWSER_PACKAGES=(chromium)
 PUPPETEER_VERSION=23.9.0    # engines: node >= 18 (Debian 12 has 18; later lines need 22)
 
-missing_debs() {
-  local p status
-  for p in "$@"; do
-    status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
-    [ "$status" = "installed" ] || echo "$p"
-  done
-}
+. "$(dirname "$0")/../debian-packages.sh"
 
 apt_install() {
   [ $# -gt 0 ] || return 0
@@ -52,21 +46,14 @@ apt_install() {
     echo "arena: missing Debian packages: $* (run scripts/setup.sh --arena, or scripts/arena/install.sh)" >&2
     exit 3
   fi
-  local SUDO=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null 2>&1 || { echo "arena: need root (or sudo) to install: $*" >&2; exit 3; }
-    SUDO="sudo"
-  fi
   echo "arena: installing Debian packages: $*" >&2
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -qq >/dev/null
-  $SUDO apt-get install -y -qq --no-install-recommends "$@" >/dev/null
+  mhplan_apt_install arena "$@" || exit 3
 }
 
-mapfile -t need < <(missing_debs "${R_PACKAGES[@]}")
+mapfile -t need < <(mhplan_missing_debs "${R_PACKAGES[@]}")
 apt_install "${need[@]}"
 if [ "$BROWSER" = 1 ]; then
-  mapfile -t need < <(missing_debs "${BROWSER_PACKAGES[@]}")
+  mapfile -t need < <(mhplan_missing_debs "${BROWSER_PACKAGES[@]}")
   apt_install "${need[@]}"
 fi
 

@@ -41,15 +41,14 @@ namespace mhplan
         { return std::make_shared<P>(si); };
     }
 
-    /** \brief Planner name -> allocator. The built-in registry lists every planner mhplan knows; adding a
-        planner is one line in its family's registration (ompl_planners/Registration.cpp). */
+    /** \brief Planner name -> allocator: a generic registry, filled by whoever owns one. The built-in
+        registry, every planner mhplan knows, belongs to the registry layer (builtinPlanners() in
+        mhplan/registry/Registry.h); adding a planner is one line in its family's registration
+        (ompl_planners/Registration.cpp). Campaigns, controllers and the CLI take the registry they are
+        handed. */
     class PlannerRegistry
     {
       public:
-        /** \brief The registry of all built-in planners (built on first use, then read-only). Defined by the
-            registry layer (src/registry/Registry.cpp, registerBuiltinPlanners), which libmhplan holds. */
-        static const PlannerRegistry &builtin();
-
         /** \brief Add an entry; throws std::invalid_argument if the name is taken. */
         void add(PlannerEntry entry);
         bool has(const std::string &name) const { return entries_.count(name) != 0; }

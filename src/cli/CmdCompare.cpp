@@ -41,7 +41,7 @@ namespace mhplan::cli
         std::vector<std::string> defaultComparePlanners()
         {
             std::vector<std::string> out = {"RRTstar", "InformedRRTstar", "PRMstar", "BITstar"};
-            const PlannerRegistry &reg = PlannerRegistry::builtin();
+            const PlannerRegistry &reg = builtinPlanners();
             for (const auto &name : reg.names())
                 if (reg.get(name).origin == "mhplan")
                     out.push_back(name);
@@ -86,7 +86,7 @@ namespace mhplan::cli
             throw InputError("mhplan compare: --planners names no planner (got '" + args.get("planners") +
                              "'); give a comma-separated list, e.g. RRTstar,SMA");
         for (const auto &p : planners)
-            PlannerRegistry::builtin().get(p); // refuse unknown names before any work
+            builtinPlanners().get(p); // refuse unknown names before any work
         std::vector<std::string> files;
         for (const auto &w : args.positional())
             files.push_back(resolveWorldPath(w));
@@ -133,7 +133,7 @@ namespace mhplan::cli
                 for (long long r = 0; r < runs; ++r)
                 {
                     og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
-                    ss->setPlanner(PlannerRegistry::builtin().create(name, ss->getSpaceInformation()));
+                    ss->setPlanner(builtinPlanners().create(name, ss->getSpaceInformation()));
                     const ompl::time::point t0 = ompl::time::now();
                     const ob::PlannerStatus status = ss->solve(timeLimit);
                     totalTime += ompl::time::seconds(ompl::time::now() - t0);

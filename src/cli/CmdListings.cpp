@@ -82,7 +82,7 @@ namespace mhplan::cli
     int cmdPlanners(const Argv &argv)
     {
         const Args args("planners", argv, {{}, {}, {"json"}});
-        const PlannerRegistry &reg = PlannerRegistry::builtin();
+        const PlannerRegistry &reg = builtinPlanners();
         std::vector<std::string> names = args.positional();
         if (names.empty())
             names = reg.names();

@@ -76,8 +76,7 @@ namespace mhplan::cli
         const CollisionModelPtr model =
             makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
         og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
-        ob::PlannerPtr planner =
-            PlannerRegistry::builtin().create(plannerName, ss->getSpaceInformation(), params);
+        ob::PlannerPtr planner = builtinPlanners().create(plannerName, ss->getSpaceInformation(), params);
         ss->setPlanner(planner);
         ss->setup();
 

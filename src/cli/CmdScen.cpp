@@ -58,7 +58,7 @@ namespace mhplan::cli
         const std::string mapPath = args.positional()[0];
         const std::string scenPath = args.positional()[1];
         const std::string plannerName = args.get("planner", "AStar");
-        PlannerRegistry::builtin().get(plannerName); // refuse an unknown name before any work
+        builtinPlanners().get(plannerName); // refuse an unknown name before any work
         const double timeLimit = args.number("time", 0.0);
         if (args.has("time") && !(timeLimit > 0.0))
             throw InputError("mhplan scen: --time must be > 0 seconds (got " + args.get("time") + ")");
@@ -98,7 +98,7 @@ namespace mhplan::cli
             return q;
         };
         og::SimpleSetupPtr ss = makeSimpleSetup(world, query(problems.front()), model);
-        ob::PlannerPtr planner = PlannerRegistry::builtin().create(plannerName, ss->getSpaceInformation());
+        ob::PlannerPtr planner = builtinPlanners().create(plannerName, ss->getSpaceInformation());
         ss->setPlanner(planner);
         ss->setup();
         const auto &props = planner->getPlannerProgressProperties();

@@ -92,7 +92,7 @@ namespace mhplan
         registerMhplanPlanners(r);
     }
 
-    const PlannerRegistry &PlannerRegistry::builtin()
+    const PlannerRegistry &builtinPlanners()
     {
         static const PlannerRegistry registry = []
         {
@@ -106,12 +106,12 @@ namespace mhplan
     ob::PlannerPtr allocatePlanner(const std::string &name, const ob::SpaceInformationPtr &si,
                                    const std::map<std::string, std::string> &params)
     {
-        return PlannerRegistry::builtin().create(name, si, params);
+        return builtinPlanners().create(name, si, params);
     }
 
     void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<std::string> &names)
     {
-        const PlannerRegistry &reg = PlannerRegistry::builtin();
+        const PlannerRegistry &reg = builtinPlanners();
         std::vector<std::string> chosen = names;
         if (chosen.empty())
             for (const auto &n : reg.names())

@@ -16,8 +16,12 @@ namespace mhplan
     void registerOmplPlanners(PlannerRegistry &registry);
 
     /** \brief Add every built-in planner to \e registry: OMPL's (registerOmplPlanners) and mhplan's
-        (registerMhplanPlanners). PlannerRegistry::builtin() is a registry filled by this. */
+        (registerMhplanPlanners). builtinPlanners() is a registry filled by this. */
     void registerBuiltinPlanners(PlannerRegistry &registry);
+
+    /** \brief The registry of all built-in planners (registerBuiltinPlanners; built on first use, then
+        read-only, safe to read from several threads). */
+    const PlannerRegistry &builtinPlanners();
 
     /** \brief SelfConfig-style factory: planner \e name from the built-in registry on \e si, with \e params
         applied (InputError for an unknown name, parameter or out-of-range value). */

@@ -18,13 +18,13 @@ namespace mhplan
 {
     /** \brief The controller names makeController accepts: "dapf", "aapf", "bfo", "atbfo", and
         "plan:<PLANNER>" for every planner name of \e registry (e.g. "plan:ThetaStar"). */
-    std::vector<std::string> controllerNames(const PlannerRegistry &registry = PlannerRegistry::builtin());
+    std::vector<std::string> controllerNames(const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief A controller by name with its default parameters; "plan:<PLANNER>" plans with the planners of
         \e registry (which must outlive the controller). Throws InputError listing the accepted names for an
         unknown one. */
     ControllerPtr makeController(const std::string &name,
-                                 const PlannerRegistry &registry = PlannerRegistry::builtin());
+                                 const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief One declared controller parameter as `mhplan` lists it (like a planner's: name, default, OMPL
         range suggestion, what it does). */
@@ -75,13 +75,12 @@ namespace mhplan
         lists the follower's own parameters, not the planner's: those are planner.<name>, see
         `mhplan planners`). Throws InputError for an unknown controller. */
     std::vector<ControllerParameterInfo>
-    controllerParameters(const std::string &name,
-                         const PlannerRegistry &registry = PlannerRegistry::builtin());
+    controllerParameters(const std::string &name, const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief Print the controllers \e names (all field controllers and "plan:<PLANNER>" when empty) with
         their parameters, defaults, ranges and descriptions, in the layout of `mhplan planners`. */
     void printControllers(std::ostream &out, const std::vector<std::string> &names = {},
-                          const PlannerRegistry &registry = PlannerRegistry::builtin());
+                          const PlannerRegistry &registry = builtinPlanners());
 
     /** \brief An obstacle as a controller senses it (a view: no ownership). */
     struct SensedObstacle
@@ -229,7 +228,7 @@ namespace mhplan
         between the robot disc at P and the obstacle's surface; J = +infinity when d(P) <= 0, when the disc
         at P leaves the bounds, or when the straight segment r -> P is not free (static world exactly, and
         the sensed discs): what the robot cannot reach in a straight line it does not rate (the choice of
-        mhplan's BFO planner, BacterialForaging.h). S bacteria start uniformly (by area) in the sector of
+        mhplan's online BFO planner, BacterialWalk.h). S bacteria start uniformly (by area) in the sector of
         +-sector_angle about the direction to g, up to D_sense from r; a move that leaves that sensing disc
         or the bounds is projected back (as in the planner). Then Passino's loops (6.1): Ned x Nre x Nc
         chemotactic steps, each bacterium tumbles along phi = Delta/|Delta|, Delta ~ U(-1, 1)^2, moves C phi
@@ -357,7 +356,7 @@ namespace mhplan
         /** \brief Plans with planner \e planner of \e registry, which must outlive the controller (throws
             InputError for an unknown one). */
         explicit PlanFollowController(std::string planner,
-                                      const PlannerRegistry &registry = PlannerRegistry::builtin());
+                                      const PlannerRegistry &registry = builtinPlanners());
         std::string name() const override { return "plan:" + planner_; }
         void reset(const Simulation &sim, ompl::RNG &rng) override;
         void taskStarted(const Simulation &sim, std::size_t i) override;

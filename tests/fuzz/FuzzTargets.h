@@ -130,7 +130,7 @@ namespace mhplan::fuzz
             info->setup();
             return info;
         }();
-        const PlannerRegistry &registry = PlannerRegistry::builtin();
+        const PlannerRegistry &registry = builtinPlanners();
         static const std::vector<std::string> names = registry.names();
         const std::string planner = names[static_cast<unsigned char>(input[0]) % names.size()];
         std::vector<std::string> argv;
