@@ -51,6 +51,12 @@ namespace
         fs::create_directories(dir);
         c.database = (dir / "tiny.db").string();
         c.logDir = (dir / "logs").string();
+        // The GA runs are compared (solved, lengths across shards): they must end by their iteration bound
+        // (5 and 3), never by the clock. bench_tiny.yaml's 0.05 s did not always fit 5 GA iterations
+        // (measured up to 15 ms in a release build on a loaded machine, 3-5 times more with the
+        // sanitizers); 0.5 s is RRT*'s budget and the GA's safety net, and gaIterationsShort() checks that
+        // the net never caught a GA run.
+        c.timeLimit = 0.5;
         c.planners.push_back({"CrashAbort", "CrashTest", {{"mode", "abort"}}, {}});
         c.planners.push_back({"CrashThrow", "CrashTest", {{"mode", "throw"}}, {}});
         return c;
@@ -69,6 +75,16 @@ namespace
     }
 
     constexpr int kRunsPerExperiment = 5 * 3; // planners x runs
+
+    /** GA runs of a tiny campaign's database that stopped before their max_iterations (5 for GA, 3 for
+        GA_small): the time limit, not the iteration bound, ended them. */
+    long long gaIterationsShort(const Sql &sql)
+    {
+        return sql.count(
+            "SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+            "WHERE (plannerConfigs.name = 'geometric_GA' AND runs.iterations != 5) OR "
+            "(plannerConfigs.name = 'geometric_GA_small' AND runs.iterations != 3)");
+    }
 } // namespace
 
 TEST(Campaign, ParsesAndRefusesBadInput)
@@ -157,10 +173,16 @@ TEST(Campaign, RefusesUnknownPlannersAndParametersBeforeRunning)
 class TinyCampaign : public ::testing::Test
 {
   protected:
-    static void SetUpTestSuite()
+    /** The campaign runs once per test process, in the first test's SetUp: googletest reports every test of
+        a suite whose SetUpTestSuite fails (or throws) as skipped, which CTest shows as "Skipped". */
+    void SetUp() override
     {
-        campaign_ = new Campaign(tinyCampaign("full"));
-        summary_ = new CampaignSummary(runCampaign(*campaign_, options(2)));
+        if (campaign_ == nullptr)
+        {
+            campaign_ = new Campaign(tinyCampaign("full"));
+            summary_ = new CampaignSummary(runCampaign(*campaign_, options(2)));
+        }
+        ASSERT_NE(summary_, nullptr) << "the tiny campaign failed (reported by the first test)";
     }
     static void TearDownTestSuite()
     {
@@ -220,6 +242,10 @@ TEST_F(TinyCampaign, DatabaseHasExpectedExperimentsPlannersRunsAndColumns)
     }
     EXPECT_EQ(sql.count("SELECT count(*) FROM experiments WHERE world = 'bfo_case1' AND obstacle_count > 0"),
               1);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                        "WHERE plannerConfigs.name LIKE 'geometric_GA%'"),
+              2 * 2 * 3);
+    EXPECT_EQ(gaIterationsShort(sql), 0);
     // Every run index 0..2 of every planner and experiment is present once.
     EXPECT_EQ(
         sql.count("SELECT count(DISTINCT experimentid || '/' || plannerid || '/' || run_index) FROM runs"),
@@ -371,6 +397,8 @@ TEST_F(TinyCampaign, ShardedRunsMergeToTheSameRows)
     EXPECT_EQ(sharded.count("SELECT count(*) FROM runs"), whole.count("SELECT count(*) FROM runs"));
     EXPECT_EQ(sharded.count("SELECT count(*) FROM experiments"), 2);
     // Seeds derive from names, not from the process layout: the GA runs (iteration-bounded) are identical.
+    EXPECT_EQ(gaIterationsShort(sharded), 0);
+    EXPECT_EQ(gaIterationsShort(whole), 0);
     const auto a = lengthsByRun(sharded), b = lengthsByRun(whole);
     std::size_t compared = 0;
     for (const auto &kv : a)

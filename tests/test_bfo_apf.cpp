@@ -419,8 +419,12 @@ struct PaperCase
 {
     const char *planner;
     int world;
-    /** \brief Measured median and best lengths over seeds 1..20, asserted with a margin of about 0.3%. */
+    /** \brief Measured median length over seeds 1..20 plus about 0.3%. */
     double medianBound;
+    /** \brief Measured best length over seeds 1..20 plus about 0.1%. The seeds end within 0.01% of each
+        other (measured: best 14.4583 / median 14.4585 on case 1, 14.6230 / 14.6236 on case 2), so a best
+        bound with the median's margin would equal the median bound and could never fail on its own; this
+        one lies below the median bound. */
     double bestBound;
 };
 
@@ -460,14 +464,15 @@ TEST_P(BfoPaperWorlds, ReachTheGoalWithAValidPath)
               << 100.0 * (med / optimum - 1.0) << "% vs optimum " << optimum << "), best " << best
               << ", mean time " << seconds / 20 << " s, " << evaluations / 20 << " J evaluations per run, "
               << std::setprecision(0) << evaluations / std::max(seconds, 1e-9) << " evaluations/s\n";
+    ASSERT_LT(pc.bestBound, pc.medianBound) << "a best bound at or above the median bound asserts nothing";
     EXPECT_LE(med, pc.medianBound);
     EXPECT_LE(best, pc.bestBound);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Paper, BfoPaperWorlds,
-    ::testing::Values(PaperCase{"BFO", 1, 14.50, 14.50}, PaperCase{"ATBFO", 1, 14.93, 14.50},
-                      PaperCase{"BFO", 2, 14.67, 14.67}, PaperCase{"ATBFO", 2, 14.67, 14.67}),
+    ::testing::Values(PaperCase{"BFO", 1, 14.50, 14.473}, PaperCase{"ATBFO", 1, 14.50, 14.473},
+                      PaperCase{"BFO", 2, 14.67, 14.638}, PaperCase{"ATBFO", 2, 14.67, 14.638}),
     [](const ::testing::TestParamInfo<PaperCase> &info)
     { return std::string(info.param.planner) + "_case" + std::to_string(info.param.world); });
 
@@ -505,13 +510,23 @@ TEST_F(BfoApf, ApfStopsInAUTrapWithAnApproximateSolution)
 
 TEST_F(BfoApf, ApfOnThePaperWorlds)
 {
+    // APF draws nothing at random: measured, both walks reach the goal (case 1 length 15.1303, case 2
+    // 15.5505); asserted with a margin of about 0.3%.
     for (int c : {1, 2})
     {
-        const RunResult r = runPlanner(c == 1 ? case1() : case2(), "APF", 1);
+        const World w = c == 1 ? case1() : case2();
+        const RunResult r = runPlanner(w, "APF", 1);
         std::cout << "APF case " << c << ": status " << r.status.asString() << ", length "
                   << polylineLength(r.path) << ", " << r.evaluations << " J evaluations, " << r.seconds
                   << " s\n";
-        EXPECT_TRUE(r.motionValid);
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION) << "case " << c;
+        ASSERT_GE(r.path.size(), 2u);
+        EXPECT_EQ(r.path.front(), w.queries[0].start);
+        EXPECT_EQ(r.path.back(), w.queries[0].goal);
+        EXPECT_TRUE(r.motionValid) << "case " << c;
+        EXPECT_TRUE(denselyValid(w, r.path)) << "case " << c;
+        EXPECT_GE(polylineLength(r.path), (c == 1 ? 14.2734 : 14.4198) - 1e-3) << "case " << c;
+        EXPECT_LE(polylineLength(r.path), c == 1 ? 15.18 : 15.60) << "case " << c;
     }
 }
 
@@ -524,16 +539,18 @@ TEST_F(BfoApf, GlobalModeSearchesTheWaypointEncoding)
     for (const char *name : {"BFO-GLOBAL", "ATBFO-GLOBAL"})
     {
         const RunResult r = runPlanner(w, name, 3, {{"max_iterations", "40"}, {"step_size", "0.5"}});
-        EXPECT_TRUE(r.status == ob::PlannerStatus::EXACT_SOLUTION ||
-                    r.status == ob::PlannerStatus::APPROXIMATE_SOLUTION)
-            << name;
         std::cout << name << " global: " << r.status.asString() << ", length " << polylineLength(r.path)
                   << ", " << r.evaluations << " evaluations\n";
-        if (r.status == ob::PlannerStatus::EXACT_SOLUTION)
-        {
-            EXPECT_TRUE(r.motionValid);
-            EXPECT_TRUE(denselyValid(w, r.path));
-        }
+        // Seeded and bounded by its 40 iterations: measured, both reach the goal (BFO length 14.4166,
+        // ATBFO 14.3771, against the optimum 14.2734); asserted with a margin of about 0.3%.
+        ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION) << name;
+        ASSERT_GE(r.path.size(), 2u);
+        EXPECT_EQ(r.path.front(), w.queries[0].start) << name;
+        EXPECT_EQ(r.path.back(), w.queries[0].goal) << name;
+        EXPECT_TRUE(r.motionValid) << name;
+        EXPECT_TRUE(denselyValid(w, r.path)) << name;
+        EXPECT_GE(polylineLength(r.path), 14.2734 - 1e-3) << name;
+        EXPECT_LE(polylineLength(r.path), std::string(name) == "BFO-GLOBAL" ? 14.46 : 14.42) << name;
     }
 }
 
