@@ -4,7 +4,6 @@
 #include "mhplan/collision/detail/FclShapes.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
@@ -41,8 +40,22 @@ namespace mhplan
             }
         };
 
+        /** The pair a manager hands to a callback, query (the robot piece, without user data) first: FCL
+           0.7's libccd solver gave a wrong distance for (box, convex) where (convex, box) was right, so every
+            narrow-phase call has one order, uses FCL's own GJK solver (GST_INDEP) and no Box shapes. */
+        std::pair<fcl::CollisionObjectd *, fcl::CollisionObjectd *> queryFirst(fcl::CollisionObjectd *o1,
+                                                                               fcl::CollisionObjectd *o2)
+        {
+            return o1->getUserData() == nullptr ? std::make_pair(o1, o2) : std::make_pair(o2, o1);
+        }
+
         struct DistanceData
         {
+            DistanceData()
+            {
+                request.gjk_solver_type = fcl::GST_INDEP;
+                request.distance_tolerance = 1e-9;
+            }
             double best{kInf};
             fcl::DistanceRequestd request;
         };
@@ -51,7 +64,8 @@ namespace mhplan
         {
             auto &d = *static_cast<DistanceData *>(cdata);
             fcl::DistanceResultd result;
-            fcl::distance(o1, o2, d.request, result);
+            const auto pair = queryFirst(o1, o2);
+            fcl::distance(pair.first, pair.second, d.request, result);
             d.best = std::min(d.best, result.min_distance);
             dist = std::max(d.best, 0.0);
             return d.best <= 0.0; // in contact: nothing can be closer
@@ -59,6 +73,7 @@ namespace mhplan
 
         struct CollideData
         {
+            CollideData() { request.gjk_solver_type = fcl::GST_INDEP; }
             bool hit{false};
             fcl::CollisionRequestd request;
         };
@@ -67,7 +82,8 @@ namespace mhplan
         {
             auto &d = *static_cast<CollideData *>(cdata);
             fcl::CollisionResultd result;
-            fcl::collide(o1, o2, d.request, result);
+            const auto pair = queryFirst(o1, o2);
+            fcl::collide(pair.first, pair.second, d.request, result);
             d.hit = d.hit || result.isCollision();
             return d.hit;
         }
@@ -120,6 +136,7 @@ namespace mhplan
             tf.translation() = fcl::Vector3d(at.x, at.y, 0.0);
             m.geometries.push_back(g);
             m.objects.push_back(std::make_unique<fcl::CollisionObjectd>(g, tf));
+            m.objects.back()->setUserData(&m); // obstacles carry user data, the robot's pieces none
         };
         for (const Circle &c : world.circles)
             add(std::make_shared<fcl::Cylinderd>(c.radius, detail::kPrismHeight), c.center);
@@ -143,8 +160,7 @@ namespace mhplan
                     const Box first = g.cellBox(ix, iy);
                     const Box last = g.cellBox(end - 1, iy);
                     const Box run{first.xmin, last.xmax, first.ymin, first.ymax};
-                    add(std::make_shared<fcl::Boxd>(run.width(), run.height(), detail::kPrismHeight),
-                        {0.5 * (run.xmin + run.xmax), 0.5 * (run.ymin + run.ymax)});
+                    add(detail::makePrism(square(run)), {0.0, 0.0});
                     ix = end;
                 }
         }
@@ -217,7 +233,6 @@ namespace mhplan
         if (impl_->objects.empty())
             return kInf;
         DistanceData data;
-        data.request.distance_tolerance = 1e-9;
         for (std::size_t i = 0; i < impl_->robot.size() && data.best > 0.0; ++i)
         {
             PlacedPiece piece(impl_->robot[i], p, impl_->placedBox(i, p, radius_));

@@ -32,8 +32,9 @@ namespace mhplan
     /** \brief The robot of an SE(2)-based world against its obstacles (circles, polygons or an occupancy
        grid) through FCL: the robot is a prism over its polygon (split into convex pieces when it is not
        convex) or a cylinder (a disc robot; a point robot is a disc of radius 1e-9), every obstacle a prism or
-       cylinder (a grid's blocked cells as boxes, one per horizontal run of blocked cells), all of one height
-       so that FCL's 3D distances are the planar ones.
+       cylinder (a grid's blocked cells as rectangular prisms, one per horizontal run of blocked cells; FCL's
+       own GJK solver, the robot first in every pair: docs/spaces.md says why), all of one height so that
+       FCL's 3D distances are the planar ones.
 
         - inBounds(p): every point of the robot lies in the closed bounds (every vertex of the polygon, or
           the disc).

@@ -119,7 +119,7 @@ namespace mhplan
         };
     } // namespace
 
-    double CertifiedMotionValidator::certify(const ob::State *s1, const ob::State *s2) const
+    double CertifiedMotionValidator::certify(const ob::State *s1, const ob::State *s2, bool prefix) const
     {
         const double f1 = model_->freeDistance(statePose(s1));
         const double f2 = model_->freeDistance(statePose(s2));
@@ -138,7 +138,7 @@ namespace mhplan
         stack.push_back({0.0, 1.0, f1, std::max(f2, 0.0)});
         double certified = 0.0; // pieces are certified left to right: [0, certified] is safe
         bool failed = false;
-        while (!stack.empty() && !failed)
+        while (!stack.empty())
         {
             const Piece p = stack.back();
             stack.pop_back();
@@ -151,7 +151,7 @@ namespace mhplan
             if (d < resolution_)
             {
                 failed = true;
-                break;
+                break; // nothing after this piece can be certified
             }
             const double tm = 0.5 * (p.ta + p.tb);
             motion.at(tm, mid);
@@ -160,7 +160,12 @@ namespace mhplan
             if (!(fm > 0.0))
             {
                 failed = true;
-                break;
+                if (!prefix)
+                    break;
+                // Only the part before tm can still be certified: forget the pieces after it.
+                stack.clear();
+                stack.push_back({p.ta, tm, p.fa, 0.0});
+                continue;
             }
             stack.push_back({tm, p.tb, fm, p.fb});
             stack.push_back({p.ta, tm, p.fa, fm});
@@ -171,7 +176,7 @@ namespace mhplan
 
     bool CertifiedMotionValidator::checkMotion(const ob::State *s1, const ob::State *s2) const
     {
-        const bool ok = certify(s1, s2) >= 1.0;
+        const bool ok = certify(s1, s2, false) >= 1.0;
         if (ok)
             ++valid_;
         else
@@ -182,7 +187,7 @@ namespace mhplan
     bool CertifiedMotionValidator::checkMotion(const ob::State *s1, const ob::State *s2,
                                                std::pair<ob::State *, double> &lastValid) const
     {
-        const double c = certify(s1, s2);
+        const double c = certify(s1, s2, true);
         if (c >= 1.0)
         {
             ++valid_;

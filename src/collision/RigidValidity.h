@@ -100,8 +100,10 @@ namespace mhplan
         std::size_t evaluations() const { return evaluations_; }
 
       private:
-        /** Certify [0, 1]; returns the certified prefix's end (1 when the whole motion is). */
-        double certify(const ompl::base::State *s1, const ompl::base::State *s2) const;
+        /** Certify [0, 1]; returns the certified prefix's end (1 when the whole motion is). Without \e prefix
+            it stops at the first pose found in collision (the prefix returned is then a safe underestimate);
+            with it, it goes on certifying the part before that pose. */
+        double certify(const ompl::base::State *s1, const ompl::base::State *s2, bool prefix) const;
 
         RigidBodyModelPtr model_;
         SpaceType type_;
