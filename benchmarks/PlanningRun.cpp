@@ -9,6 +9,7 @@
 #include "mhplan/base/Version.h"
 #include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
+#include "mhplan/collision/RigidValidity.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/registry/Registry.h"
@@ -41,6 +42,40 @@ namespace mhplan::bench::detail
             for (const Vec2 &p : pts)
                 out += num(p.x) + " " + num(p.y) + ";";
             return out;
+        }
+
+        /** The metrics of a path of an SE(2)-based world (docs/spaces.md, "Rigid-body and car worlds"): the
+            length in the space's metric, the independent dense check along the space's interpolation, the
+            FCL clearance, the Reeds-Shepp cusps; smoothness and curvature of the waypoints (se2) or of the
+            driven curve sampled every eighth of the turning radius (cars). The stored path is what the robot
+            drives: the waypoints (se2) or the sampled curve (cars). */
+        void rigidRunProperties(const ExperimentSetup &xs, const ob::SpaceInformation &si,
+                                const og::PathGeometric &path, ot::Benchmark::RunProperties &run,
+                                std::vector<Vec2> &drawn)
+        {
+            const RigidBodyModel model(xs.world);
+            const RigidPathMetrics m = rigidPathMetrics(xs.world, si, path, model, xs.metricStep);
+            drawn = pathPoints(path);
+            if (xs.world.space != SpaceType::SE2)
+            {
+                const double spacing = xs.world.turningRadius / 8.0;
+                const std::size_t every =
+                    std::max<std::size_t>(1, static_cast<std::size_t>(spacing / xs.metricStep));
+                drawn.clear();
+                for (std::size_t i = 0; i < m.poses.size(); i += every)
+                    drawn.emplace_back(m.poses[i].x, m.poses[i].y);
+                drawn.emplace_back(m.poses.back().x, m.poses.back().y);
+            }
+            const std::vector<Vec2> shape = withoutDuplicates(drawn);
+            run["path length REAL"] = num(m.length);
+            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+            run["min clearance REAL"] = num(m.minClearance);
+            run["mean clearance REAL"] = num(m.meanClearance);
+            run["smoothness REAL"] = num(smoothness(shape));
+            run["max curvature REAL"] = num(maxCurvature(shape));
+            run["angle over length REAL"] = num(angleOverLength(shape));
+            run["cusps INTEGER"] =
+                std::to_string(xs.world.space == SpaceType::SE2 ? cuspCount(shape) : m.cusps);
         }
 
         struct WorkerInfo
@@ -146,20 +181,31 @@ namespace mhplan::bench::detail
                             if (pdef->hasSolution() && run["status ENUM"] != crash)
                             {
                                 const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
-                                const std::vector<Vec2> pts = pathPoints(*geo);
-                                const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
-                                run["path length REAL"] = num(m.length);
-                                run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
-                                run["min clearance REAL"] = num(m.minClearance);
-                                run["mean clearance REAL"] = num(m.meanClearance);
-                                run["smoothness REAL"] = num(m.smoothness);
-                                run["max curvature REAL"] = num(m.maxCurvature);
-                                run["angle over length REAL"] = num(m.angleOverLength);
-                                run["cusps INTEGER"] = std::to_string(m.cusps);
-                                if (pdef->hasExactSolution())
-                                    run["optimality gap REAL"] =
-                                        num(optimalityGapPercent(m.length, xs.optimum));
-                                path = encodePath(pts);
+                                if (xs.world.isRigid())
+                                {
+                                    std::vector<Vec2> drawn;
+                                    rigidRunProperties(xs, *si, *geo, run, drawn);
+                                    if (pdef->hasExactSolution())
+                                        run["optimality gap REAL"] = num(std::nan(""));
+                                    path = encodePath(drawn);
+                                }
+                                else
+                                {
+                                    const std::vector<Vec2> pts = pathPoints(*geo);
+                                    const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
+                                    run["path length REAL"] = num(m.length);
+                                    run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+                                    run["min clearance REAL"] = num(m.minClearance);
+                                    run["mean clearance REAL"] = num(m.meanClearance);
+                                    run["smoothness REAL"] = num(m.smoothness);
+                                    run["max curvature REAL"] = num(m.maxCurvature);
+                                    run["angle over length REAL"] = num(m.angleOverLength);
+                                    run["cusps INTEGER"] = std::to_string(m.cusps);
+                                    if (pdef->hasExactSolution())
+                                        run["optimality gap REAL"] =
+                                            num(optimalityGapPercent(m.length, xs.optimum));
+                                    path = encodePath(pts);
+                                }
                             }
                             const std::vector<Improvement> better = run["status ENUM"] == crash
                                                                         ? std::vector<Improvement>{}
@@ -210,6 +256,13 @@ namespace mhplan::bench::detail
         xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
         xs.metricStep = defaultMetricStep(xs.world);
         const Clock::time_point t0 = Clock::now();
+        if (xs.world.isRigid())
+        {
+            // No exact optimum in SE(2)-based spaces: the optimum columns stay empty (NULL) and the report
+            // measures gaps to the best cost any planner found (docs/spaces.md).
+            xs.optimumSeconds = 0.0;
+            return;
+        }
         try
         {
             const OptimumResult opt = computeOptimum(xs.world, xs.query);
@@ -336,10 +389,22 @@ namespace mhplan::bench::detail
             x.parameters["grid_cells INTEGER"] =
                 std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
         x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
+        if (xs.world.isRigid())
+        {
+            // Only SE(2)-based experiments carry these (r2 experiments keep their columns).
+            x.parameters["space TEXT"] = toString(xs.world.space);
+            if (xs.world.turningRadius > 0.0)
+                x.parameters["turning_radius REAL"] = num(xs.world.turningRadius);
+            x.parameters["robot_reach REAL"] = num(xs.world.robotReach());
+        }
         x.parameters["query TEXT"] = xs.query.name;
         std::ostringstream q;
-        q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
-          << xs.query.goal.y << ")";
+        if (xs.world.isRigid())
+            q << "(" << xs.query.start.x << "," << xs.query.start.y << "," << xs.query.startYaw << ")->("
+              << xs.query.goal.x << "," << xs.query.goal.y << "," << xs.query.goalYaw << ")";
+        else
+            q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
+              << xs.query.goal.y << ")";
         x.parameters["query_points TEXT"] = q.str();
         // Experiment properties go to the database verbatim (no NaN to NULL conversion): leave an unknown
         // optimum out.
@@ -360,7 +425,7 @@ namespace mhplan::bench::detail
             x.parameters["octile_optimum REAL"] = num(e.octileOptimum);
             x.parameters["octile_optimum_m REAL"] = num(e.octileOptimum * xs.world.grid->cellSize());
         }
-        x.parameters["collision_backend TEXT"] = xs.model->name();
+        x.parameters["collision_backend TEXT"] = xs.world.isRigid() ? "fcl-rigid" : xs.model->name();
         x.parameters["config_hash TEXT"] = e.configHash;
         x.parameters["mhplan_version TEXT"] = version();
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)

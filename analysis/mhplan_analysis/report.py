@@ -38,6 +38,45 @@ def _optimum(exp):
     return dbmod.to_float(dbmod.experiment_value(exp, "exact_optimum", "optimum", "optimum_length"))
 
 
+SPACES_WITHOUT_OPTIMUM = ("se2", "dubins", "reeds_shepp")
+
+
+def _space(exp):
+    """The experiment's state space when it is an SE(2)-based one (docs/spaces.md), else None."""
+    space = dbmod.experiment_value(exp, "space")
+    return space if space in SPACES_WITHOUT_OPTIMUM else None
+
+
+def _valid_exact_lengths(database, exp, planner=None):
+    """(length, run) of the exact runs whose path passed the independent check (collision_free not 0)."""
+    out = []
+    for p in [planner] if planner else database.planners_of(exp.id):
+        for r in database.runs_of(exp.id, p):
+            if r.outcome != "exact" or dbmod.run_value(r, "collision_free") == 0:
+                continue
+            length = _run_length(database, r)
+            if length is not None:
+                out.append((length, r))
+    return out
+
+
+def _best_found(database, exp):
+    """SE(2)-based experiments have no exact optimum: their gaps are measured to the best cost any planner
+    found in the campaign on that problem (exact, collision-free runs). None for every other experiment."""
+    if not _space(exp) or _optimum(exp):
+        return None
+    lengths = [l for l, _ in _valid_exact_lengths(database, exp)]
+    return min(lengths) if lengths else None
+
+
+def _best_found_gaps(database, exp, planner, chosen=None):
+    best = _best_found(database, exp)
+    if not best:
+        return []
+    ids = None if chosen is None else {r.id for r in chosen}
+    return [100.0 * (l - best) / best for l, r in _valid_exact_lengths(database, exp, planner) if ids is None or r.id in ids]
+
+
 def _slug(text):
     return "".join(c if c.isalnum() or c in "-_" else "_" for c in text)
 
@@ -71,6 +110,8 @@ def table_rows(database, exp):
         gaps = [dbmod.run_value(r, gap_col) for r in exact] if gap_col else []
         if not gap_col and opt:
             gaps = [100.0 * (l - opt) / opt for l, _ in lengths]
+        if _best_found(database, exp):
+            gaps = _best_found_gaps(database, exp, planner)
         rows.append(
             {
                 "planner": planner,
@@ -114,8 +155,12 @@ def box_plots(database, exp, outdir):
             # Quality attributes over exact runs only; time over all runs.
             chosen = runs if key == "time" else [r for r in runs if r.outcome == "exact"]
             vals = [dbmod.run_value(r, col) for r in chosen]
+            if key == "gap" and _best_found(database, exp):
+                vals = _best_found_gaps(database, exp, p, chosen)
             data.append([v for v in vals if v is not None])
             names.append(p)
+        if key == "gap" and _best_found(database, exp):
+            label = "gap to best found [%] (no exact optimum)"
         if not any(data):
             missing.append(label)
         ax.boxplot([d if d else [np.nan] for d in data], vert=True, widths=0.6, showfliers=True)
@@ -129,6 +174,9 @@ def box_plots(database, exp, outdir):
             ax.set_yscale("symlog", linthresh=1.0)
         if key == "length" and _optimum(exp):
             ax.axhline(_optimum(exp), color="#1f77b4", linestyle="--", linewidth=1, label="exact optimum")
+            ax.legend(fontsize=7, loc="upper right")
+        elif key == "length" and _best_found(database, exp):
+            ax.axhline(_best_found(database, exp), color="#1f77b4", linestyle=":", linewidth=1, label="best found")
             ax.legend(fontsize=7, loc="upper right")
         ax.grid(axis="y", alpha=0.3)
     fig.suptitle(exp.name, fontsize=11)
@@ -205,6 +253,9 @@ def convergence_plot(database, exp, outdir, colors):
         ax.axhline(opt, color="black", linestyle="--", linewidth=1, label="exact optimum %.4f" % opt)
         top = ax.get_ylim()[1]
         ax.set_ylim(opt * 0.995, min(top, opt * 1.6))
+    elif _best_found(database, exp):
+        best = _best_found(database, exp)
+        ax.axhline(best, color="black", linestyle=":", linewidth=1, label="best found %.4f (no exact optimum)" % best)
     ax.set_xscale("log")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("best cost (median, 95% CI)")
@@ -466,10 +517,15 @@ def write_report(database_path, outdir, world_dir=None):
     for exp in planning:
         rows = sorted(per_exp_tables[exp.id], key=lambda r: (-r["counts"]["exact"] / max(r["runs"], 1), r["median_gap"] if r["median_gap"] is not None else math.inf))
         opt = _optimum(exp)
-        parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), _fmt(opt, 4) if opt else "not recorded (no gaps)"))
+        best = _best_found(database, exp)
+        if best:
+            reference = "none in space %s; gaps are to the best found cost %s (the best exact, collision-free path any planner of the campaign found)" % (html.escape(_space(exp)), _fmt(best, 4))
+        else:
+            reference = _fmt(opt, 4) if opt else "not recorded (no gaps)"
+        parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), reference))
         parts.append(
             _table(
-                ["planner", "success rate", "median gap", "median time to within 1% [s] [95% CI] (reached/runs)", "runs"],
+                ["planner", "success rate", "median gap to best found" if best else "median gap", "median time to within 1% [s] [95% CI] (reached/runs)", "runs"],
                 [
                     (
                         html.escape(r["planner"]),

@@ -22,6 +22,40 @@ namespace mhplan
         return static_cast<std::size_t>(std::count(cells_.begin(), cells_.end(), std::uint8_t{1}));
     }
 
+    std::string toString(SpaceType space)
+    {
+        switch (space)
+        {
+        case SpaceType::R2:
+            return "r2";
+        case SpaceType::SE2:
+            return "se2";
+        case SpaceType::Dubins:
+            return "dubins";
+        case SpaceType::ReedsShepp:
+            return "reeds_shepp";
+        }
+        return "r2";
+    }
+
+    SpaceType parseSpaceType(const std::string &word)
+    {
+        for (SpaceType s : {SpaceType::R2, SpaceType::SE2, SpaceType::Dubins, SpaceType::ReedsShepp})
+            if (toString(s) == word)
+                return s;
+        throw InputError("unknown space '" + word + "'; accepted: r2, se2, dubins, reeds_shepp");
+    }
+
+    double World::robotReach() const
+    {
+        if (robotPolygon.empty())
+            return robotRadius;
+        double r = 0.0;
+        for (const Vec2 &v : robotPolygon)
+            r = std::max(r, norm(v));
+        return r;
+    }
+
     std::string World::type() const
     {
         if (isGrid())

@@ -93,13 +93,30 @@ namespace mhplan
         std::vector<std::uint8_t> cells_;
     };
 
-    /** \brief A named planning query. */
+    /** \brief A named planning query. In an SE(2)-based world (se2, dubins, reeds_shepp) start and goal are
+        poses: the position and a heading in radians (default 0); an r2 world has no headings (both 0). */
     struct Query
     {
         std::string name{"default"};
         Vec2 start;
         Vec2 goal;
+        double startYaw{0.0};
+        double goalYaw{0.0};
     };
+
+    /** \brief The configuration space of a world's robot (docs/spaces.md, "Rigid-body and car worlds"). */
+    enum class SpaceType
+    {
+        R2,        ///< a disc or point robot translating in the plane (RealVectorStateSpace(2))
+        SE2,       ///< a rigid body translating and rotating freely (SE2StateSpace)
+        Dubins,    ///< a forward-only car with a minimum turning radius (DubinsStateSpace)
+        ReedsShepp ///< a car that also reverses, with a minimum turning radius (ReedsSheppStateSpace)
+    };
+
+    /** \brief "r2", "se2", "dubins", "reeds_shepp" (the world file's words). */
+    std::string toString(SpaceType space);
+    /** \brief Parse the world file's word; throws InputError listing the accepted words. */
+    SpaceType parseSpaceType(const std::string &word);
 
     /** \brief A 2D world: bounds, a disc robot, obstacles (geometric or an occupancy grid) and queries.
         Validity (see Collision.h): a robot position is valid when the disc lies inside the bounds and does
@@ -118,6 +135,13 @@ namespace mhplan
 
         Box bounds;
         double robotRadius{0.0};
+        /** \brief The robot's outline in its own frame (a simple polygon, counter-clockwise); empty for a
+           disc (or point) robot of radius robotRadius. Only in SE(2)-based spaces. */
+        std::vector<Vec2> robotPolygon;
+        /** \brief The robot's configuration space (r2 by default). */
+        SpaceType space{SpaceType::R2};
+        /** \brief The cars' minimum turning radius (dubins, reeds_shepp); 0 otherwise. */
+        double turningRadius{0.0};
         std::vector<Circle> circles;
         std::vector<Polygon> polygons;
         /** \brief Set for grid worlds; then circles and polygons are empty. */
@@ -125,6 +149,11 @@ namespace mhplan
         std::vector<Query> queries;
 
         bool isGrid() const { return grid != nullptr; }
+        /** \brief True for the SE(2)-based spaces (se2, dubins, reeds_shepp): a pose has a heading. */
+        bool isRigid() const { return space != SpaceType::R2; }
+        /** \brief The farthest point of the robot from its origin: the farthest polygon vertex, or the disc's
+            radius. */
+        double robotReach() const;
         /** \brief "grid", "circles", "polygons" or "mixed". */
         std::string type() const;
         std::size_t obstacleCount() const;

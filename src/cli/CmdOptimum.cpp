@@ -62,7 +62,7 @@ namespace mhplan::cli
             out.key("world");
             writeWorldSummary(out, world);
             out.key("query");
-            writeQuery(out, query);
+            writeQuery(out, query, world.isRigid());
             out.field("method", r.method)
                 .field("found", r.found)
                 .field("graph_nodes", r.graphNodes)

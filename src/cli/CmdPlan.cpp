@@ -6,7 +6,9 @@
 #include "mhplan/cli/Help.h"
 #include "mhplan/cli/Json.h"
 #include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
+#include "mhplan/collision/RigidValidity.h"
 #include "mhplan/draw/Svg.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/optimum/Optimum.h"
@@ -83,23 +85,61 @@ namespace mhplan::cli
         if (!json)
         {
             std::cout << "world:     " << world.name << " (" << world.type() << ", " << world.obstacleCount()
-                      << " obstacles, robot radius " << world.robotRadius << ")\n";
-            std::cout << "query:     " << query.name << " (" << query.start.x << ", " << query.start.y
-                      << ") -> (" << query.goal.x << ", " << query.goal.y << ")\n";
+                      << " obstacles, ";
+            if (world.robotPolygon.empty())
+                std::cout << "robot radius " << world.robotRadius << ")\n";
+            else
+                std::cout << "robot polygon of " << world.robotPolygon.size() << " vertices, reach "
+                          << world.robotReach() << ")\n";
+            if (world.isRigid())
+            {
+                std::cout << "space:     " << toString(world.space);
+                if (world.turningRadius > 0.0)
+                    std::cout << " (turning radius " << world.turningRadius << ")";
+                std::cout << "\n";
+                std::cout << "query:     " << query.name << " (" << query.start.x << ", " << query.start.y
+                          << ", yaw " << query.startYaw << ") -> (" << query.goal.x << ", " << query.goal.y
+                          << ", yaw " << query.goalYaw << ")\n";
+            }
+            else
+                std::cout << "query:     " << query.name << " (" << query.start.x << ", " << query.start.y
+                          << ") -> (" << query.goal.x << ", " << query.goal.y << ")\n";
             std::cout << "planner:   " << plannerName << "\n";
             std::cout << "seed:      " << seed << "\n";
-            std::cout << "collision: " << model->name() << "\n";
+            std::cout << "collision: "
+                      << (world.isRigid() ? "fcl rigid body, certified motions" : model->name()) << "\n";
         }
 
         const ompl::time::point t0 = ompl::time::now();
         const ob::PlannerStatus status = ss->solve(timeLimit);
         const double solveTime = ompl::time::seconds(ompl::time::now() - t0);
         const bool havePath = ss->haveSolutionPath();
-        const std::vector<Vec2> pts = havePath ? pathPoints(ss->getSolutionPath()) : std::vector<Vec2>{};
+        std::vector<Vec2> pts = havePath ? pathPoints(ss->getSolutionPath()) : std::vector<Vec2>{};
         bool collisionFree = havePath;
-        for (std::size_t i = 1; i < pts.size(); ++i)
-            collisionFree = collisionFree && model->segmentValid(pts[i - 1], pts[i]);
-        const double length = polylineLength(pts);
+        double length = polylineLength(pts);
+        RigidPathMetrics rigid;
+        std::vector<Pose2> poses;
+        if (world.isRigid() && havePath)
+        {
+            // Independent dense check along the space's interpolation; the cost in the space's metric.
+            const og::PathGeometric &path = ss->getSolutionPath();
+            rigid = rigidPathMetrics(world, *ss->getSpaceInformation(), path, RigidBodyModel(world),
+                                     defaultMetricStep(world));
+            collisionFree = rigid.collisionFree;
+            length = rigid.length;
+            for (std::size_t i = 0; i < path.getStateCount(); ++i)
+                poses.push_back(statePose(path.getState(i)));
+            // Draw what the robot drives (a car's arcs), not the chords between waypoints.
+            std::vector<Vec2> drawn;
+            const std::size_t every = std::max<std::size_t>(1, rigid.poses.size() / 2000);
+            for (std::size_t i = 0; i < rigid.poses.size(); i += every)
+                drawn.emplace_back(rigid.poses[i].x, rigid.poses[i].y);
+            drawn.emplace_back(rigid.poses.back().x, rigid.poses.back().y);
+            pts = drawn;
+        }
+        else
+            for (std::size_t i = 1; i < pts.size(); ++i)
+                collisionFree = collisionFree && model->segmentValid(pts[i - 1], pts[i]);
         const OptimumOrReason optimum =
             havePath ? optimumOrReason(world, query) : OptimumOrReason{OptimumResult{}, "no path"};
         const bool exactPath = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
@@ -117,7 +157,8 @@ namespace mhplan::cli
             out.key("world");
             writeWorldSummary(out, world);
             out.key("query");
-            writeQuery(out, query);
+            writeQuery(out, query, world.isRigid());
+            out.field("space", toString(world.space));
             out.field("planner", plannerName);
             std::map<std::string, std::string> values;
             planner->params().getParams(values);
@@ -146,6 +187,12 @@ namespace mhplan::cli
             out.key("gap_percent");
             withGap ? out.value(100.0 * optimalityGap(length, optimum.result)) : out.null();
             out.key("path").points(pts);
+            out.key("poses").beginArray();
+            for (const Pose2 &p : poses)
+                out.beginArray().value(p.x).value(p.y).value(p.yaw).endArray();
+            out.endArray();
+            out.key("cusps");
+            world.space == SpaceType::ReedsShepp &&havePath ? out.value(rigid.cusps) : out.null();
             out.key("svg");
             args.has("svg") && havePath ? out.value(args.get("svg")) : out.null();
             out.field("exit_code", code).endObject().finish();
@@ -159,7 +206,17 @@ namespace mhplan::cli
             std::cout << "no path\n";
             return 3;
         }
-        std::cout << std::setprecision(9) << "length:    " << length << "\n";
+        if (world.isRigid())
+        {
+            std::cout << std::setprecision(9) << "cost:      " << length << " (path length in the "
+                      << toString(world.space) << " metric"
+                      << (world.space == SpaceType::SE2 ? ": |dxy| + 0.5 |dyaw|" : ": the car's path length")
+                      << ")\n";
+            if (world.space == SpaceType::ReedsShepp)
+                std::cout << "cusps:     " << rigid.cusps << " (reversals of driving direction)\n";
+        }
+        else
+            std::cout << std::setprecision(9) << "length:    " << length << "\n";
         if (optimum.result.found)
         {
             std::cout << "optimum:   " << optimum.result.length << " (" << optimum.result.method << ")\n";
@@ -174,11 +231,25 @@ namespace mhplan::cli
         }
         else
             std::cout << "optimum:   not available (" << optimum.reason << ")\n";
-        std::cout << "valid:     " << (collisionFree ? "yes" : "NO") << " (exact segment check)\n";
-        std::cout << "path:      " << pts.size() << " states\n";
-        if (!args.has("quiet"))
-            for (const auto &p : pts)
-                std::cout << "  " << p.x << " " << p.y << "\n";
+        std::cout << "valid:     " << (collisionFree ? "yes" : "NO")
+                  << (world.isRigid()
+                          ? " (independent dense check of the robot along the space's interpolation)"
+                          : " (exact segment check)")
+                  << "\n";
+        if (world.isRigid())
+        {
+            std::cout << "path:      " << poses.size() << " states (x y yaw)\n";
+            if (!args.has("quiet"))
+                for (const auto &p : poses)
+                    std::cout << "  " << p.x << " " << p.y << " " << p.yaw << "\n";
+        }
+        else
+        {
+            std::cout << "path:      " << pts.size() << " states\n";
+            if (!args.has("quiet"))
+                for (const auto &p : pts)
+                    std::cout << "  " << p.x << " " << p.y << "\n";
+        }
         if (args.has("svg"))
             std::cout << "svg:       " << args.get("svg") << "\n";
         return code;

@@ -156,7 +156,17 @@ namespace mhplan::cli
             std::cout << std::left << std::setw(22) << w.name << std::setw(9) << w.type() << std::setw(11)
                       << w.obstacleCount() << std::setw(8) << w.robotRadius << std::setw(16) << bounds.str()
                       << (queries.empty() ? "-" : queries) << " / "
-                      << (w.source.empty() ? files[i] : w.source) << "\n";
+                      << (w.source.empty() ? files[i] : w.source);
+            if (w.isRigid())
+            {
+                std::cout << " [space " << toString(w.space);
+                if (w.turningRadius > 0.0)
+                    std::cout << ", turning radius " << w.turningRadius;
+                if (!w.robotPolygon.empty())
+                    std::cout << ", robot polygon of " << w.robotPolygon.size() << " vertices";
+                std::cout << "]";
+            }
+            std::cout << "\n";
         }
         return 0;
     }

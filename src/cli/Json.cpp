@@ -201,15 +201,30 @@ namespace mhplan::cli
             .field("file", world.file)
             .field("type", world.type())
             .field("obstacles", world.obstacleCount())
-            .field("robot_radius", world.robotRadius)
-            .endObject();
+            .field("robot_radius", world.robotRadius);
+        writeSpaceFields(json, world);
+        json.endObject();
     }
 
-    void writeQuery(JsonWriter &json, const Query &query)
+    void writeSpaceFields(JsonWriter &json, const World &world)
+    {
+        if (!world.isRigid())
+            return; // r2 worlds: the fields they always had, no more
+        json.field("space", toString(world.space));
+        json.key("turning_radius");
+        world.turningRadius > 0.0 ? json.value(world.turningRadius) : json.null();
+        json.key("robot_polygon");
+        world.robotPolygon.empty() ? json.null() : json.points(world.robotPolygon);
+        json.field("robot_reach", world.robotReach());
+    }
+
+    void writeQuery(JsonWriter &json, const Query &query, bool withYaw)
     {
         json.beginObject().field("name", query.name);
         json.key("start").point(query.start);
         json.key("goal").point(query.goal);
+        if (withYaw)
+            json.field("start_yaw", query.startYaw).field("goal_yaw", query.goalYaw);
         json.endObject();
     }
 
@@ -224,6 +239,7 @@ namespace mhplan::cli
             .field("assumptions", world.assumptions)
             .field("robot_radius", world.robotRadius)
             .field("obstacles", world.obstacleCount());
+        writeSpaceFields(json, world);
         json.key("bounds")
             .beginObject()
             .field("xmin", world.bounds.xmin)
@@ -271,7 +287,7 @@ namespace mhplan::cli
             json.null();
         json.key("queries").beginArray();
         for (const Query &q : world.queries)
-            writeQuery(json, q);
+            writeQuery(json, q, world.isRigid());
         json.endArray().endObject();
     }
 } // namespace mhplan::cli

@@ -78,8 +78,12 @@ namespace mhplan::cli
 
     /** \brief The "world" member of plan and optimum: {name, file, type, obstacles, robot_radius}. */
     void writeWorldSummary(JsonWriter &json, const World &world);
-    /** \brief A query: {name, start: [x, y], goal: [x, y]}. */
-    void writeQuery(JsonWriter &json, const Query &query);
+    /** \brief A query: {name, start: [x, y], goal: [x, y]}, with \e withYaw also start_yaw and goal_yaw
+        (radians; SE(2)-based worlds). */
+    void writeQuery(JsonWriter &json, const Query &query, bool withYaw = false);
+    /** \brief SE(2)-based worlds only (nothing for r2): space, turning_radius (null unless a car),
+        robot_polygon (robot frame; null for a disc) and robot_reach. */
+    void writeSpaceFields(JsonWriter &json, const World &world);
     /** \brief Everything `mhplan worlds --json` tells about one world, including its geometry (bounds,
         circles, polygons, grid cells as rows of '.' and '@', top row first) and queries. */
     void writeWorld(JsonWriter &json, const World &world, const std::string &file);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/FclCollision.h"
 
+#include "mhplan/collision/detail/FclShapes.h"
+
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/convex.h>
@@ -15,20 +17,17 @@ namespace mhplan
 {
     namespace
     {
-        /** Height of the prisms that stand for the planar obstacles (any positive value: the robot and every
-            query live in the plane z = 0). */
-        constexpr double kPrismHeight = 1.0;
-
         /** True when q lies in the closed triangle (a, b, c) given counter-clockwise. */
         bool inClosedTriangle(const Vec2 &q, const Vec2 &a, const Vec2 &b, const Vec2 &c)
         {
             return cross(b - a, q - a) >= 0.0 && cross(c - b, q - b) >= 0.0 && cross(a - c, q - c) >= 0.0;
         }
 
-        /** Convex pieces whose union covers the polygon: the polygon itself when it is convex, else the
-            triangles of an ear-clipping triangulation. The pieces only steer the broadphase (the narrow phase
-            always tests the whole polygon), so a piece may be larger than needed: if ear clipping stalls on
-            a numerically awkward remainder, the remainder's bounding box is used. */
+    } // namespace
+
+    namespace detail
+    {
+        // The pieces only steer this model's broadphase (its narrow phase tests the whole polygon).
         std::vector<std::vector<Vec2>> convexPieces(const Polygon &poly)
         {
             if (poly.convex)
@@ -86,7 +85,6 @@ namespace mhplan
             return pieces;
         }
 
-        /** An FCL convex prism over a counter-clockwise convex polygon, in world coordinates. */
         std::shared_ptr<fcl::CollisionGeometryd> makePrism(const std::vector<Vec2> &pts)
         {
             const int k = static_cast<int>(pts.size());
@@ -111,6 +109,13 @@ namespace mhplan
             return std::make_shared<fcl::Convexd>(vertices, k + 2, faces);
         }
 
+    } // namespace detail
+
+    namespace
+    {
+        using detail::convexPieces;
+        using detail::kPrismHeight;
+        using detail::makePrism;
         /** The robot's query object: shares the robot geometry without touching it (FCL's constructors
             recompute the geometry's local AABB, which would race between threads) and carries an AABB set
             per query. Lives on the caller's stack, so concurrent queries share nothing mutable. */

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Problem.h"
 
+#include "mhplan/collision/RigidValidity.h"
 #include "mhplan/collision/Validity.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
 
 #include <sstream>
 
@@ -30,8 +34,35 @@ namespace mhplan
         }
     } // namespace
 
+    namespace
+    {
+        void checkPose(const World &world, const Query &query, const RigidBodyModel &model, const Pose2 &p,
+                       const char *field)
+        {
+            std::ostringstream where;
+            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                  << "' field '" << field << "' (" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+            if (!model.inBounds(p))
+                throw InputError(where.str() +
+                                 " is out of bounds: the robot must lie inside the world's bounds");
+            if (!model.isValid(p))
+                throw InputError(where.str() + " is in collision (the robot overlaps an obstacle)");
+        }
+    } // namespace
+
+    void validateRigidQuery(const World &world, const Query &query, const RigidBodyModel &model)
+    {
+        checkPose(world, query, model, {query.start.x, query.start.y, query.startYaw}, "start");
+        checkPose(world, query, model, {query.goal.x, query.goal.y, query.goalYaw}, "goal");
+    }
+
     void validateQuery(const World &world, const Query &query, const CollisionModel &model)
     {
+        if (world.isRigid())
+        {
+            validateRigidQuery(world, query, RigidBodyModel(world));
+            return;
+        }
         checkEndpoint(world, query, model, query.start, "start");
         checkEndpoint(world, query, model, query.goal, "goal");
     }
@@ -76,6 +107,23 @@ namespace mhplan
 
     ob::StateSpacePtr makeStateSpace(const World &world)
     {
+        if (world.isRigid())
+        {
+            std::shared_ptr<ob::SE2StateSpace> se2;
+            if (world.space == SpaceType::Dubins)
+                se2 = std::make_shared<ob::DubinsStateSpace>(world.turningRadius);
+            else if (world.space == SpaceType::ReedsShepp)
+                se2 = std::make_shared<ob::ReedsSheppStateSpace>(world.turningRadius);
+            else
+                se2 = std::make_shared<ob::SE2StateSpace>();
+            ob::RealVectorBounds b(2);
+            b.setLow(0, world.bounds.xmin);
+            b.setHigh(0, world.bounds.xmax);
+            b.setLow(1, world.bounds.ymin);
+            b.setHigh(1, world.bounds.ymax);
+            se2->setBounds(b);
+            return se2;
+        }
         auto space = std::make_shared<PlaneStateSpace>(world.bounds);
         ob::RealVectorBounds b(2);
         b.setLow(0, world.bounds.xmin);
@@ -86,8 +134,39 @@ namespace mhplan
         return space;
     }
 
+    double motionResolution(const World &world)
+    {
+        return 1e-4 * std::hypot(world.bounds.width(), world.bounds.height());
+    }
+
+    namespace
+    {
+        og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query)
+        {
+            auto rigid = std::make_shared<const RigidBodyModel>(world);
+            validateRigidQuery(world, query, *rigid);
+            auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+            const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+            si->setStateValidityChecker(std::make_shared<RigidValidityChecker>(si, rigid));
+            si->setMotionValidator(std::make_shared<CertifiedMotionValidator>(
+                si, rigid, world.space, world.turningRadius, motionResolution(world)));
+            ob::ScopedState<> start(ss->getStateSpace());
+            ob::ScopedState<> goal(ss->getStateSpace());
+            setStatePose(start.get(), {query.start.x, query.start.y, query.startYaw});
+            setStatePose(goal.get(), {query.goal.x, query.goal.y, query.goalYaw});
+            ss->getStateSpace()->enforceBounds(start.get()); // the heading into (-pi, pi]
+            ss->getStateSpace()->enforceBounds(goal.get());
+            const double diag = std::hypot(world.bounds.width(), world.bounds.height());
+            ss->setStartAndGoalStates(start, goal, 1e-9 * diag);
+            ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+            return ss;
+        }
+    } // namespace
+
     og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
     {
+        if (world.isRigid())
+            return makeRigidSetup(world, query);
         validateQuery(world, query, *model);
         auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
@@ -117,8 +196,18 @@ namespace mhplan
     {
         std::vector<Vec2> out;
         out.reserve(path.getStateCount());
+        const bool se2 = dynamic_cast<const ob::SE2StateSpace *>(
+                             path.getSpaceInformation()->getStateSpace().get()) != nullptr;
         for (std::size_t i = 0; i < path.getStateCount(); ++i)
-            out.push_back(statePosition(path.getState(i)));
+        {
+            if (se2)
+            {
+                const Pose2 p = statePose(path.getState(i));
+                out.emplace_back(p.x, p.y);
+            }
+            else
+                out.push_back(statePosition(path.getState(i)));
+        }
         return out;
     }
 } // namespace mhplan

@@ -9,22 +9,39 @@
 
 namespace mhplan
 {
-    /** \brief Throws InputError when the query's start or goal is out of the bounds or in collision. */
+    class RigidBodyModel;
+
+    /** \brief Throws InputError when the query's start or goal is out of the bounds or in collision (in an
+        SE(2)-based world: the robot at the query's poses, checked by a RigidBodyModel built here; \e model is
+        not used then). */
     void validateQuery(const World &world, const Query &query, const CollisionModel &model);
 
-    /** \brief A 2D RealVectorStateSpace with the world's bounds. */
+    /** \brief validateQuery for an SE(2)-based world with its rigid-body model. */
+    void validateRigidQuery(const World &world, const Query &query, const RigidBodyModel &model);
+
+    /** \brief The certified motion validator's resolution in an SE(2)-based world: 1e-4 of the bounds'
+        diagonal (docs/spaces.md, "Rigid-body and car worlds"). */
+    double motionResolution(const World &world);
+
+    /** \brief The world's state space: a 2D RealVectorStateSpace with the world's bounds (r2), or an
+        SE2StateSpace, DubinsStateSpace or ReedsSheppStateSpace (turning radius from the world) whose position
+        bounds are the world's. */
     ompl::base::StateSpacePtr makeStateSpace(const World &world);
 
     /** \brief A fully configured SimpleSetup: state space, WorldValidityChecker, ExactMotionValidator,
         start, goal (exact position, threshold 1e-9 of the bounds' diagonal), path-length objective. The
-        query is validated first. Every planner that mhplan runs on this world gets this same setup. */
+        query is validated first. Every planner that mhplan runs on this world gets this same setup.
+        SE(2)-based worlds: the world's space, a RigidValidityChecker and a CertifiedMotionValidator over a
+        RigidBodyModel built here (\e model is not used), start and goal poses with their headings, and the
+        path-length objective in the space's own metric (SE(2): |dxy| + 0.5 |dtheta|, OMPL's weights; the
+        cars: the length of the car's path). */
     ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
                                                     const CollisionModelPtr &model);
 
     /** \brief Euclidean length of a polyline (independent of OMPL's distance function). */
     double polylineLength(const std::vector<Vec2> &points);
 
-    /** \brief The waypoints of a geometric path. */
+    /** \brief The waypoints' positions of a geometric path (RealVector or SE(2)-based). */
     std::vector<Vec2> pathPoints(const ompl::geometric::PathGeometric &path);
 } // namespace mhplan
 

@@ -4,6 +4,7 @@
 #include "mhplan/collision/Collision.h"
 #include "mhplan/io/GridIO.h"
 #include "mhplan/collision/Problem.h"
+#include "mhplan/collision/RigidBody.h"
 #include "mhplan/io/YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
@@ -213,6 +214,71 @@ namespace mhplan
             return std::make_shared<const OccupancyGrid>(std::move(grid));
         }
 
+        /** A query's start or goal: [x, y], or [x, y, yaw] (radians) in an SE(2)-based world. */
+        void readPose(const YamlReader &r, const YAML::Node &n, const std::string &field, const World &world,
+                      Vec2 &position, double &yaw)
+        {
+            if (n.IsSequence() && n.size() == 3)
+            {
+                if (!world.isRigid())
+                    r.fail(
+                        n, field,
+                        "a heading [x, y, yaw] needs 'space: se2', 'dubins' or 'reeds_shepp'; this world's "
+                        "space is r2: give [x, y]");
+                position = {r.number(n[0], field + "[0]", -kMaxCoordinate, kMaxCoordinate),
+                            r.number(n[1], field + "[1]", -kMaxCoordinate, kMaxCoordinate)};
+                yaw = r.number(n[2], field + "[2]", -1e3, 1e3);
+                return;
+            }
+            if (!n.IsSequence() || n.size() != 2)
+                r.fail(n, field,
+                       world.isRigid() ? "expected a pose [x, y, yaw] (yaw in radians) or [x, y]"
+                                       : "expected a point [x, y]");
+            position = r.point(n, field);
+            yaw = 0.0;
+        }
+
+        /** robot: {radius: R} or {polygon: [[x, y], ...]} (SE(2)-based worlds only). */
+        void readRobot(const YamlReader &r, const YAML::Node &n, World &world)
+        {
+            r.allowKeys(n, "robot", {"radius", "polygon"});
+            if (n["radius"].IsDefined() && n["polygon"].IsDefined())
+                r.fail(n, "robot", "give either 'radius' (a disc) or 'polygon' (a rigid body), not both");
+            if (n["polygon"].IsDefined())
+            {
+                const YAML::Node pts = n["polygon"];
+                if (!world.isRigid())
+                    r.fail(
+                        pts, "robot.polygon",
+                        "a polygon robot needs 'space: se2', 'dubins' or 'reeds_shepp' (an r2 world's robot "
+                        "is a disc: 'radius')");
+                if (!pts.IsSequence() || pts.size() < 3)
+                    r.fail(pts, "robot.polygon", "expected a list of at least 3 points [x, y] (robot frame)");
+                if (pts.size() > kMaxRobotVertices)
+                    r.fail(pts, "robot.polygon",
+                           std::to_string(pts.size()) + " vertices; a robot polygon may have at most " +
+                               std::to_string(kMaxRobotVertices));
+                std::vector<Vec2> v;
+                for (std::size_t i = 0; i < pts.size(); ++i)
+                {
+                    const std::string f = "robot.polygon[" + std::to_string(i) + "]";
+                    const Vec2 p = r.point(pts[i], f);
+                    if (std::fabs(p.x) > kMaxRobotCoordinate || std::fabs(p.y) > kMaxRobotCoordinate)
+                        r.fail(pts[i], f, "robot-frame coordinates must be within +-1e6");
+                    v.push_back(p);
+                }
+                if (!polygonIsSimple(v))
+                    r.fail(pts, "robot.polygon",
+                           "the polygon is not simple (self-intersecting, repeated vertex or zero area)");
+                world.robotPolygon = makePolygon(std::move(v)).vertices; // counter-clockwise
+                return;
+            }
+            world.robotRadius =
+                r.number(r.require(n, "radius", "robot"), "robot.radius", -kMaxCoordinate, kMaxCoordinate);
+            if (world.robotRadius < 0.0)
+                r.fail(n["radius"], "robot.radius", "must be >= 0 (got " + n["radius"].Scalar() + ")");
+        }
+
         void readQueries(const YamlReader &r, const YAML::Node &n, World &world,
                          std::vector<YAML::Node> &nodes)
         {
@@ -229,8 +295,8 @@ namespace mhplan
                              : (i == 0 ? std::string("default") : "q" + std::to_string(i));
                 if (!names.insert(q.name).second)
                     r.fail(n[i], field + ".name", "duplicate query name '" + q.name + "'");
-                q.start = r.point(r.require(n[i], "start", field), field + ".start");
-                q.goal = r.point(r.require(n[i], "goal", field), field + ".goal");
+                readPose(r, r.require(n[i], "start", field), field + ".start", world, q.start, q.startYaw);
+                readPose(r, r.require(n[i], "goal", field), field + ".goal", world, q.goal, q.goalYaw);
                 world.queries.push_back(q);
                 nodes.push_back(n[i]);
             }
@@ -268,8 +334,9 @@ namespace mhplan
     World readWorldNode(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys)
     {
         const std::string &fileName = r.file();
-        std::set<std::string> keys{"name",  "description", "source", "assumptions", "bounds",
-                                   "robot", "obstacles",   "grid",   "queries"};
+        std::set<std::string> keys{"name",    "description", "source",        "assumptions",
+                                   "bounds",  "robot",       "obstacles",     "grid",
+                                   "queries", "space",       "turning_radius"};
         keys.insert(extraKeys.begin(), extraKeys.end());
         r.allowKeys(root, "", keys);
 
@@ -282,15 +349,35 @@ namespace mhplan
             world.source = r.text(root["source"], "source");
         if (root["assumptions"].IsDefined())
             world.assumptions = r.text(root["assumptions"], "assumptions");
-        if (root["robot"].IsDefined())
+        if (root["space"].IsDefined())
         {
-            r.allowKeys(root["robot"], "robot", {"radius"});
-            world.robotRadius = r.number(r.require(root["robot"], "radius", "robot"), "robot.radius",
-                                         -kMaxCoordinate, kMaxCoordinate);
-            if (world.robotRadius < 0.0)
-                r.fail(root["robot"]["radius"], "robot.radius",
-                       "must be >= 0 (got " + root["robot"]["radius"].Scalar() + ")");
+            try
+            {
+                world.space = parseSpaceType(r.text(root["space"], "space"));
+            }
+            catch (const InputError &e)
+            {
+                r.fail(root["space"], "space", e.what());
+            }
         }
+        const bool car = world.space == SpaceType::Dubins || world.space == SpaceType::ReedsShepp;
+        if (root["turning_radius"].IsDefined())
+        {
+            if (!car)
+                r.fail(root["turning_radius"], "turning_radius",
+                       "applies only to 'space: dubins' or 'reeds_shepp' (this world's space is " +
+                           toString(world.space) + ")");
+            world.turningRadius =
+                r.number(root["turning_radius"], "turning_radius", -kMaxCoordinate, kMaxCoordinate);
+            if (!(world.turningRadius > 0.0))
+                r.fail(root["turning_radius"], "turning_radius",
+                       "must be > 0 (got " + root["turning_radius"].Scalar() + ")");
+        }
+        else if (car)
+            r.fail(root["space"], "turning_radius",
+                   "'space: " + toString(world.space) + "' needs 'turning_radius: R' (R > 0, metres)");
+        if (root["robot"].IsDefined())
+            readRobot(r, root["robot"], world);
 
         if (root["grid"].IsDefined())
         {
@@ -320,6 +407,31 @@ namespace mhplan
         if (root["queries"].IsDefined())
             readQueries(r, root["queries"], world, queryNodes);
 
+        if (world.isRigid())
+        {
+            // Start and goal poses must be valid for the robot at its heading.
+            const RigidBodyModel rigid(world);
+            for (std::size_t i = 0; i < world.queries.size(); ++i)
+            {
+                const Query &q = world.queries[i];
+                for (const char *key : {"start", "goal"})
+                {
+                    const bool start = std::string(key) == "start";
+                    const Pose2 p{start ? q.start.x : q.goal.x, start ? q.start.y : q.goal.y,
+                                  start ? q.startYaw : q.goalYaw};
+                    const std::string field = "queries[" + std::to_string(i) + "]." + key;
+                    std::ostringstream at;
+                    at << "(" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+                    if (!rigid.inBounds(p))
+                        r.fail(queryNodes[i][key], field,
+                               at.str() + " is out of bounds (the whole robot must lie inside the bounds)");
+                    if (!rigid.isValid(p))
+                        r.fail(queryNodes[i][key], field,
+                               at.str() + " is in collision (the robot overlaps an obstacle)");
+                }
+            }
+            return world;
+        }
         // Start and goal must be valid for the world's own collision model.
         const CollisionModelPtr model = makeCollisionModel(world);
         for (std::size_t i = 0; i < world.queries.size(); ++i)
@@ -416,7 +528,22 @@ namespace mhplan
             out << "source: " << yamlString(world.source) << "\n";
         if (!world.assumptions.empty())
             out << "assumptions: " << yamlString(world.assumptions) << "\n";
-        out << "robot: {radius: " << world.robotRadius << "}\n";
+        if (world.isRigid())
+        {
+            out << "space: " << toString(world.space) << "\n";
+            if (world.turningRadius > 0.0)
+                out << "turning_radius: " << world.turningRadius << "\n";
+        }
+        if (world.robotPolygon.empty())
+            out << "robot: {radius: " << world.robotRadius << "}\n";
+        else
+        {
+            out << "robot: {polygon: [";
+            for (std::size_t i = 0; i < world.robotPolygon.size(); ++i)
+                out << (i ? ", " : "") << "[" << world.robotPolygon[i].x << ", " << world.robotPolygon[i].y
+                    << "]";
+            out << "]}\n";
+        }
         if (world.isGrid())
         {
             const OccupancyGrid &g = *world.grid;
@@ -455,8 +582,15 @@ namespace mhplan
         {
             out << "queries:\n";
             for (const auto &q : world.queries)
-                out << "  - {name: " << yamlString(q.name) << ", start: [" << q.start.x << ", " << q.start.y
-                    << "], goal: [" << q.goal.x << ", " << q.goal.y << "]}\n";
+            {
+                out << "  - {name: " << yamlString(q.name) << ", start: [" << q.start.x << ", " << q.start.y;
+                if (world.isRigid())
+                    out << ", " << q.startYaw;
+                out << "], goal: [" << q.goal.x << ", " << q.goal.y;
+                if (world.isRigid())
+                    out << ", " << q.goalYaw;
+                out << "]}\n";
+            }
         }
         return out.str();
     }

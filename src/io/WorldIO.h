@@ -18,6 +18,10 @@ namespace mhplan
     /** \brief The most vertices of one polygon (its simplicity check is quadratic: 2,000 vertices take
         about 50 ms). */
     constexpr std::size_t kMaxPolygonVertices = 2000;
+    /** \brief Largest robot polygon (its convex pieces are FCL shapes queried at every pose). */
+    constexpr std::size_t kMaxRobotVertices = 64;
+    /** \brief Largest robot-frame coordinate of a robot polygon. */
+    constexpr double kMaxRobotCoordinate = 1e6;
     /** \brief The smallest extent of the bounds in x and y. */
     constexpr double kMinExtent = 1e-6;
 

@@ -27,6 +27,7 @@ namespace mhplan
 
     OptimumResult computeGridOctileOptimum(const World &world, const Query &query)
     {
+        requirePlanarSpace(world);
         requireGrid(world, "grid octile optimum");
         const auto t0 = std::chrono::steady_clock::now();
         const OccupancyGrid &g = *world.grid;

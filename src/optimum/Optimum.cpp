@@ -101,6 +101,15 @@ namespace mhplan
         return (pathLength - optimum.length) / optimum.length;
     }
 
+    void requirePlanarSpace(const World &world)
+    {
+        if (world.isRigid())
+            throw InputError(
+                "no exact optimum for space " + toString(world.space) + ": '" + world.name +
+                "' is an SE(2)-based world (a rigid body or a car); the exact solvers cover a disc "
+                "or point robot translating in the plane (space r2) only (docs/spaces.md)");
+    }
+
     OptimumResult computeOptimum(const World &world, const Query &query, const OptimumOptions &options)
     {
         if (!(options.arcDeviation > 0.0 && options.arcDeviation <= 0.1))
@@ -109,6 +118,7 @@ namespace mhplan
             m << "computeOptimum: options.arcDeviation must be in (0, 0.1], got " << options.arcDeviation;
             throw std::invalid_argument(m.str());
         }
+        requirePlanarSpace(world);
         const auto t0 = std::chrono::steady_clock::now();
         if (world.isGrid())
         {

@@ -114,6 +114,10 @@ namespace mhplan
         building the collision model used to validate the query. */
     OptimumResult computeOptimum(const World &world, const Query &query, const OptimumOptions &options = {});
 
+    /** \brief Throws InputError "no exact optimum for space S: ..." for an SE(2)-based world (se2, dubins,
+        reeds_shepp): computeOptimum and computeGridOctileOptimum call it first. */
+    void requirePlanarSpace(const World &world);
+
     /** \brief The 8-connected grid optimum with MovingAI semantics: moves between free cells, straight moves
         cost 1 cell, diagonal moves sqrt(2) cells and need both side cells free. Start and goal are the free
         cells containing the query's start and goal (a point on a cell border takes a free cell whose closed
