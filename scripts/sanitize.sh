@@ -2,13 +2,31 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The whole test suite built with AddressSanitizer (+ LeakSanitizer) and UndefinedBehaviorSanitizer (gcc,
 # RelWithDebInfo, frame pointers kept) in a build directory of its own, run through CTest; any report fails
-# the run (UBSan halts on the first error). Usage: scripts/sanitize.sh [BUILD_DIR] (default build-sanitize).
-# Known leaks of OMPL 1.5.2 itself are suppressed, each documented, in tests/sanitizer/lsan.supp.
+# the run (UBSan halts on the first error). Usage: scripts/sanitize.sh [--ci] [BUILD_DIR] (default
+# build-sanitize). Known leaks of OMPL 1.5.2 itself are suppressed, each documented, in
+# tests/sanitizer/lsan.supp.
 # Excluded: the tests that only configure and build (consumer_package, layering_*): they check the build,
 # not memory; and the tests of outside systems (ROS nodes, a Slurm cluster, GNU parallel, Planner Arena in a
 # browser), whose own processes are not mhplan's code. The normal pass (scripts/test.sh) runs them all.
+# --ci: CI's pass (.ci/run), which must fit CI's 30 minutes on 2 cores beside the test command and the fuzz
+# pass: only the test executables of CI_TESTS are built (with the CLI they run) and run. They cover every
+# layer: geometry and grids, the world, grid and MovingAI readers (and the kept fuzz findings), every
+# registered planner solving a seed world (test_registry), the lattice searches, the N-D planners and the
+# papers' operators (test_astar, test_nd, test_fidelity), the simulator and every controller, the CLI and
+# its JSON output (running the instrumented mhplan binary) and the campaign runner with its child
+# processes and databases (test_bench_sim). Left out (the whole pass runs them): the planner contract
+# suite, the metaheuristics' quality runs at the papers' budgets, the FCL sweeps, the exact optimum, the
+# memetic and GMS operator suites, scaling, the other campaign suites (tiny campaign, fault injection,
+# Slurm scripts, MovingAI), rendering, metrics, allocation counts and the Python tools.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+CI=0
+if [ "${1:-}" = "--ci" ]; then
+  CI=1
+  shift
+fi
+CI_TESTS=(test_geometry test_grid test_world_io test_input_hardening test_fuzz_regressions test_registry
+  test_astar test_nd test_fidelity test_simulation test_controllers test_cli test_cli_json test_bench_sim)
 BUILD_DIR="${1:-${MHPLAN_SANITIZE_BUILD_DIR:-build-sanitize}}"
 JOBS=$(nproc 2>/dev/null || echo 2)
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
@@ -19,7 +37,12 @@ if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     -DCMAKE_CXX_FLAGS="$FLAGS" -DCMAKE_EXE_LINKER_FLAGS="$FLAGS" -DCMAKE_SHARED_LINKER_FLAGS="$FLAGS" \
     -DMHPLAN_BUILD_BENCHMARKS=OFF -DMHPLAN_ROS=OFF "${LAUNCHER[@]}" >/dev/null
 fi
-if ! cmake --build "$BUILD_DIR" -j "$JOBS" > "$BUILD_DIR/build-output.txt" 2>&1; then
+TARGETS=()
+if [ $CI = 1 ]; then
+  TARGETS=(--target mhplan)
+  for t in "${CI_TESTS[@]}"; do TARGETS+=(--target "$t"); done
+fi
+if ! cmake --build "$BUILD_DIR" -j "$JOBS" "${TARGETS[@]}" > "$BUILD_DIR/build-output.txt" 2>&1; then
   grep -E "error|warning" "$BUILD_DIR/build-output.txt" | head -50 >&2 || true
   echo "sanitize: build failed (full output in $BUILD_DIR/build-output.txt)" >&2
   exit 1
@@ -30,4 +53,8 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressi
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # The sanitizer build runs about 3-5 times slower: tests with wall-clock limits scale them by this factor.
 export MHPLAN_TEST_TIME_SCALE=4
-ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 1800 -E '^(consumer_package|layering_|ros_|slurm_|gnu_parallel|arena)'
+SELECT=(-E '^(consumer_package|layering_|ros_|slurm_|gnu_parallel|arena)')
+if [ $CI = 1 ]; then
+  SELECT=(-L "^($(IFS='|'; echo "${CI_TESTS[*]}"))\$")
+fi
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 1800 "${SELECT[@]}"
