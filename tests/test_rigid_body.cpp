@@ -4,6 +4,7 @@
    src/base/Geometry.h, the displacement bound against OMPL's interpolation, and thousands of random motions
    on the shipped worlds (and a disc robot, and a grid world) of which no accepted one collides under a dense
    independent check at 1e-3 steps, while most motions the dense check finds free are accepted. */
+#include "mhplan/collision/CarSpaces.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidBody.h"
 #include "mhplan/collision/RigidValidity.h"
@@ -251,4 +252,37 @@ TEST(RigidBody, NoAcceptedMotionCollidesForADiscRobot)
 TEST(RigidBody, NoAcceptedMotionCollidesInAGrid)
 {
     expectCertified("se2 triangle in gms_grid10", gridWorld(), 1500, 5);
+}
+
+TEST(RigidBody, SafeDubinsAgreesWithOmplAndSurvivesItsAssertion)
+{
+    const double rho = 1.3;
+    auto safe = std::make_shared<SafeDubinsStateSpace>(rho);
+    auto ompl = std::make_shared<ob::DubinsStateSpace>(rho);
+    ob::State *a = safe->allocState();
+    ob::State *b = safe->allocState();
+    ob::State *s = safe->allocState();
+    ompl::RNG rng(9);
+    for (int i = 0; i < 3000; ++i)
+    {
+        setStatePose(a, {rng.uniformReal(-5, 5), rng.uniformReal(-5, 5), rng.uniformReal(-kPi, kPi)});
+        setStatePose(b, {rng.uniformReal(-5, 5), rng.uniformReal(-5, 5), rng.uniformReal(-kPi, kPi)});
+        ASSERT_NEAR(safe->distance(a, b), ompl->distance(a, b), 1e-9) << i;
+        safe->interpolate(a, b, 0.999999999, s);
+        const Pose2 end = statePose(s);
+        const Pose2 goal = statePose(b);
+        EXPECT_NEAR(std::hypot(end.x - goal.x, end.y - goal.y), 0.0, 1e-6) << i;
+    }
+    // A goal on the start's right turning circle: OMPL 1.5.2's dubins() aborts on an assertion near here.
+    for (double phi : {0.5, 1.0, 2.0, 3.0})
+    {
+        setStatePose(a, {0.0, 0.0, 0.0});
+        setStatePose(b, {rho * std::sin(phi), -rho * (1.0 - std::cos(phi)), -phi});
+        EXPECT_NEAR(safe->distance(a, b), rho * phi, 1e-9) << phi;
+        setStatePose(b, {rho * std::sin(phi) + 1e-5, -rho * (1.0 - std::cos(phi)), -phi + 1e-5});
+        EXPECT_NEAR(safe->distance(a, b), rho * phi, 1e-3) << phi;
+    }
+    safe->freeState(a);
+    safe->freeState(b);
+    safe->freeState(s);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Problem.h"
 
+#include "mhplan/collision/CarSpaces.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/collision/Validity.h"
 
@@ -111,7 +112,7 @@ namespace mhplan
         {
             std::shared_ptr<ob::SE2StateSpace> se2;
             if (world.space == SpaceType::Dubins)
-                se2 = std::make_shared<ob::DubinsStateSpace>(world.turningRadius);
+                se2 = std::make_shared<SafeDubinsStateSpace>(world.turningRadius);
             else if (world.space == SpaceType::ReedsShepp)
                 se2 = std::make_shared<ob::ReedsSheppStateSpace>(world.turningRadius);
             else

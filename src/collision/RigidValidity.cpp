@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/RigidValidity.h"
 
+#include "mhplan/collision/CarSpaces.h"
+
 #include <ompl/base/spaces/SE2StateSpace.h>
 
 #include <algorithm>
@@ -42,7 +44,10 @@ namespace mhplan
         switch (type)
         {
         case SpaceType::Dubins:
-            dubins_ = space->as<ob::DubinsStateSpace>()->dubins(from, to);
+            if (const auto *safe = dynamic_cast<const SafeDubinsStateSpace *>(space))
+                dubins_ = safe->shortestPath(from, to);
+            else
+                dubins_ = space->as<ob::DubinsStateSpace>()->dubins(from, to);
             length_ = turningRadius * dubins_.length();
             bound_ = length_ * (1.0 + rotationReach / turningRadius);
             break;
