@@ -483,3 +483,42 @@ TEST(SpacesEvaluation, NoHeapAllocationPerFitnessEvaluationOnSE2)
     EXPECT_EQ(test::heapAllocations() - allocations, 0u);
     EXPECT_EQ(probe->evaluationCount() - before, 200u);
 }
+
+TEST(SpacesSE3, CompoundOfR3AndSO3IsSolvedByTheAnySpacePlanners)
+{
+    // SE(3) = R^3 + SO(3): a point (its orientation free) past a ball of radius 3 at the box's centre,
+    // from the identity rotation to a half turn about z.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const auto outsideBall = [](const ob::State *s)
+    {
+        const auto *se3 = s->as<ob::SE3StateSpace::StateType>();
+        return std::hypot(se3->getX() - 5.0, se3->getY() - 5.0, se3->getZ() - 5.0) >= 3.0;
+    };
+    for (const std::string &planner :
+         test::mhplanPlanners([](const PlannerEntry &e) { return e.anyDimension; }, "any-space"))
+    {
+        auto space = std::make_shared<ob::SE3StateSpace>();
+        ob::RealVectorBounds b(3);
+        b.setLow(0.0);
+        b.setHigh(10.0);
+        space->setBounds(b);
+        auto ss = std::make_shared<og::SimpleSetup>(space);
+        ss->setStateValidityChecker([outsideBall](const ob::State *s) { return outsideBall(s); });
+        ss->getSpaceInformation()->setStateValidityCheckingResolution(0.002);
+        ob::ScopedState<ob::SE3StateSpace> start(space), goal(space);
+        start->setXYZ(1, 1, 1);
+        start->rotation().setIdentity();
+        goal->setXYZ(9, 9, 9);
+        goal->rotation().setAxisAngle(0, 0, 1, M_PI);
+        ss->setStartAndGoalStates(start, goal, 1e-9);
+        ss->setOptimizationObjective(
+            std::make_shared<ob::PathLengthOptimizationObjective>(ss->getSpaceInformation()));
+        ob::PlannerPtr p = makeSpacePlanner(planner, ss, 3, 50);
+        EXPECT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << planner;
+        const og::PathGeometric &path = ss->getSolutionPath();
+        EXPECT_TRUE(test::denseValid(path, outsideBall)) << planner;
+        // Longer than the straight segment (blocked by the ball) plus the half turn, as SE(3)'s distance
+        // (translation + rotation angle) measures it.
+        EXPECT_GT(path.length(), std::sqrt(3.0) * 8.0 + M_PI / 2.0) << planner;
+    }
+}
