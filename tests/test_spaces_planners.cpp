@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* The population planners on state spaces other than R^k (docs/spaces.md): the state parametrisation
    (SO(2) seam, SO(3) round trip), SE(2) / Dubins / Reeds-Shepp problems solved by every registered planner
-   that supports them (and global BFO) with paths checked densely by the test's own geometry, reported costs
-   equal to the space's distances, the cusp count, and the refusals of unsupported spaces and switches. */
+   that supports them (the global BFO among them) with paths checked densely by the test's own geometry,
+   reported costs equal to the space's distances, the cusp count, and the refusals of unsupported spaces and
+   switches. */
 #include "mhplan/planners/common/PlannerSupport.h"
 #include "mhplan/planners/common/PopulationPlanner.h"
 #include "mhplan/planners/common/StateParametrisation.h"
@@ -35,30 +36,23 @@ namespace og = ompl::geometric;
 namespace
 {
     /** \brief The registered planners that solve problems on any supported state space (the registry's
-        anyDimension tag, docs/spaces.md), plus global BFO (registered online only). */
+        anyDimension tag, docs/spaces.md; the global BFO among them). */
     std::vector<std::string> spacePlanners()
     {
-        std::vector<std::string> out =
-            test::mhplanPlanners([](const PlannerEntry &e) { return e.anyDimension; }, "any-space");
-        out.push_back("BFO-global");
-        return out;
+        return test::mhplanPlanners([](const PlannerEntry &e) { return e.anyDimension; }, "any-space");
     }
 
-    /** \brief Planner \e name on \e ss: polyline decoding (spline is R^k only), seed, iteration budget. */
+    /** \brief Planner \e name on \e ss: polyline decoding (spline is R^k only), seed, iteration budget (and
+        the schedule length T = the budget where the algorithm has a schedule; BFO has none). */
     ob::PlannerPtr makeSpacePlanner(const std::string &name, const og::SimpleSetupPtr &ss, unsigned int seed,
                                     unsigned int iterations)
     {
-        const bool bfo = name == "BFO-global";
-        std::map<std::string, std::string> params{{"seed", std::to_string(seed)},
-                                                  {"max_iterations", std::to_string(iterations)}};
-        if (bfo)
-            params["mode"] = "global";
-        else
-        {
-            params["decoding"] = "polyline";
-            params["iterations"] = std::to_string(iterations);
-        }
-        ob::PlannerPtr p = allocatePlanner(bfo ? "BFO" : name, ss->getSpaceInformation(), params);
+        ob::PlannerPtr p = allocatePlanner(name, ss->getSpaceInformation(),
+                                           {{"seed", std::to_string(seed)},
+                                            {"max_iterations", std::to_string(iterations)},
+                                            {"decoding", "polyline"}});
+        if (p->params().hasParam("iterations"))
+            p->params().setParam("iterations", std::to_string(iterations));
         ss->setPlanner(p);
         ss->setup();
         return p;
@@ -103,7 +97,7 @@ namespace
         whole colony (S (Ns + 1) evaluations each), 30 of them. */
     unsigned int iterations(const std::string &planner)
     {
-        return planner == "BFO-global" ? 30 : 100;
+        return planner.find("BFO") == std::string::npos ? 100 : 30; // BFO-GLOBAL, ATBFO-GLOBAL
     }
     /** \brief "Most runs": at least this many of kRuns exact (docs/spaces.md lists the measured rates). */
     constexpr unsigned int kMinExact = 6;

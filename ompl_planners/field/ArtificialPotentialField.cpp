@@ -145,8 +145,9 @@ namespace mhplan
 
     void ArtificialPotentialField::setup()
     {
+        // Refused before ob::Planner::setup() marks the planner set up (the planner contract).
+        PotentialField::requireClearance(*si_, getName()); // also refuses any space but a 2D RealVector one
         ob::Planner::setup();
-        PotentialField::requireClearance(*si_, getName());
     }
 
     void ArtificialPotentialField::clear()

@@ -23,8 +23,10 @@ namespace mhplan
         current colony (until the termination condition or \c max_iterations). Positions are clamped to the
         bounds; C (\c step_size) is absolute, in the units of each coordinate, so larger worlds want a larger
         step. Dispersal draws a uniform waypoint vector. An optimizing planner with intermediate solutions,
-        as the other population planners; the problems PopulationPlanner supports (no [GMS] operators:
-        the colony does not expose a population to them). Progress properties as PopulationPlanner's
+        as the other population planners, on the problems PopulationPlanner supports: R^k and the state
+        spaces of docs/spaces.md (SE(2), Dubins, Reeds-Shepp, SE(3), compounds; polyline decoding there). No
+        [GMS] operators: the colony does not expose a population to them. Progress properties as
+       PopulationPlanner's
         (\c fitness \c evaluations counts J evaluations). */
     class BacterialForaging : public PopulationPlanner, public ColonyParameters
     {

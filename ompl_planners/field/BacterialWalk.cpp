@@ -147,8 +147,9 @@ namespace mhplan
 
     void BacterialWalk::setup()
     {
-        ob::Planner::setup();
+        // Refused before ob::Planner::setup() marks the planner set up (the planner contract).
         PotentialField::requireClearance(*si_, getName()); // also refuses any space but a 2D RealVector one
+        ob::Planner::setup();
     }
 
     void BacterialWalk::clear()

@@ -311,6 +311,7 @@ namespace mhplan
                                      si_->getStateSpace()->getName() + "' of dimension " +
                                      std::to_string(si_->getStateSpace()->getDimension());
             OMPL_ERROR("%s", what.c_str());
+            setup_ = false; // refused: not set up, as the planner contract requires
             throw ompl::Exception(what);
         }
     }

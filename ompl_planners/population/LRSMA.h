@@ -7,6 +7,38 @@
 
 namespace mhplan
 {
+    /** \brief The tolerance-based stagnation monitor of [LRSMA] eq 8 (docs/algorithms.md 5): tau(t) is read
+        before it is updated, so with Tmax = 2 the rotation fires on the third consecutive iteration with
+        dF < Fmin (then every third while the stagnation lasts). */
+    class StagnationMonitor
+    {
+      public:
+        StagnationMonitor(double fmin, unsigned int tmax) : fmin_(fmin), tmax_(tmax) {}
+        /** \brief Feed dF = |F(t) - F(t-1)|; true when the population stagnates (rotate now). */
+        bool update(double dF)
+        {
+            if (!(dF < fmin_))
+            {
+                tau_ = 0;
+                return false;
+            }
+            if (tau_ < tmax_)
+            {
+                ++tau_;
+                return false;
+            }
+            tau_ = 0;
+            return true;
+        }
+        unsigned int tau() const { return tau_; }
+        void reset() { tau_ = 0; }
+
+      private:
+        double fmin_;
+        unsigned int tmax_;
+        unsigned int tau_{0};
+    };
+
     /** \brief Levy-flight-rotation SMA (LRSMA): Zheng et al., "Path Planning of Autonomous Mobile Robots
        Based on an Improved Slime Mould Algorithm", Drones 7(4):257, 2023, section 4 (docs/algorithms.md
        section 5).
@@ -40,38 +72,6 @@ namespace mhplan
         of R^k, SO(2) and SO(3) (PopulationPlanner, StateParametrisation; there with decoding = polyline and
         the [LRSMA] fitness, the rules acting on the states' parametrisation); the [GMS] and -OPS variants
         are planar (their gms_* switches are refused elsewhere); other spaces are refused at setup(). */
-    /** \brief The tolerance-based stagnation monitor of [LRSMA] eq 8 (docs/algorithms.md 5): tau(t) is read
-        before it is updated, so with Tmax = 2 the rotation fires on the third consecutive iteration with
-        dF < Fmin (then every third while the stagnation lasts). */
-    class StagnationMonitor
-    {
-      public:
-        StagnationMonitor(double fmin, unsigned int tmax) : fmin_(fmin), tmax_(tmax) {}
-        /** \brief Feed dF = |F(t) - F(t-1)|; true when the population stagnates (rotate now). */
-        bool update(double dF)
-        {
-            if (!(dF < fmin_))
-            {
-                tau_ = 0;
-                return false;
-            }
-            if (tau_ < tmax_)
-            {
-                ++tau_;
-                return false;
-            }
-            tau_ = 0;
-            return true;
-        }
-        unsigned int tau() const { return tau_; }
-        void reset() { tau_ = 0; }
-
-      private:
-        double fmin_;
-        unsigned int tmax_;
-        unsigned int tau_{0};
-    };
-
     class LRSMA : public SlimeMould
     {
       public:

@@ -29,7 +29,8 @@ namespace mhplan
         std::string family{};
         /** \brief True for an improved variant (not in the paper); false for a faithful planner. */
         bool improved{false};
-        /** \brief True when the planner solves problems in any R^k (k >= 1); false when it is planar only
+        /** \brief True when the planner solves problems in any R^k (k >= 1) and on the other state spaces
+            docs/spaces.md lists (SE(2), Dubins, Reeds-Shepp, SE(3), compounds); false when it is planar only
             (it refuses other spaces at setup()). */
         bool anyDimension{false};
     };
