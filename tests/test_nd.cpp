@@ -23,6 +23,7 @@
 #include <ompl/util/Exception.h>
 
 #include "AllocationCounter.h"
+#include "EvaluationProbe.h"
 
 #include "RegistrySupport.h"
 
@@ -364,8 +365,8 @@ TEST_P(NdRefusal, SE2StateSpaceIsRefusedAtSetup)
     // planar ones refuse it, naming themselves and the space.
     if (builtinPlanners().get(GetParam()).anyDimension)
     {
-        ob::PlannerPtr p = builtinPlanners().create(
-            GetParam(), ss->getSpaceInformation(), {{"decoding", "polyline"}, {"max_iterations", "2"}});
+        ob::PlannerPtr p = builtinPlanners().create(GetParam(), ss->getSpaceInformation(),
+                                                    {{"decoding", "polyline"}, {"max_iterations", "2"}});
         ss->setPlanner(p);
         EXPECT_NO_THROW(ss->setup());
         EXPECT_TRUE(p->isSetup());
@@ -476,15 +477,7 @@ namespace
         }
     };
 
-    /** \brief SMA with its protected evaluation hooks opened for the test. */
-    class EvaluationProbe : public SlimeMould
-    {
-      public:
-        using SlimeMould::SlimeMould;
-        double evaluateCandidate(const double *x) { return evaluate(x); }
-        void randomCandidate(double *x) { randomPosition(x); }
-        unsigned int candidateDimension() const { return dimension(); }
-    };
+    using EvaluationProbe = test::EvaluationProbe<SlimeMould>;
 } // namespace
 
 TEST(NdEvaluation, NoHeapAllocationPerFitnessEvaluation)

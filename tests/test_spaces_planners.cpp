@@ -19,6 +19,7 @@
 #include <ompl/util/Exception.h>
 
 #include "AllocationCounter.h"
+#include "EvaluationProbe.h"
 #include "RegistrySupport.h"
 #include "SpaceProblems.h"
 
@@ -443,15 +444,7 @@ namespace
         }
     };
 
-    /** \brief MGO with its protected evaluation hooks opened for the test. */
-    class SpaceProbe : public MountainGazelle
-    {
-      public:
-        using MountainGazelle::MountainGazelle;
-        double evaluateCandidate(const double *x) { return evaluate(x); }
-        void randomCandidate(double *x) { randomPosition(x); }
-        unsigned int candidateDimension() const { return dimension(); }
-    };
+    using SpaceProbe = test::EvaluationProbe<MountainGazelle>;
 } // namespace
 
 TEST(SpacesEvaluation, NoHeapAllocationPerFitnessEvaluationOnSE2)
