@@ -27,6 +27,9 @@ if [ "${1:-}" = "--ci" ]; then
 fi
 CI_TESTS=(test_geometry test_grid test_world_io test_input_hardening test_fuzz_regressions test_registry
   test_astar test_nd test_fidelity test_simulation test_controllers test_cli test_cli_json test_bench_sim)
+# Within those: the brute-force oracle of grid segment clearance (173 s of the 575 s the --ci tests took
+# under ASan on a loaded machine; the grid's other clearance and segment tests stay).
+CI_SKIP='GridCollision\.SegmentClearanceMatchesBruteForce'
 BUILD_DIR="${1:-${MHPLAN_SANITIZE_BUILD_DIR:-build-sanitize}}"
 JOBS=$(nproc 2>/dev/null || echo 2)
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
@@ -55,6 +58,6 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export MHPLAN_TEST_TIME_SCALE=4
 SELECT=(-E '^(consumer_package|layering_|ros_|slurm_|gnu_parallel|arena)')
 if [ $CI = 1 ]; then
-  SELECT=(-L "^($(IFS='|'; echo "${CI_TESTS[*]}"))\$")
+  SELECT=(-L "^($(IFS='|'; echo "${CI_TESTS[*]}"))\$" -E "^(${CI_SKIP})\$")
 fi
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" --timeout 1800 "${SELECT[@]}"
