@@ -2,9 +2,10 @@
 /* The contract every mhplan planner keeps (OMPL's Planner API as docs/conventions.md asks): solve / solve
    continues / clear / solve, a termination condition already true returns at once, tiny budgets, refused
    parameters named with their range, progress properties, the intermediate-solution callback, approximate
-   solutions when no exact one exists, and foreign (non-mhplan) validity checkers. Lattice searches
-   (isLatticeSearch) and potential-field walks (isWalk) keep it too, with the checks adapted where their
-   nature differs. */
+   solutions when no exact one exists, and foreign (non-mhplan) validity checkers; on SE(2) and Dubins
+   problems (docs/spaces.md) by every planner that supports them, the others refusing them at setup(). Lattice
+   searches (isLatticeSearch) and potential-field walks (isWalk) keep it too, with the checks adapted where
+   their nature differs. */
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/collision/Validity.h"
@@ -12,6 +13,7 @@
 #include "mhplan/planners/common/PopulationPlanner.h"
 
 #include <ompl/util/Exception.h>
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -19,6 +21,7 @@
 #include <ompl/util/Console.h>
 
 #include "RegistrySupport.h"
+#include "SpaceProblems.h"
 
 #include <gtest/gtest.h>
 
@@ -605,6 +608,100 @@ TEST_P(PlannerContract, ForeignValidityCheckerAndMotionValidator)
 
 // Every registered mhplan planner, and the test's own planner.
 INSTANTIATE_TEST_SUITE_P(Planners, PlannerContract, ::testing::ValuesIn(contractPlanners()));
+
+class PlannerContractSE2 : public ::testing::TestWithParam<std::string>
+{
+  protected:
+    void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_NONE); }
+};
+
+TEST_P(PlannerContractSE2, SupportedPlannersKeepTheContractTheOthersRefuseAtSetup)
+{
+    // The registry's anyDimension tag says which planners support state spaces beyond the plane
+    // (docs/spaces.md): they keep the contract on an SE(2) stick problem and a Dubins car problem (no
+    // world file; the test's own geometry), every other planner refuses both at setup(), naming itself.
+    const PlannerEntry &entry = contractRegistry().get(GetParam());
+    for (const bool dubins : {false, true})
+    {
+        SCOPED_TRACE(dubins ? "Dubins" : "SE(2)");
+        og::SimpleSetupPtr ss = dubins ? test::carProblem(false) : test::blockProblem();
+        ob::PlannerPtr p = entry.allocate(ss->getSpaceInformation());
+        if (!entry.anyDimension)
+        {
+            try
+            {
+                ss->setPlanner(p);
+                ss->setup();
+                ADD_FAILURE() << GetParam() << " accepted a non-planar state space";
+            }
+            catch (const ompl::Exception &e)
+            {
+                EXPECT_NE(std::string(e.what()).find(GetParam() + ": "), std::string::npos) << e.what();
+                // (APF, online BFO and the lattice searches still report isSetup() after refusing.)
+                if (entry.family == "population" || entry.family == "memetic")
+                {
+                    EXPECT_FALSE(p->isSetup());
+                }
+            }
+            continue;
+        }
+        std::map<std::string, std::string> params{{"seed", "11"}, {"max_iterations", "10"}};
+        if (p->params().hasParam("decoding"))
+            params["decoding"] = "polyline"; // the spline decoding is R^k only
+        applyPlannerParameters(*p, params);
+        ss->setPlanner(p);
+        ss->setup();
+        std::vector<double> costs;
+        ss->getProblemDefinition()->setIntermediateSolutionCallback(
+            [&](const ob::Planner *, const std::vector<const ob::State *> &states, const ob::Cost c)
+            {
+                EXPECT_GE(states.size(), 2u);
+                costs.push_back(c.value());
+            });
+        const ob::PlannerStatus s1 = p->solve(never());
+        EXPECT_TRUE(s1 == ob::PlannerStatus::EXACT_SOLUTION || s1 == ob::PlannerStatus::APPROXIMATE_SOLUTION);
+        EXPECT_EQ(progress(p, "iterations INTEGER"), "10");
+        const unsigned long evals1 = evaluations(p);
+        const double cost1 = std::stod(progress(p, "best cost REAL"));
+        EXPECT_GT(evals1, 0u);
+        // A second call continues.
+        EXPECT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << GetParam();
+        EXPECT_EQ(progress(p, "iterations INTEGER"), "20");
+        EXPECT_GT(evaluations(p), evals1);
+        const double cost2 = std::stod(progress(p, "best cost REAL"));
+        EXPECT_LE(cost2, cost1);
+        if (ss->haveExactSolutionPath())
+        {
+            // The reported cost is the objective's: the space's distances along the returned states.
+            const og::PathGeometric &path = ss->getSolutionPath();
+            EXPECT_TRUE(path.check());
+            EXPECT_NEAR(path.length(), cost2, 1e-9 * cost2);
+            ASSERT_FALSE(costs.empty());
+            for (std::size_t i = 1; i < costs.size(); ++i)
+                EXPECT_LT(costs[i], costs[i - 1]);
+            EXPECT_NEAR(costs.back(), cost2, 1e-9 * cost2);
+            ob::PlannerData data(ss->getSpaceInformation());
+            p->getPlannerData(data);
+            EXPECT_EQ(data.numVertices(), path.getStateCount());
+            EXPECT_EQ(data.numStartVertices(), 1u);
+            EXPECT_EQ(data.numGoalVertices(), 1u);
+        }
+        // clear() forgets everything; the seeded run repeats exactly.
+        p->clear();
+        EXPECT_EQ(evaluations(p), 0u);
+        EXPECT_TRUE(std::isinf(std::stod(progress(p, "best cost REAL"))));
+        ss->getProblemDefinition()->clearSolutionPaths();
+        p->solve(never());
+        EXPECT_EQ(evaluations(p), evals1);
+        EXPECT_EQ(std::stod(progress(p, "best cost REAL")), cost1);
+        // A termination condition already true returns at once.
+        p->clear();
+        EXPECT_EQ(p->solve(ob::PlannerTerminationCondition([] { return true; })), ob::PlannerStatus::TIMEOUT);
+        EXPECT_EQ(evaluations(p), 0u);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Planners, PlannerContractSE2, ::testing::ValuesIn(contractPlanners()));
 
 TEST(PlannerContractRegistry, HoldsEveryBuiltinMhplanPlannerAndTheTestsOwn)
 {

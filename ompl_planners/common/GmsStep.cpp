@@ -33,7 +33,7 @@ namespace mhplan
     bool PopulationPlanner::applyGmsInitial()
     {
         double *x = nullptr, *f = nullptr;
-        if (!gmsInitial_ || spaceDim_ != 2 || !populationView(x, f))
+        if (!gmsInitial_ || !realVector_ || spaceDim_ != 2 || !populationView(x, f))
             return true;
         prepareGmsOps();
         const unsigned int d = dimension();
@@ -47,7 +47,7 @@ namespace mhplan
     bool PopulationPlanner::applyGmsOperators()
     {
         double *x = nullptr, *f = nullptr;
-        if (spaceDim_ != 2 || !populationView(x, f))
+        if (!realVector_ || spaceDim_ != 2 || !populationView(x, f))
             return true; // setup() refuses this; never reached with the switches on
         const unsigned int n = populationSize_, d = dimension();
         const bool pathOps = gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_;

@@ -311,6 +311,12 @@ namespace mhplan
                 "the [GMS] operator switches (" + on +
                 ") need an algorithm that exposes a waypoint population (SMA, LRSMA, MGO); this one does "
                 "not: switch them off");
+        if (!realVector_)
+            refuseSetup("the [GMS] operator switches (" + on +
+                        ") are planar (node/segment repair, simplification, improvement work on points of "
+                        "R^2); the state space '" +
+                        si_->getStateSpace()->getName() +
+                        "' is not a RealVectorStateSpace: switch them off (docs/spaces.md)");
         if (spaceDim_ != 2)
             refuseSetup(
                 "the [GMS] operator switches (" + on +

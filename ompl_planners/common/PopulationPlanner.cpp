@@ -35,6 +35,15 @@ namespace mhplan
     {
         if (const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get()))
             spaceDim_ = std::max(1u, space->getDimension());
+        else
+        {
+            // Another space (docs/spaces.md): its parametrisation's dimension when it has one; setup()
+            // refuses it otherwise.
+            realVector_ = false;
+            std::string why;
+            if (const auto p = StateParametrisation::create(si_->getStateSpace(), why))
+                spaceDim_ = p->dimension();
+        }
         lower_.assign(spaceDim_, 0.0);
         upper_.assign(spaceDim_, 0.0);
         specs_.approximateSolutions = true;
@@ -58,6 +67,13 @@ namespace mhplan
         if (costB_ != nullptr)
             si_->freeState(costB_);
         freeStates(*si_, plannerDataStates_);
+        freeBestStates();
+    }
+
+    void PopulationPlanner::freeBestStates()
+    {
+        freeStates(*si_, bestFeasibleStates_);
+        freeStates(*si_, bestInfeasibleStates_);
     }
 
     void PopulationPlanner::invalidate()
@@ -80,11 +96,11 @@ namespace mhplan
         const ob::StateSpacePtr &ss = si_->getStateSpace();
         const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(ss.get());
         if (space == nullptr)
-            refuseSetup(
-                "needs an ompl::base::RealVectorStateSpace (a candidate path is a vector of waypoints "
-                "in R^k); got the state space '" +
-                ss->getName() + "'" + (ss->isCompound() ? ", a compound space" : "") +
-                ". SO(2)/SO(3)/SE(2)/SE(3), compound and other spaces are not supported.");
+        {
+            checkStateSpace();
+            return;
+        }
+        realVector_ = true;
         const unsigned int k = space->getDimension();
         if (k == 0)
             refuseSetup("needs a RealVectorStateSpace of dimension at least 1; got dimension 0");
@@ -105,6 +121,41 @@ namespace mhplan
         upper_.assign(b.high.begin(), b.high.end());
     }
 
+    void PopulationPlanner::checkStateSpace()
+    {
+        // A space other than R^k (docs/spaces.md): waypoints are states, through a parametrisation.
+        const ob::StateSpacePtr &ss = si_->getStateSpace();
+        std::string why;
+        std::unique_ptr<StateParametrisation> fresh = StateParametrisation::create(ss, why);
+        if (!fresh)
+            refuseSetup("cannot plan on the state space '" + ss->getName() + "': " + why +
+                        " (docs/spaces.md)");
+        const std::string on = " on the state space '" + ss->getName() + "' (not a RealVectorStateSpace)";
+        if (decoding_ == PathDecoding::Spline)
+            refuseSetup(
+                "parameter 'decoding' = 'spline' splines each coordinate in R^k; it is not supported" + on +
+                ", whose waypoints are joined by the space's own interpolation: set "
+                "decoding=polyline (docs/spaces.md)");
+        if (fitnessName_ == "gms")
+            refuseSetup("parameter 'fitness' = 'gms' (the [GMS] f1/f2: turning angles and clearances of "
+                        "straight segments) is not supported" +
+                        on + ": set fitness=lrsma or auto (docs/spaces.md)");
+        // The space is the planner's for good, but its bounds may have changed: a repeated setup() of a
+        // prepared query starts the search afresh with the new parametrisation.
+        invalidate();
+        stateFitness_.reset();
+        param_ = std::move(fresh);
+        realVector_ = false;
+        spaceDim_ = param_->dimension();
+        lower_.resize(spaceDim_);
+        upper_.resize(spaceDim_);
+        for (unsigned int j = 0; j < spaceDim_; ++j)
+        {
+            lower_[j] = param_->lower(j);
+            upper_[j] = param_->upper(j);
+        }
+    }
+
     void PopulationPlanner::setup()
     {
         ob::Planner::setup();
@@ -117,6 +168,7 @@ namespace mhplan
         ob::Planner::clear();
         clearPopulation();
         freeStates(*si_, plannerDataStates_);
+        freeBestStates();
         problemReady_ = false;
         initialised_ = false;
         haveFeasible_ = false;
@@ -143,14 +195,16 @@ namespace mhplan
             OMPL_ERROR("%s: no valid start state", getName().c_str());
             return false;
         }
-        const double *sv = start->as<ob::RealVectorStateSpace::StateType>()->values;
-        startX_.assign(sv, sv + k);
         const ob::State *goal = pis_.nextGoal();
         if (goal == nullptr)
         {
             OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
             return false;
         }
+        if (!realVector_)
+            return prepareStateProblem(start, goal);
+        const double *sv = start->as<ob::RealVectorStateSpace::StateType>()->values;
+        startX_.assign(sv, sv + k);
         const double *gv = goal->as<ob::RealVectorStateSpace::StateType>()->values;
         goalX_.assign(gv, gv + k);
         start_ = Vec2(startX_[0], k > 1 ? startX_[1] : 0.0);
@@ -186,6 +240,43 @@ namespace mhplan
                     iterations_, waypoints_, k, toString(decoding_).c_str(), toString(kind).c_str(),
                     mode == PenaltyMode::ExactCircles ? " (exact circle formula)"
                     : mode == PenaltyMode::ValidityOnly
+                        ? " (the validity checker computes no clearance: the penalty counts invalid samples)"
+                        : "");
+        problemReady_ = true;
+        return true;
+    }
+
+    bool PopulationPlanner::prepareStateProblem(const ob::State *start, const ob::State *goal)
+    {
+        const unsigned int n = spaceDim_;
+        param_->setReference(start);
+        startX_.assign(n, 0.0);
+        goalX_.assign(n, 0.0);
+        param_->toVector(start, startX_.data());
+        param_->toVector(goal, goalX_.data());
+        for (unsigned int j = 0; j < n; ++j)
+        {
+            lower_[j] = param_->lower(j);
+            upper_[j] = param_->upper(j);
+        }
+        start_ = Vec2(startX_[0], n > 1 ? startX_[1] : 0.0);
+        goal_ = Vec2(goalX_[0], n > 1 ? goalX_[1] : 0.0);
+        // Every state of the search is allocated here, once per query (docs/spaces.md).
+        stateFitness_ = std::make_unique<StatePathFitness>(si_, *param_);
+        stateFitness_->configure(start, goal, waypoints_, splineSamples_, weights_);
+        freeBestStates();
+        for (unsigned int i = 0; i < waypoints_ + 2; ++i)
+        {
+            bestFeasibleStates_.push_back(si_->allocState());
+            bestInfeasibleStates_.push_back(si_->allocState());
+        }
+        if (seed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u waypoint states of the space '%s' (%u coordinates "
+                    "each), polyline decoding by the space's interpolation, lrsma fitness%s",
+                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+                    iterations_, waypoints_, si_->getStateSpace()->getName().c_str(), n,
+                    stateFitness_->penaltyMode() == PenaltyMode::ValidityOnly
                         ? " (the validity checker computes no clearance: the penalty counts invalid samples)"
                         : "");
         problemReady_ = true;
@@ -261,18 +352,36 @@ namespace mhplan
 
     void PopulationPlanner::randomPosition(double *x)
     {
+        if (!realVector_)
+        {
+            for (unsigned int w = 0; w < waypoints_; ++w)
+                param_->sample(rng_, x + std::size_t(w) * spaceDim_);
+            return;
+        }
         for (unsigned int j = 0; j < dimension(); ++j)
             x[j] = rng_.uniformReal(lower(j), upper(j));
     }
 
     void PopulationPlanner::clampToBounds(double *x) const
     {
+        if (!realVector_)
+        {
+            for (unsigned int w = 0; w < waypoints_; ++w)
+                param_->enforce(x + std::size_t(w) * spaceDim_);
+            return;
+        }
         for (unsigned int j = 0; j < dimension(); ++j)
             x[j] = std::min(std::max(x[j], lower(j)), upper(j));
     }
 
     double PopulationPlanner::evaluate(const double *x)
     {
+        if (!realVector_)
+        {
+            const FitnessResult r = stateFitness_->evaluate(x);
+            recordStates(r, stateFitness_->path());
+            return r.fitness;
+        }
         decoder_.decode(x);
         const PointsView path = decoder_.pathView();
         const FitnessResult r = fitness_->evaluate(path, decoder_.samplesView());
@@ -282,6 +391,9 @@ namespace mhplan
 
     double PopulationPlanner::evaluatePath(const std::vector<Vec2> &path)
     {
+        if (!realVector_)
+            throw std::logic_error(getName() + ": evaluatePath() takes points of R^2; the space '" +
+                                   si_->getStateSpace()->getName() + "' is not a RealVectorStateSpace");
         if (spaceDim_ != 2)
             throw std::logic_error(getName() +
                                    ": evaluatePath() takes planar points; the space has dimension " +
@@ -297,6 +409,9 @@ namespace mhplan
 
     double PopulationPlanner::evaluatePoints(const PointsView &path)
     {
+        if (!realVector_)
+            throw std::logic_error(getName() + ": evaluatePoints() takes points of R^k; the space '" +
+                                   si_->getStateSpace()->getName() + "' is not a RealVectorStateSpace");
         const FitnessResult r = fitness_->evaluate(path, path);
         record(r, path);
         return r.fitness;
@@ -349,38 +464,87 @@ namespace mhplan
         }
     }
 
+    void PopulationPlanner::recordStates(const FitnessResult &r, const std::vector<ob::State *> &path)
+    {
+        ++evaluationCount_;
+        if (r.feasible)
+        {
+            // The reported cost is the problem's objective of the states (path length: si->distance).
+            const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+            ob::Cost cost(r.length);
+            if (opt)
+            {
+                cost = opt->identityCost();
+                for (std::size_t i = 1; i < path.size(); ++i)
+                    cost = opt->combineCosts(cost, opt->motionCost(path[i - 1], path[i]));
+            }
+            const bool better = !haveFeasible_ || (opt ? opt->isCostBetterThan(cost, bestFeasibleCost_)
+                                                       : cost.value() < bestFeasibleCost_.value());
+            if (better)
+            {
+                haveFeasible_ = true;
+                bestFeasibleCost_ = cost;
+                for (std::size_t i = 0; i < path.size(); ++i)
+                    si_->copyState(bestFeasibleStates_[i], path[i]);
+                bestCostValue_ = cost.value();
+                fireIntermediate();
+            }
+        }
+        else if (!haveInfeasible_ || r.fitness < bestInfeasibleFitness_)
+        {
+            haveInfeasible_ = true;
+            bestInfeasibleFitness_ = r.fitness;
+            bestInfeasibleViolation_ = r.violation;
+            for (std::size_t i = 0; i < path.size(); ++i)
+                si_->copyState(bestInfeasibleStates_[i], path[i]);
+        }
+    }
+
+    std::size_t PopulationPlanner::pathCount(bool feasible) const
+    {
+        if (realVector_)
+            return (feasible ? bestFeasiblePath_ : bestInfeasiblePath_).size() / spaceDim_;
+        return (feasible ? haveFeasible_ : haveInfeasible_)
+                   ? (feasible ? bestFeasibleStates_ : bestInfeasibleStates_).size()
+                   : 0;
+    }
+
+    void PopulationPlanner::pathState(bool feasible, ob::State *state, std::size_t i) const
+    {
+        if (realVector_)
+            toState(state, feasible ? bestFeasiblePath_ : bestInfeasiblePath_, i);
+        else
+            si_->copyState(state, (feasible ? bestFeasibleStates_ : bestInfeasibleStates_)[i]);
+    }
+
     void PopulationPlanner::fireIntermediate()
     {
         reportImprovement(
-            this, pdef_, *si_, bestFeasiblePath_.size() / spaceDim_,
-            [this](ob::State *s, std::size_t i) { toState(s, bestFeasiblePath_, i); }, bestFeasibleCost_);
+            this, pdef_, *si_, pathCount(true),
+            [this](ob::State *s, std::size_t i) { pathState(true, s, i); }, bestFeasibleCost_);
     }
 
     void PopulationPlanner::reportSolution(bool &exact, bool &approximate)
     {
         exact = approximate = false;
-        const std::vector<double> *points = nullptr;
-        if (haveFeasible_)
-            points = &bestFeasiblePath_;
-        else if (haveInfeasible_)
-            points = &bestInfeasiblePath_;
-        if (points == nullptr)
+        if (!haveFeasible_ && !haveInfeasible_)
             return;
-        exact = haveFeasible_;
+        const bool feasible = haveFeasible_;
+        exact = feasible;
         approximate = !exact;
         addSolution(
-            *this, pdef_, si_, points->size() / spaceDim_,
-            [this, points](ob::State *s, std::size_t i) { toState(s, *points, i); }, exact, bestFeasibleCost_,
-            bestInfeasibleViolation_);
+            *this, pdef_, si_, pathCount(feasible),
+            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, exact,
+            bestFeasibleCost_, bestInfeasibleViolation_);
     }
 
     void PopulationPlanner::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
-        const std::vector<double> &points = haveFeasible_ ? bestFeasiblePath_ : bestInfeasiblePath_;
+        const bool feasible = haveFeasible_;
         addPathToPlannerData(
-            *si_, points.size() / spaceDim_,
-            [this, &points](ob::State *s, std::size_t i) { toState(s, points, i); }, true, data,
+            *si_, pathCount(feasible),
+            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, true, data,
             plannerDataStates_);
     }
 

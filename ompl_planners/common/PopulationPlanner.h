@@ -7,6 +7,8 @@
 
 #include "mhplan/planners/common/Fitness.h"
 #include "mhplan/planners/common/PathEncoding.h"
+#include "mhplan/planners/common/StateParametrisation.h"
+#include "mhplan/planners/common/StatePathFitness.h"
 #include "mhplan/base/Parameters.h"
 
 #include <ompl/base/Planner.h>
@@ -34,8 +36,18 @@ namespace mhplan
     /** \brief Base class of mhplan's metaheuristic planners.
 
         Problem: any ompl::base::RealVectorStateSpace of dimension k >= 1 with finite bounds (the planar
-        worlds are k = 2), with the user's own validity checker and motion validator; start and goal from
-        the problem definition (the first start state, one goal sample). A candidate is the waypoint vector
+        worlds are k = 2), and any other state space StateParametrisation supports (SO(2), SO(3) and compound
+        spaces of them with R^k: SE(2), DubinsStateSpace, ReedsSheppStateSpace, SE(3); docs/spaces.md), with
+        the user's own validity checker and motion validator; start and goal from the problem definition
+        (the first start state, one goal sample). On those other spaces a waypoint is a state, the update
+        rules act on its coordinates (StateParametrisation: angles unwrapped relative to the start's,
+        rotation vectors in the tangent space at the start's rotation), the path is start, waypoints, goal
+        joined by the space's interpolation, its length the sum of si->distance() over the segments, and
+        the fitness is [LRSMA]'s S on states interpolated along it (StatePathFitness); decoding "spline",
+        fitness "gms", the [GMS] operators and evaluatePath()/evaluatePoints() are R^k only and refused
+        there by setup() naming the parameter; a repeated setup() after a solve() starts the search over there
+        (the parametrisation is built afresh). On a RealVectorStateSpace nothing of this runs: the R^k code
+        below is used unchanged. A candidate is the waypoint vector
         of docs/algorithms.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
         coordinate bounded by the space's bounds on it (see WaypointDecoder; the spline decoding splines
         each coordinate against t, in any dimension), or any list of points (evaluatePath(), used by the
@@ -203,6 +215,12 @@ namespace mhplan
                    gmsReplaceFraction_ > 0.0;
         }
 
+        /** \brief True when the space is a RealVectorStateSpace (the R^k encoding of docs/algorithms.md 1.1);
+            false on the other supported spaces (docs/spaces.md). Valid after setup(). */
+        bool onRealVectorSpace() const { return realVector_; }
+        /** \brief The state parametrisation in use (null on a RealVectorStateSpace and before setup()). */
+        const StateParametrisation *parametrisation() const { return realVector_ ? nullptr : param_.get(); }
+
         /** \brief Objective cost of the best feasible path (infinity before one exists). */
         double bestCost() const { return bestCostValue_.load(); }
         /** \brief Completed iterations since the last clear(). */
@@ -210,11 +228,16 @@ namespace mhplan
         /** \brief Fitness evaluations since the last clear(). */
         unsigned long evaluationCount() const { return evaluationCount_.load(); }
         /** \brief The fitness actually in use (after resolving "auto"); valid after the first solve(). */
-        FitnessKind fitnessKind() const { return fitness_ ? fitness_->kind() : FitnessKind::LengthPenalty; }
+        FitnessKind fitnessKind() const
+        {
+            return !realVector_ || !fitness_ ? FitnessKind::LengthPenalty : fitness_->kind();
+        }
         /** \brief How the [LRSMA] penalty measures a sample point (see PathFitness); valid after the first
             solve(). */
         PenaltyMode penaltyMode() const
         {
+            if (!realVector_)
+                return stateFitness_ ? stateFitness_->penaltyMode() : PenaltyMode::Clearance;
             return fitness_ ? fitness_->penaltyMode() : PenaltyMode::Clearance;
         }
 
@@ -259,7 +282,8 @@ namespace mhplan
 
         /** \brief m k: the waypoints times the state space's dimension. */
         unsigned int dimension() const { return spaceDim_ * waypoints_; }
-        /** \brief k, the dimension of the RealVectorStateSpace (2 until known). */
+        /** \brief k, the dimension of the RealVectorStateSpace, or the coordinates per state of its
+            parametrisation on other spaces (2 until known). */
         unsigned int spaceDimension() const { return spaceDim_; }
         /** \brief Lower bound of candidate coordinate j (the space's bound on coordinate j mod k). */
         double lower(unsigned int j) const { return lower_[j % spaceDim_]; }
@@ -269,7 +293,8 @@ namespace mhplan
         const Vec2 &startPoint() const { return start_; }
         /** \brief First two coordinates of the goal (the planar goal). */
         const Vec2 &goalPoint() const { return goal_; }
-        /** \brief The start's k coordinates (valid once solve() has prepared the problem). */
+        /** \brief The start's k coordinates (valid once solve() has prepared the problem; on other spaces
+            its parametrisation). */
         const double *startCoordinates() const { return startX_.data(); }
         /** \brief The goal's k coordinates. */
         const double *goalCoordinates() const { return goalX_.data(); }
@@ -290,8 +315,19 @@ namespace mhplan
         void declareParameters();
         /** \brief Read the space's dimension and bounds; refuseSetup() when they are unsupported. */
         void checkSpace();
+        /** \brief checkSpace() for a space other than R^k: its parametrisation, or refuseSetup(). */
+        void checkStateSpace();
         bool prepareProblem();
         void record(const FitnessResult &r, const PointsView &path);
+        /** \brief record() for a decoded path of states (spaces other than R^k). */
+        void recordStates(const FitnessResult &r, const std::vector<ompl::base::State *> &path);
+        /** \brief Points of the reported path (best feasible when \e feasible, else best infeasible). */
+        std::size_t pathCount(bool feasible) const;
+        /** \brief Write point \e i of that path into \e state. */
+        void pathState(bool feasible, ompl::base::State *state, std::size_t i) const;
+        /** \brief prepareProblem() on a space other than R^k. */
+        bool prepareStateProblem(const ompl::base::State *start, const ompl::base::State *goal);
+        void freeBestStates();
         /** \brief Write point \e i of \e points into \e state. */
         void toState(ompl::base::State *state, const std::vector<double> &points, std::size_t i) const;
         void reportSolution(bool &exact, bool &approximate);
@@ -338,6 +374,13 @@ namespace mhplan
         std::vector<double> startX_, goalX_;
         std::vector<double> lower_{0.0, 0.0};
         std::vector<double> upper_{0.0, 0.0};
+        /** \brief False on spaces other than RealVectorStateSpace, which then use param_ and stateFitness_
+            (docs/spaces.md); every R^k member below is then unused. */
+        bool realVector_{true};
+        std::unique_ptr<StateParametrisation> param_;
+        std::unique_ptr<StatePathFitness> stateFitness_;
+        /** \brief Best paths as states (m + 2 each, allocated once per query; spaces other than R^k). */
+        std::vector<ompl::base::State *> bestFeasibleStates_, bestInfeasibleStates_;
         WaypointDecoder decoder_;
         std::unique_ptr<PathFitness> fitness_;
         /** \brief State buffers for the objective's motion costs. */

@@ -4,6 +4,8 @@
 #include "mhplan/collision/GridCollision.h"
 #include "mhplan/collision/Validity.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -24,9 +26,9 @@ namespace mhplan
         constexpr ParamRange kReplaceFraction{
             "replace_fraction", 0, 0.05, 1,
             "share of the population replaced by fresh individuals each generation"};
-        constexpr ParamRange kCommonNodeTolerance{
-            "common_node_tolerance", 0, 0.005, 1,
-            "crossover: two nodes are common when within this fraction of the bounds' larger side (off grids)"};
+        constexpr ParamRange kCommonNodeTolerance{"common_node_tolerance", 0, 0.005, 1,
+                                                  "crossover: two nodes are common when within this fraction "
+                                                  "of the bounds' larger side (off grids)"};
     } // namespace
 
     Genetic::Genetic(const ob::SpaceInformationPtr &si, const std::string &name)
@@ -56,6 +58,16 @@ namespace mhplan
 
     void Genetic::setup()
     {
+        // Planar only: refuse any other space before the base class accepts it as a state space
+        // (docs/spaces.md).
+        const ob::StateSpacePtr &space = si_->getStateSpace();
+        if (dynamic_cast<const ob::RealVectorStateSpace *>(space.get()) == nullptr)
+            refuseSetup(
+                "needs a 2-dimensional RealVectorStateSpace: the [GMS] node encoding and its operators "
+                "are planar; got the state space '" +
+                space->getName() +
+                "' (SE(2), Dubins, Reeds-Shepp and other spaces are not supported). Use SMA, LRSMA or "
+                "MGO on those (docs/spaces.md).");
         PopulationPlanner::setup();
         if (spaceDimension() != 2)
             refuseSetup("needs a 2-dimensional RealVectorStateSpace: the [GMS] node encoding and its repair, "

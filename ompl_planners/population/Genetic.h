@@ -44,8 +44,9 @@ namespace mhplan
         - \c decoding and \c spline_samples do not apply (paths are polylines through the nodes).
         - Planar only: the [GMS] node encoding comes from grid maps and its operators (ring search for node
           repair, the 8 compass moves of node improvement, the perpendicular bisector of segment repair) are
-          written for the plane; setup() refuses a RealVectorStateSpace of dimension other than 2 with
-          ompl::Exception (use SMA, LRSMA or MGO in R^k). */
+          written for the plane; setup() refuses a RealVectorStateSpace of dimension other than 2, and every
+          other state space (SE(2), Dubins, Reeds-Shepp, ...), with ompl::Exception (use SMA, LRSMA or MGO in
+          R^k and on those spaces, docs/spaces.md). */
     class Genetic : public PopulationPlanner
     {
       public:
@@ -53,7 +54,8 @@ namespace mhplan
         explicit Genetic(const ompl::base::SpaceInformationPtr &si, const std::string &name = "GA");
         ~Genetic() override;
 
-        /** \brief PopulationPlanner::setup(), then refuse a space that is not 2-dimensional. */
+        /** \brief Refuse a space that is not a 2-dimensional RealVectorStateSpace (SE(2), Dubins and every
+            other state space too), else PopulationPlanner::setup(). */
         void setup() override;
 
         /** \brief Crossover probability (0..1). */

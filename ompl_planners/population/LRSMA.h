@@ -33,7 +33,13 @@ namespace mhplan
           "dot" gives the literal scalar reading R.X added to every coordinate).
         - The annealing step runs every iteration, after the stagnation monitor; F(t) is DF after the SMA
           update and the Levy flight. The rotated set is the best ceil(p_r N) by current fitness.
-        - Every perturbed candidate is clamped to the bounds before evaluation. */
+        - Every perturbed candidate is clamped to the bounds before evaluation.
+
+        State spaces (docs/spaces.md): as "SMA", "LRSMA" and "MGO" (no [GMS] operator) it runs on any
+        RealVectorStateSpace and on SE(2), DubinsStateSpace, ReedsSheppStateSpace, SE(3) and compound spaces
+        of R^k, SO(2) and SO(3) (PopulationPlanner, StateParametrisation; there with decoding = polyline and
+        the [LRSMA] fitness, the rules acting on the states' parametrisation); the [GMS] and -OPS variants
+        are planar (their gms_* switches are refused elsewhere); other spaces are refused at setup(). */
     /** \brief The tolerance-based stagnation monitor of [LRSMA] eq 8 (docs/algorithms.md 5): tau(t) is read
         before it is updated, so with Tmax = 2 the rotation fires on the third consecutive iteration with
         dF < Fmin (then every third while the stagnation lasts). */

@@ -28,7 +28,13 @@ namespace mhplan
         - Defaults: N = 30, T = 30 ([LRSMA]'s budget), m = 3 waypoints, polyline decoding, fitness S on
           geometric worlds and [GMS] f1/f2 on grid worlds (parameter \c fitness).
         - r6 is one scalar per gazelle (as in the original code); ri1..ri6 are drawn per gazelle.
-        - male_gazelle is updated after the merge at the end of each iteration. */
+        - male_gazelle is updated after the merge at the end of each iteration.
+
+        State spaces (docs/spaces.md): as "SMA", "LRSMA" and "MGO" (no [GMS] operator) it runs on any
+        RealVectorStateSpace and on SE(2), DubinsStateSpace, ReedsSheppStateSpace, SE(3) and compound spaces
+        of R^k, SO(2) and SO(3) (PopulationPlanner, StateParametrisation; there with decoding = polyline and
+        the [LRSMA] fitness, the rules acting on the states' parametrisation); the [GMS] and -OPS variants
+        are planar (their gms_* switches are refused elsewhere); other spaces are refused at setup(). */
     class MountainGazelle : public PopulationPlanner
     {
       public:

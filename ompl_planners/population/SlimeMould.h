@@ -37,7 +37,13 @@ namespace mhplan
           original does it at the start of the next iteration from the same values: same result).
         - t runs 1..T, so a = arctanh(1 - 1/T) is finite at the first iteration; at t = T, a = b = 0 and the
           non-elite coordinates collapse to 0 as in the original (the best-ever archive is unaffected).
-        - Out-of-bounds coordinates are clamped. */
+        - Out-of-bounds coordinates are clamped.
+
+        State spaces (docs/spaces.md): as "SMA", "LRSMA" and "MGO" (no [GMS] operator) it runs on any
+        RealVectorStateSpace and on SE(2), DubinsStateSpace, ReedsSheppStateSpace, SE(3) and compound spaces
+        of R^k, SO(2) and SO(3) (PopulationPlanner, StateParametrisation; there with decoding = polyline and
+        the [LRSMA] fitness, the rules acting on the states' parametrisation); the [GMS] and -OPS variants
+        are planar (their gms_* switches are refused elsewhere); other spaces are refused at setup(). */
     class SlimeMould : public PopulationPlanner
     {
       public:
