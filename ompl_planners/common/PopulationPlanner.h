@@ -45,7 +45,8 @@ namespace mhplan
         joined by the space's interpolation, its length the sum of si->distance() over the segments, and
         the fitness is [LRSMA]'s S on states interpolated along it (StatePathFitness); decoding "spline",
         fitness "gms", the [GMS] operators and evaluatePath()/evaluatePoints() are R^k only and refused
-        there by setup() naming the parameter. On a RealVectorStateSpace nothing of this runs: the R^k code
+        there by setup() naming the parameter; a repeated setup() after a solve() starts the search over there
+        (the parametrisation is built afresh). On a RealVectorStateSpace nothing of this runs: the R^k code
         below is used unchanged. A candidate is the waypoint vector
         of docs/algorithms.md 1.1 generalised to R^k: m waypoints of k coordinates, dimension() = m k, each
         coordinate bounded by the space's bounds on it (see WaypointDecoder; the spline decoding splines
