@@ -193,7 +193,7 @@ int main(int argc, char **argv)
         worldProblem("Dubins (dubins_circles)", environments + "/dubins_circles.yaml"),
         worldProblem("Reeds-Shepp (reeds_shepp_parking)", environments + "/reeds_shepp_parking.yaml"),
     };
-    const PlannerRegistry &registry = PlannerRegistry::builtin();
+    const PlannerRegistry &registry = builtinPlanners();
     std::vector<std::string> planners;
     for (const std::string &name : registry.names())
     {
