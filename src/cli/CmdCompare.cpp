@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan compare: every planner on every world's first query; a table (or JSON) of success, lengths, the
    optimum, the gap and time. */
+#include "mhplan/collision/Metrics.h"
+#include "mhplan/collision/RigidValidity.h"
 #include "mhplan/cli/Commands.h"
 
 #include "mhplan/cli/Args.h"
@@ -139,6 +141,18 @@ namespace mhplan::cli
                     totalTime += ompl::time::seconds(ompl::time::now() - t0);
                     if (status != ob::PlannerStatus::EXACT_SOLUTION || !ss->haveExactSolutionPath())
                         continue;
+                    if (world.isRigid())
+                    {
+                        // The robot checked independently along the space's interpolation; its metric.
+                        const RigidPathMetrics m =
+                            rigidPathMetrics(world, *ss->getSpaceInformation(), ss->getSolutionPath(),
+                                             RigidBodyModel(world), defaultMetricStep(world));
+                        if (!m.collisionFree)
+                            continue;
+                        ++exact;
+                        lengths.push_back(m.length);
+                        continue;
+                    }
                     const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
                     bool ok = true;
                     for (std::size_t i = 1; i < pts.size() && ok; ++i)

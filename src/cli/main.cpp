@@ -6,6 +6,7 @@
 #include "mhplan/base/World.h"
 
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 
 #include <cstring>
 #include <exception>
@@ -112,6 +113,13 @@ int main(int argc, char **argv)
             if (what.compare(0, p.size(), p) == 0)
                 what = what.substr(p.size());
         std::cerr << prefix << "error: " << what << "\n";
+        return 1;
+    }
+    catch (const ompl::Exception &e)
+    {
+        // A planner refusing the problem at setup() (docs/conventions.md): the message names the planner
+        // and what it needs; OMPL has already logged it. A problem the user can change, not a defect.
+        std::cerr << "mhplan " << name << ": error: " << e.what() << "\n";
         return 1;
     }
     catch (const std::exception &e)
