@@ -23,6 +23,8 @@
 #include "RegistrySupport.h"
 #include "SpaceProblems.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -94,11 +96,13 @@ namespace
     }
 
     constexpr unsigned int kRuns = 10;
-    /** \brief The iteration budget: 100 (T = 100); global BFO's iterations are chemotactic steps of the
-        whole colony (S (Ns + 1) evaluations each), 30 of them. */
+    /** \brief The iteration budget: 100 (T = 100) for an algorithm with a coefficient schedule (parameter
+        \c iterations); 30 for one without, the global BFO, whose iterations are chemotactic steps of the
+        whole colony (S (Ns + 1) evaluations each). */
     unsigned int iterations(const std::string &planner)
     {
-        return planner.find("BFO") == std::string::npos ? 100 : 30; // BFO-GLOBAL, ATBFO-GLOBAL
+        const auto si = std::make_shared<ob::SpaceInformation>(std::make_shared<ob::RealVectorStateSpace>(2));
+        return allocatePlanner(planner, si)->params().hasParam("iterations") ? 100 : 30;
     }
     /** \brief "Most runs": at least this many of kRuns exact (docs/spaces.md lists the measured rates). */
     constexpr unsigned int kMinExact = 6;
