@@ -328,9 +328,8 @@ namespace mhplan::bench
         const YamlReader r(fileName);
         r.allowKeys(root, "",
                     {"campaign", "database", "simulation_database", "logs", "time_limit", "time_limit_kind",
-                     "memory_limit", "runs", "seed", "progress_interval", "planner_data", "collision", "worlds",
-                     "planners",
-                     "simulations"});
+                     "wall_limit", "memory_limit", "runs", "seed", "progress_interval", "planner_data",
+                     "collision", "worlds", "planners", "simulations"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
@@ -345,6 +344,16 @@ namespace mhplan::bench
                        "expected wall (elapsed seconds, OMPL's) or cpu (CPU seconds of the run), got '" +
                            kind + "'");
             c.cpuTimeLimit = kind == "cpu";
+        }
+        if (root["wall_limit"].IsDefined())
+        {
+            c.wallLimit = r.number(root["wall_limit"], "wall_limit", 1e-3, 1e7);
+            if (c.wallLimit <= c.timeLimit)
+            {
+                std::ostringstream why;
+                why << "must exceed time_limit (" << c.timeLimit << " s): every planning run would be killed";
+                r.fail(root["wall_limit"], "wall_limit", why.str());
+            }
         }
         if (root["memory_limit"].IsDefined())
             c.memoryLimit = r.number(root["memory_limit"], "memory_limit", 1.0, 1e9);
@@ -456,6 +465,8 @@ namespace mhplan::bench
                << "\ncollision " << campaign.collision << "\nplanner data " << campaign.plannerData << "\n";
         if (campaign.cpuTimeLimit) // absent for wall-clock limits: older logs keep their fingerprints
             common << "time limit kind cpu\n";
+        if (campaign.wallLimit > 0.0) // absent by default, likewise
+            common << "wall limit " << campaign.wallLimit << "\n";
         for (const auto &p : campaign.planners)
         {
             common << "planner " << p.displayName << " " << p.planner;

@@ -114,6 +114,11 @@ namespace mhplan::bench
             same budget however loaded the machine is (the wall clock then only stops a run after
             kCpuLimitWallFactor x timeLimit + 10 s). */
         bool cpuTimeLimit{false};
+        /** \brief Wall-clock seconds a planning run may go without a result before it is killed and recorded
+            as Crash (campaign key wall_limit; counted from the run's start and from each of its messages:
+            its setup, then its solve() and metrics); 0: the default, 2 x runWallBound + 20 s. Simulation
+            runs have their own, SimulationSpec::wallLimit. */
+        double wallLimit{0.0};
         /** \brief MB per run (OMPL's termination condition checks the process's memory). */
         double memoryLimit{4096.0};
         /** \brief Runs per planner and experiment. */

@@ -37,6 +37,10 @@ namespace mhplan::bench::detail
         kCpuLimitWallFactor x limit + 10 s. */
     double runWallBound(const Campaign &c);
 
+    /** Seconds a planning run of \e c may stay silent before it is killed (Crash): the campaign's
+        wall_limit, by default 2 x runWallBound(c) + 20 s. */
+    double planningWatchdog(const Campaign &c);
+
     /** Everything a planning experiment's processes share (built before the children are forked; nothing
         here owns a random number generator). */
     struct ExperimentSetup

@@ -246,6 +246,11 @@ namespace mhplan::bench::detail
         return c.cpuTimeLimit ? kCpuLimitWallFactor * c.timeLimit + 10.0 : c.timeLimit;
     }
 
+    double planningWatchdog(const Campaign &c)
+    {
+        return c.wallLimit > 0.0 ? c.wallLimit : 2.0 * runWallBound(c) + 20.0;
+    }
+
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs)
     {
@@ -287,7 +292,7 @@ namespace mhplan::bench::detail
         std::vector<PlannerRecord> records(c.planners.size());
         times = SolveTimes{};
         const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
-        const double watchdog = 2.0 * runWallBound(c) + 20.0;
+        const double watchdog = planningWatchdog(c);
 
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {

@@ -132,6 +132,16 @@ namespace mhplan::bench
             throw InputError(campaign.file + ": the campaign has no experiments (no worlds, no simulations)");
         for (const auto &p : campaign.planners)
             registry.get(p.planner); // unknown names fail here with the list of registered planners
+        if (!campaign.planners.empty() && campaign.wallLimit > 0.0 &&
+            campaign.wallLimit <= campaign.timeLimit)
+        {
+            // The file's values are checked when it is read; this catches a time limit given later (--time).
+            std::ostringstream why;
+            why << campaign.file << ": wall_limit (" << campaign.wallLimit
+                << " s) must exceed the time limit (" << campaign.timeLimit
+                << " s): every planning run would be killed";
+            throw InputError(why.str());
+        }
         if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
         {
             const World world = loadWorld(all.front().worldFile);

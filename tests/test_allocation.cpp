@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* The hot paths (validity, motion and clearance queries of every collision model) never touch the heap once
-   warm: fitness and planner loops call them millions of times. Counted with a replaced global operator new.
- */
+   warm: fitness and planner loops call them millions of times. Counted with the replaced global operator new
+   and, in the normal build, the interposed C allocation functions (AllocationCounter.h); the counter itself
+   is tested first: every form of operator new once, the containers' allocations, and the C allocations in
+   exactly the builds that count them. */
 #include "mhplan/collision/Collision.h"
 #include "mhplan/io/Generators.h"
 #include "mhplan/io/WorldIO.h"
@@ -12,13 +14,46 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
 #include <random>
+#include <string>
+#include <vector>
 
 using namespace mhplan;
 
 namespace
 {
+    /** Make the compiler assume that \e p is used: an allocation whose memory is never read may be left
+        out (GCC removes unused new/delete and malloc/free pairs). */
+    void escape(const void *p)
+    {
+        asm volatile("" : : "g"(p) : "memory");
+    }
+
+    /** Allocations the counter saw while \e f ran. */
+    template <class F> unsigned long countedDuring(F &&f)
+    {
+        const unsigned long before = test::heapAllocations();
+        f();
+        return test::heapAllocations() - before;
+    }
+
+    /** A type whose alignment exceeds the default new alignment: new takes the aligned forms. */
+    struct alignas(64) CacheLine
+    {
+        double v[8];
+    };
+    static_assert(alignof(CacheLine) > __STDCPP_DEFAULT_NEW_ALIGNMENT__);
+
+    bool aligned64(const void *p)
+    {
+        return reinterpret_cast<std::uintptr_t>(p) % 64 == 0;
+    }
+
     /** Allocations during 2000 calls of each query: isValid, segmentValid, clearance, segmentClearance. */
     std::array<long, 4> allocationsDuring(const CollisionModel &model, const Box &b)
     {
@@ -80,4 +115,246 @@ TEST(Allocation, CollisionQueriesDoNotAllocate)
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(many, CollisionBackend::Hash), many.bounds), none);
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(rects, CollisionBackend::Hash), rects.bounds), none);
     EXPECT_EQ(allocationsDuring(*makeCollisionModel(grid, CollisionBackend::Grid), grid.bounds), none);
+}
+
+TEST(Allocation, CounterCountsEveryFormOfOperatorNewOnce)
+{
+    bool aligned = true; // every aligned form returned memory with the type's alignment
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      int *p = new int(3);
+                      escape(p);
+                      delete p;
+                  }),
+              1u)
+        << "new";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      int *p = new int[7];
+                      escape(p);
+                      delete[] p;
+                  }),
+              1u)
+        << "new[]";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      int *p = new (std::nothrow) int(3);
+                      escape(p);
+                      delete p;
+                  }),
+              1u)
+        << "nothrow new";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      int *p = new (std::nothrow) int[7];
+                      escape(p);
+                      delete[] p;
+                  }),
+              1u)
+        << "nothrow new[]";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      CacheLine *p = new CacheLine;
+                      escape(p);
+                      aligned = aligned && aligned64(p);
+                      delete p;
+                  }),
+              1u)
+        << "aligned new";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      CacheLine *p = new CacheLine[3];
+                      escape(p);
+                      aligned = aligned && aligned64(p);
+                      delete[] p;
+                  }),
+              1u)
+        << "aligned new[]";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      CacheLine *p = new (std::nothrow) CacheLine;
+                      escape(p);
+                      aligned = aligned && aligned64(p);
+                      delete p;
+                  }),
+              1u)
+        << "aligned nothrow new";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      CacheLine *p = new (std::nothrow) CacheLine[3];
+                      escape(p);
+                      aligned = aligned && aligned64(p);
+                      delete[] p;
+                  }),
+              1u)
+        << "aligned nothrow new[]";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      void *p = ::operator new(0);
+                      escape(p);
+                      ::operator delete(p);
+                  }),
+              1u)
+        << "operator new(0)";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      void *p = ::operator new(100, std::align_val_t(256));
+                      escape(p);
+                      aligned = aligned && reinterpret_cast<std::uintptr_t>(p) % 256 == 0;
+                      ::operator delete(p, 100, std::align_val_t(256));
+                  }),
+              1u)
+        << "operator new(size, alignment), sized aligned delete";
+    EXPECT_TRUE(aligned);
+}
+
+TEST(Allocation, CounterSeesTheContainersAllocations)
+{
+    // A vector allocates once per growth of its capacity, never for a push_back within it.
+    std::size_t growths = 0;
+    const unsigned long pushing = countedDuring(
+        [&]
+        {
+            std::vector<int> v;
+            for (int i = 0; i < 1000; ++i)
+            {
+                growths += v.size() == v.capacity() ? 1 : 0;
+                v.push_back(i);
+            }
+            escape(v.data());
+        });
+    EXPECT_GT(growths, 5u);
+    EXPECT_EQ(pushing, growths);
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      std::vector<int> v;
+                      v.reserve(1000);
+                      for (int i = 0; i < 1000; ++i)
+                          v.push_back(i);
+                      escape(v.data());
+                  }),
+              1u)
+        << "reserved vector";
+    // make_shared: the object and its control block in one allocation; shared_ptr(new T): two.
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      const auto p = std::make_shared<std::array<double, 4>>();
+                      escape(p.get());
+                  }),
+              1u)
+        << "make_shared";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      const std::shared_ptr<int> p(new int(5));
+                      escape(p.get());
+                  }),
+              2u)
+        << "shared_ptr(new T)";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      const std::string s(100, 'x'); // beyond the small-string buffer
+                      escape(s.data());
+                  }),
+              1u)
+        << "long string";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      const std::string s(3, 'x'); // within it
+                      escape(s.data());
+                  }),
+              0u)
+        << "short string";
+}
+
+TEST(Allocation, CounterCountsCAllocationsInTheBuildsThatCanCountThem)
+{
+    // The normal build counts malloc, calloc and realloc; the AddressSanitizer build cannot (its runtime owns
+    // malloc; AllocationCounter.h).
+#if defined(__SANITIZE_ADDRESS__)
+    EXPECT_FALSE(test::countsCAllocations());
+#else
+    EXPECT_TRUE(test::countsCAllocations());
+#endif
+    const unsigned long c = test::countsCAllocations() ? 1u : 0u;
+    void *p = nullptr;
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      p = std::malloc(24);
+                      escape(p);
+                  }),
+              c)
+        << "malloc";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      p = std::realloc(p, 1 << 16); // grows: moves or extends
+                      escape(p);
+                  }),
+              c)
+        << "realloc";
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      p = std::realloc(p, 0); // frees (glibc)
+                      escape(p);
+                  }),
+              0u)
+        << "realloc(p, 0)";
+    std::free(p);
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      p = std::realloc(nullptr, 16); // a malloc
+                      escape(p);
+                      std::free(p);
+                  }),
+              c)
+        << "realloc(nullptr, n)";
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      void *q = std::calloc(4, 8);
+                      escape(q);
+                      std::free(q);
+                  }),
+              c)
+        << "calloc";
+    // The C library's own allocations count too: strdup, called through a pointer so that the compiler
+    // cannot expand it into malloc and memcpy here.
+    char *(*volatile duplicate)(const char *) = ::strdup;
+    EXPECT_EQ(countedDuring(
+                  [&]
+                  {
+                      char *q = duplicate("a string");
+                      escape(q);
+                      std::free(q);
+                  }),
+              c)
+        << "strdup in libc";
+    // new takes its memory from the C allocator without passing through the counting malloc: counted once.
+    EXPECT_EQ(countedDuring(
+                  []
+                  {
+                      double *q = new double[4];
+                      escape(q);
+                      delete[] q;
+                  }),
+              1u)
+        << "new[] counted once";
 }

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* Benchmark campaigns end to end: a tiny campaign (two worlds, GA twice under distinct names, RRT*, and two
-   deliberately crashing planners) is run, merged into an OMPL database and checked for its experiments,
-   planners, runs and columns; the optimality gap is recomputed from the stored values; sharded runs merge
-   to the unsharded row count with identical results; a re-run resumes (skips finished experiments).
-   Simulation experiments are in test_bench_sim.cpp. */
+/* Benchmark campaigns end to end: a tiny campaign (two worlds, GA twice under distinct names, RRT*, and three
+   deliberately crashing planners: abort, throw, segfault) is run, merged into an OMPL database and checked
+   for its experiments, planners, runs and columns; the optimality gap is recomputed from the stored values;
+   sharded runs merge to the unsharded row count with identical results; a re-run resumes (skips finished
+   experiments). A planner that hangs (ignores its termination condition) is killed after the campaign's
+   wall_limit and recorded as Crash. Simulation experiments are in test_bench_sim.cpp. */
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/bench/CampaignRunner.h"
 #include "CliSupport.h"
 #include "BenchSupport.h"
+#include "TimeScale.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/planners/lattice/ThetaStar.h"
 #include "mhplan/registry/Registry.h"
@@ -22,12 +24,17 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -59,6 +66,7 @@ namespace
         c.timeLimit = 0.5;
         c.planners.push_back({"CrashAbort", "CrashTest", {{"mode", "abort"}}, {}});
         c.planners.push_back({"CrashThrow", "CrashTest", {{"mode", "throw"}}, {}});
+        c.planners.push_back({"CrashSegv", "CrashTest", {{"mode", "segfault"}}, {}});
         return c;
     }
 
@@ -74,7 +82,7 @@ namespace
         return out;
     }
 
-    constexpr int kRunsPerExperiment = 5 * 3; // planners x runs
+    constexpr int kRunsPerExperiment = 6 * 3; // planners x runs
 
     /** GA runs of a tiny campaign's database that stopped before their max_iterations (5 for GA, 3 for
         GA_small): the time limit, not the iteration bound, ended them. */
@@ -116,6 +124,17 @@ TEST(Campaign, ParsesAndRefusesBadInput)
     EXPECT_NE(error("worlds: [a]\nplanners: [GA, GA]\n").find("duplicate planner name 'GA'"),
               std::string::npos);
     EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\nruns: 0\n").find("field 'runs'"), std::string::npos);
+    // wall_limit, the planning runs' watchdog: by default (0) 2 x time limit + 20 s; never at or below the
+    // time limit, which would kill every run.
+    EXPECT_DOUBLE_EQ(c.wallLimit, 0.0);
+    EXPECT_DOUBLE_EQ(
+        parseCampaign("worlds: [a]\nplanners: [RRT]\nwall_limit: 5\ntime_limit: 2\n", "w.yaml").wallLimit,
+        5.0);
+    const std::string low = error("worlds: [a]\nplanners: [RRT]\nwall_limit: 2\ntime_limit: 2\n");
+    EXPECT_NE(low.find("field 'wall_limit'"), std::string::npos) << low;
+    EXPECT_NE(low.find("must exceed time_limit (2 s)"), std::string::npos) << low;
+    EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\nwall_limit: 0\n").find("field 'wall_limit'"),
+              std::string::npos);
     EXPECT_NE(error("worlds: [a]\nplanners: [RRT]\ntime_limit: x\n").find("field 'time_limit'"),
               std::string::npos);
     EXPECT_NE(error("planners: [RRT]\n").find("field 'worlds': missing"), std::string::npos);
@@ -150,6 +169,9 @@ TEST(Campaign, SeedsAndShardsAreDeterministic)
     Campaign d = c;
     d.runs = 4;
     EXPECT_NE(enumerateExperiments(d, resolveShipped)[0].configHash, all[0].configHash);
+    d = c;
+    d.wallLimit = 30.0; // a run killed sooner is another result
+    EXPECT_NE(enumerateExperiments(d, resolveShipped)[0].configHash, all[0].configHash);
 }
 
 TEST(Campaign, RefusesUnknownPlannersAndParametersBeforeRunning)
@@ -167,6 +189,20 @@ TEST(Campaign, RefusesUnknownPlannersAndParametersBeforeRunning)
     {
         EXPECT_NE(std::string(e.what()).find("no_such_parameter"), std::string::npos);
     }
+    // A time limit raised past the wall limit after the file was read (mhplan bench --time).
+    c.planners.pop_back();
+    c.wallLimit = 0.4;
+    try
+    {
+        runCampaign(c, options());
+        ADD_FAILURE() << "expected InputError";
+    }
+    catch (const InputError &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("wall_limit (0.4 s) must exceed the time limit (0.5 s)"),
+                  std::string::npos)
+            << e.what();
+    }
     EXPECT_FALSE(fs::exists(c.database));
 }
 
@@ -180,7 +216,10 @@ class TinyCampaign : public ::testing::Test
         if (campaign_ == nullptr)
         {
             campaign_ = new Campaign(tinyCampaign("full"));
+            // What the experiment processes say about crashed runs (CrashingPlanners... reads it).
+            StderrToFile capture(campaign_->logDir + ".stderr.txt");
             summary_ = new CampaignSummary(runCampaign(*campaign_, options(2)));
+            stderr_ = new std::string(capture.text());
         }
         ASSERT_NE(summary_, nullptr) << "the tiny campaign failed (reported by the first test)";
     }
@@ -188,13 +227,17 @@ class TinyCampaign : public ::testing::Test
     {
         delete campaign_;
         delete summary_;
+        delete stderr_;
         fs::remove_all(fs::temp_directory_path() / ("mhplan_test_bench_" + std::to_string(::getpid())));
     }
     static Campaign *campaign_;
     static CampaignSummary *summary_;
+    /** Everything the campaign wrote to stderr. */
+    static std::string *stderr_;
 };
 Campaign *TinyCampaign::campaign_ = nullptr;
 CampaignSummary *TinyCampaign::summary_ = nullptr;
+std::string *TinyCampaign::stderr_ = nullptr;
 
 TEST_F(TinyCampaign, DatabaseHasExpectedExperimentsPlannersRunsAndColumns)
 {
@@ -209,8 +252,9 @@ TEST_F(TinyCampaign, DatabaseHasExpectedExperimentsPlannersRunsAndColumns)
     std::set<std::string> planners;
     for (const auto &r : sql.rows("SELECT DISTINCT name FROM plannerConfigs"))
         planners.insert(r[0]);
-    EXPECT_EQ(planners, (std::set<std::string>{"geometric_RRTstar", "geometric_GA", "geometric_GA_small",
-                                               "geometric_CrashAbort", "geometric_CrashThrow"}));
+    EXPECT_EQ(planners,
+              (std::set<std::string>{"geometric_RRTstar", "geometric_GA", "geometric_GA_small",
+                                     "geometric_CrashAbort", "geometric_CrashThrow", "geometric_CrashSegv"}));
     // The two GA configurations are distinct planner configurations with their own settings.
     const auto settings =
         sql.rows("SELECT DISTINCT plannerConfigs.name, plannerConfigs.settings FROM runs JOIN "
@@ -277,12 +321,25 @@ TEST_F(TinyCampaign, CrashingPlannersAreRecordedAsCrashAndTheRestRuns)
     const Sql sql(campaign_->database);
     const std::string crash =
         sql.rows("SELECT value FROM enums WHERE name = 'status' AND description = 'Crash'").at(0).at(0);
-    EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
-                        "WHERE plannerConfigs.name LIKE 'geometric_Crash%' AND runs.status = " +
-                        crash),
-              2 * 2 * 3);
-    EXPECT_EQ(sql.count("SELECT count(*) FROM runs WHERE status = " + crash), 2 * 2 * 3);
-    EXPECT_EQ(summary_->crashes, 2u * 2 * 3);
+    // Every run of each crashing planner (3 planners x 2 experiments x 3 runs), and no other run.
+    for (const char *planner : {"CrashAbort", "CrashThrow", "CrashSegv"})
+        EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = "
+                            "plannerConfigs.id WHERE plannerConfigs.name = 'geometric_" +
+                            std::string(planner) + "' AND runs.status = " + crash + " AND runs.solved = 0"),
+                  2 * 3)
+            << planner;
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs WHERE status = " + crash), 3 * 2 * 3);
+    EXPECT_EQ(summary_->crashes, 3u * 2 * 3);
+    // The campaign says why each run whose process died crashed: SIGABRT, SIGSEGV (under AddressSanitizer,
+    // whose handler catches SIGSEGV, exit code 1 and its report). A throwing solve() ends its run normally
+    // (OMPL's benchmark catches the exception, the run process records the crash): no such line.
+    for (const auto &e : enumerateExperiments(*campaign_, resolveShipped))
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+            EXPECT_EQ(crashReason(*stderr_, e.name, "CrashAbort", k), "signal 6 (Aborted)") << e.name << k;
+            EXPECT_TRUE(segfaulted(crashReason(*stderr_, e.name, "CrashSegv", k), *stderr_)) << e.name << k;
+            EXPECT_EQ(crashReason(*stderr_, e.name, "CrashThrow", k), "") << e.name << k;
+        }
     // The planners after and before the crashing ones solved their problems.
     EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
                         "WHERE plannerConfigs.name = 'geometric_GA' AND runs.solved = 1"),
@@ -442,6 +499,62 @@ TEST_F(TinyCampaign, ReRunResumesAndDoesNotDuplicate)
                                enumerateExperiments(c, resolveShipped)[0].configHash));
 }
 
+TEST(CrashCampaign, HangingAndSegfaultingPlannersAreRecordedAsCrashAndTheCampaignGoesOn)
+{
+    // One experiment: GA_small, a planner that hangs (sleeps in small steps and never looks at its
+    // termination condition), one that segfaults, then GA. The hanging run is killed once it has been
+    // silent for the campaign's wall_limit, far sooner than the default 2 x time limit + 20 s, and recorded
+    // as Crash with that time; the runs after it go on. The limit is the GA runs' safety net too (they take
+    // milliseconds), scaled in slower builds.
+    Campaign c = tinyCampaign("hang");
+    c.worlds.resize(1);
+    const PlannerSpec gaSmall = c.planners[2], ga = c.planners[1];
+    c.planners = {gaSmall,
+                  {"CrashHang", "CrashTest", {{"mode", "hang"}}, {}, 1},
+                  {"CrashSegv", "CrashTest", {{"mode", "segfault"}}, {}, 2},
+                  ga};
+    c.wallLimit = 1.5 * timeScale();
+    StderrToFile capture(c.logDir + ".stderr.txt");
+    const CampaignSummary s = runCampaign(c, options());
+    const std::string text = capture.text();
+    EXPECT_EQ(s.completed, 1u);
+    EXPECT_EQ(s.failed, 0u) << (s.errors.empty() ? "" : s.errors[0]);
+    EXPECT_EQ(s.runs, 3u + 1 + 2 + 3);
+    EXPECT_EQ(s.crashes, 3u);
+    EXPECT_LT(s.wallSeconds, 2.0 * c.timeLimit + 20.0) << "the hanging run waited for the default limit";
+
+    const Sql sql(c.database);
+    const std::string crash =
+        sql.rows("SELECT value FROM enums WHERE name = 'status' AND description = 'Crash'").at(0).at(0);
+    const auto rows =
+        sql.rows("SELECT plannerConfigs.name, runs.run_index, runs.status, runs.solved, runs.time "
+                 "FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                 "WHERE plannerConfigs.name LIKE 'geometric_Crash%' "
+                 "ORDER BY plannerConfigs.name, runs.run_index");
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0], (std::vector<std::string>{"geometric_CrashHang", "0", crash, "0", rows[0][4]}));
+    EXPECT_NEAR(std::atof(rows[0][4].c_str()), c.wallLimit, 1e-9) << "a killed run's time is the limit";
+    for (std::size_t i = 1; i < 3; ++i)
+    {
+        EXPECT_EQ(rows[i], (std::vector<std::string>{"geometric_CrashSegv", std::to_string(i - 1), crash, "0",
+                                                     rows[i][4]}));
+        EXPECT_LT(std::atof(rows[i][4].c_str()), c.wallLimit) << "a dead run is not waited for";
+    }
+    // The planners before and after the crashes ran every run to their iteration bound and solved.
+    EXPECT_EQ(gaIterationsShort(sql), 0);
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                        "WHERE plannerConfigs.name LIKE 'geometric_GA%' AND runs.status = 6"),
+              6);
+
+    const std::string experiment = enumerateExperiments(c, resolveShipped).at(0).name;
+    std::ostringstream killed;
+    killed << "killed after " << c.wallLimit << " s without progress";
+    EXPECT_EQ(crashReason(text, experiment, "CrashHang", 0), killed.str()) << text;
+    for (std::size_t k = 0; k < 2; ++k)
+        EXPECT_TRUE(segfaulted(crashReason(text, experiment, "CrashSegv", k), text)) << text;
+    fs::remove_all(fs::path(c.database).parent_path());
+}
+
 TEST(BenchCli, RunsACampaignAndRefusesBadArguments)
 {
     using mhplan::test::contains;
@@ -475,5 +588,187 @@ TEST(BenchCli, RunsACampaignAndRefusesBadArguments)
     // Other settings make other experiments: the logs of 1 run are not taken for 3.
     r = runCli("bench " + data + " --list --database " + db);
     EXPECT_TRUE(contains(r.out, "bfo_case1-default\tto do")) << r.out;
+    fs::remove_all(dir);
+}
+
+namespace
+{
+    /** \e v as the report's Python writes it ("%.Nf" and a suffix; "&ndash;" for no value, NaN here). */
+    std::string reportNumber(double v, int digits, const std::string &suffix = "")
+    {
+        if (std::isnan(v))
+            return "&ndash;";
+        char buf[64];
+        std::snprintf(buf, sizeof(buf), "%.*f", digits, v);
+        return buf + suffix;
+    }
+
+    /** The median as numpy computes it (the mean of the middle two of an even count); NaN when empty. */
+    double median(std::vector<double> v)
+    {
+        if (v.empty())
+            return std::nan("");
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 == 1 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2.0;
+    }
+
+    std::string readText(const fs::path &file)
+    {
+        std::ifstream in(file);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+    /** The table row of \e html that starts with \e head (empty when there is none). */
+    std::string rowStartingWith(const std::string &html, const std::string &head)
+    {
+        const std::size_t at = html.find(head);
+        if (at == std::string::npos)
+            return "";
+        const std::size_t end = html.find("</tr>", at);
+        return html.substr(at, end == std::string::npos ? std::string::npos : end + 5 - at);
+    }
+} // namespace
+
+TEST(BenchCli, ReportsOnTheDatabasesTheProgramWrote)
+{
+    // The whole way a user goes: `mhplan bench` (the program) on a tiny plane campaign, one r2 world with an
+    // exact optimum (bfo_case1: the optimum and gap columns), GA (iteration-bounded) and RRT*, and one
+    // simulation experiment (mapf_2robots, dapf and aapf from perturbed starts); then `mhplan report` on each
+    // of the two databases it wrote. The reports name the experiments, planners and controllers of their
+    // database only, and their counts and medians are the ones computed here from the database.
+    using mhplan::test::contains;
+    using mhplan::test::runCli;
+    const fs::path dir =
+        fs::temp_directory_path() / ("mhplan_test_bench_report_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string campaign = (dir / "plane.yaml").string();
+    std::ofstream(campaign) << "campaign: plane\n"
+                               "time_limit: 0.2\n"
+                               "runs: 2\n"
+                               "seed: 3\n"
+                               "progress_interval: 0.01\n"
+                               "planner_data: false\n"
+                               "worlds: [bfo_case1]\n"
+                               "planners:\n"
+                               "  - planner: GA\n"
+                               "    params: {population_size: 10, iterations: 5, max_iterations: 5}\n"
+                               "  - RRTstar\n"
+                               "simulations:\n"
+                               "  - scenario: mapf_2robots\n"
+                               "    runs: 2\n"
+                               "    start_jitter: 0.05\n"
+                               "    controllers: [dapf, aapf]\n";
+    const std::string db = (dir / "plane.db").string(), simDb = (dir / "plane-sim.db").string();
+    auto r = runCli("bench " + campaign + " --no-progress --database " + db);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "experiments: 2 (2 run now, 0 already complete, 0 failed)")) << r.out;
+    EXPECT_TRUE(contains(r.out, "runs:        8 (0 recorded as Crash)")) << r.out;
+    ASSERT_TRUE(fs::exists(db));
+    ASSERT_TRUE(fs::exists(simDb));
+
+    // The planning database and its report.
+    r = runCli("report " + db + " -o " + (dir / "report").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, (dir / "report" / "index.html").string())) << r.out;
+    const std::string html = readText(dir / "report" / "index.html");
+    {
+        const Sql sql(db);
+        EXPECT_TRUE(
+            contains(html, "<p>Database <code>" + db + "</code>: 1 experiments, 2 planners, 4 runs.</p>"))
+            << html.substr(0, 2000);
+        const std::vector<double> optimum = sql.numbers("SELECT exact_optimum FROM experiments");
+        ASSERT_EQ(optimum.size(), 1u);
+        ASSERT_FALSE(std::isnan(optimum[0]));
+        EXPECT_TRUE(contains(
+            html, "<h3>bfo_case1-default</h3><p>exact optimum: " + reportNumber(optimum[0], 4) + "</p>"));
+        for (const std::string planner : {"GA", "RRTstar"})
+        {
+            const std::string runs = "FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                                     "WHERE plannerConfigs.name = 'geometric_" +
+                                     planner + "'";
+            const long long n = sql.count("SELECT count(*) " + runs),
+                            exact = sql.count("SELECT count(*) " + runs + " AND runs.status = 6"),
+                            approximate = sql.count("SELECT count(*) " + runs + " AND runs.status = 5"),
+                            crashed = sql.count("SELECT count(*) " + runs + " AND runs.status = 7");
+            EXPECT_EQ(n, 2) << planner;
+            EXPECT_GT(exact, 0) << planner;
+            const std::vector<double> lengths =
+                sql.numbers("SELECT runs.path_length " + runs + " AND runs.status = 6 ORDER BY runs.id");
+            const std::vector<double> gaps =
+                sql.numbers("SELECT runs.optimality_gap " + runs + " AND runs.status = 6 ORDER BY runs.id");
+            ASSERT_EQ(lengths.size(), gaps.size());
+            for (std::size_t i = 0; i < gaps.size(); ++i)
+                EXPECT_NEAR(gaps[i], 100.0 * (lengths[i] - optimum[0]) / optimum[0],
+                            1e-9 * std::max(1.0, std::abs(gaps[i])))
+                    << planner;
+            // Ranking per problem: success rate and median gap.
+            EXPECT_TRUE(contains(html, "<tr><td>" + planner + "</td><td>" +
+                                           reportNumber(100.0 * exact / n, 0, "%") + "</td><td>" +
+                                           reportNumber(median(gaps), 2, "%") + "</td>"))
+                << planner;
+            // The problem's table: runs, outcomes, shortest and median length of the exact runs.
+            const std::string row = "<tr><td>" + planner + "</td><td>" + std::to_string(n) + "</td><td>" +
+                                    std::to_string(exact) + "</td><td>" + std::to_string(approximate) +
+                                    "</td><td>" + std::to_string(n - exact - approximate - crashed) +
+                                    "</td><td>" + std::to_string(crashed) + "</td><td>" +
+                                    reportNumber(*std::min_element(lengths.begin(), lengths.end()), 4) +
+                                    "</td><td>" + reportNumber(median(lengths), 4) + "</td>";
+            EXPECT_TRUE(contains(html, row)) << row;
+        }
+        EXPECT_FALSE(contains(html, "mapf_2robots")) << "a simulation in the planning report";
+        for (const char *figure : {"success.png", "box_bfo_case1-default.png",
+                                   "convergence_bfo_case1-default.png", "paths_bfo_case1-default.png"})
+        {
+            EXPECT_TRUE(contains(html, std::string("src='") + figure + "'")) << figure;
+            EXPECT_GT(fs::file_size(dir / "report" / figure), 1000u) << figure;
+        }
+    }
+
+    // The simulation database and its report.
+    r = runCli("report " + simDb + " -o " + (dir / "report-sim").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const std::string simHtml = readText(dir / "report-sim" / "index.html");
+    {
+        const Sql sql(simDb);
+        EXPECT_TRUE(contains(simHtml, "<p>Database <code>" + simDb +
+                                          "</code>: 1 experiments, 2 planners, 4 runs.</p>"))
+            << simHtml.substr(0, 2000);
+        EXPECT_TRUE(contains(simHtml, "<h3>mapf_2robots-sim</h3>"));
+        for (const std::string controller : {"dapf", "aapf"})
+        {
+            const std::string runs = "FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
+                                     "WHERE plannerConfigs.name = 'sim:" +
+                                     controller + "'";
+            const long long n = sql.count("SELECT count(*) " + runs),
+                            done = sql.count("SELECT count(*) " + runs + " AND runs.status = 6"),
+                            crashed = sql.count("SELECT count(*) " + runs + " AND runs.status = 7");
+            EXPECT_EQ(n, 2) << controller;
+            // Medians with the runs that did not bring every robot home at +infinity (censored).
+            const auto censoredMedian = [&](const std::string &column)
+            {
+                std::vector<double> v =
+                    sql.numbers("SELECT CASE WHEN runs.status = 6 THEN runs." + column + " END " + runs);
+                for (double &x : v)
+                    x = std::isnan(x) ? std::numeric_limits<double>::infinity() : x;
+                const double m = median(v);
+                return std::isinf(m) ? std::string("unfinished") : reportNumber(m, 2);
+            };
+            const std::string row = rowStartingWith(
+                simHtml, "<tr><td>" + controller + "</td><td>" + std::to_string(n) + "</td><td>" +
+                             std::to_string(done) + " (" + reportNumber(100.0 * done / n, 0) + "%)</td><td>" +
+                             std::to_string(crashed) + "</td>");
+            ASSERT_FALSE(row.empty()) << controller << "\n" << simHtml;
+            EXPECT_TRUE(contains(row, "<td>" + censoredMedian("makespan") + "</td><td>" +
+                                          censoredMedian("flowtime") + "</td>"))
+                << row;
+        }
+        EXPECT_FALSE(contains(simHtml, "bfo_case1-default"))
+            << "a planning experiment in the simulation report";
+        EXPECT_GT(fs::file_size(dir / "report-sim" / "sim_box_mapf_2robots-sim.png"), 1000u);
+    }
     fs::remove_all(dir);
 }

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Faults and shards of a campaign, through the mhplan program as a user runs it. A small iteration-bounded
    campaign (tests/data/bench_faults.yaml: five planning and two simulation experiments) is run once
-   uninterrupted; then `mhplan bench` is killed with SIGKILL (its whole process group) at ten moments drawn
-   from a fixed seed, half of them while it merges, and resumed each time. After every kill the database on
-   disk is whole (every experiment recorded once in mhplan_logs); at the end it holds exactly the runs of the
-   uninterrupted run: the same experiments once each, the same runs with the same seeds and costs. Shards:
+   uninterrupted; then `mhplan bench` is killed with SIGKILL (its whole process group) at ten moments, and
+   resumed each time: five drawn from a fixed seed while the experiments run, five while it merges (timed by
+   the merge's work file, DATABASE.merging: one kill as the planning database's merge begins, one as the
+   simulation database's begins, three at random moments after the first begins). After every kill both
+   databases on disk are whole (every experiment once, recorded in mhplan_logs, with exactly its runs of the
+   uninterrupted run); at the end they hold exactly the runs of the uninterrupted run: the same experiments
+   once each, the same runs with the same seeds and costs. Shards:
    uneven sizes, k > 2, disjoint, covering every experiment, planning and simulation mixed; shards run at the
    same time into one log directory and merged at the end give the uninterrupted database again. */
 #include "mhplan/bench/Campaign.h"
@@ -18,6 +21,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/mount.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -170,36 +174,112 @@ namespace
         return (p.parent_path() / (p.stem().string() + "-sim" + p.extension().string())).string();
     }
 
+    bool hasTable(const std::string &db, const std::string &table)
+    {
+        return scalar(db, "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = '" + table +
+                              "'") == 1;
+    }
+
+    /** What one database file holds (\e planning: the planning database, else the simulation one); nothing
+        when it does not exist. */
+    void addContents(const std::string &file, bool planning, Contents &c)
+    {
+        if (!fs::exists(file))
+            return;
+        if (hasTable(file, "mhplan_logs"))
+            c.logs += scalar(file, "SELECT count(*) FROM mhplan_logs");
+        if (!hasTable(file, "experiments")) // a merge that had nothing to append
+            return;
+        for (const auto &r : query(file, "SELECT name FROM experiments"))
+            c.experiments.insert(r[0]);
+        const std::string results =
+            planning ? "runs.best_cost, runs.path_length" : "runs.makespan, runs.flowtime";
+        for (const auto &r : query(file, "SELECT experiments.name, plannerConfigs.name, runs.run_index, "
+                                         "runs.run_seed, runs.status, " +
+                                             results +
+                                             " FROM runs "
+                                             "JOIN experiments ON runs.experimentid = experiments.id "
+                                             "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
+            c.runs[r[0] + "|" + r[1] + "|" + r[2]] = "seed " + r[3] + " status " + r[4] +
+                                                     (planning ? " cost " : " makespan ") + r[5] +
+                                                     (planning ? " length " : " flowtime ") + r[6];
+        c.runRows += scalar(file, "SELECT count(*) FROM runs");
+        c.paths += scalar(file, "SELECT count(*) FROM paths");
+    }
+
     /** What the campaign's two databases hold together: planning runs in \e db, simulation runs in its
         simulation database. */
     Contents contents(const std::string &db)
     {
         Contents c;
-        const std::string sim = simulationDb(db);
-        for (const std::string &file : {db, sim})
-        {
-            if (!fs::exists(file))
-                continue;
-            const bool planning = file == db;
-            for (const auto &r : query(file, "SELECT name FROM experiments"))
-                c.experiments.insert(r[0]);
-            const std::string results =
-                planning ? "runs.best_cost, runs.path_length" : "runs.makespan, runs.flowtime";
-            for (const auto &r : query(file, "SELECT experiments.name, plannerConfigs.name, runs.run_index, "
-                                             "runs.run_seed, runs.status, " +
-                                                 results +
-                                                 " FROM runs "
-                                                 "JOIN experiments ON runs.experimentid = experiments.id "
-                                                 "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id"))
-                c.runs[r[0] + "|" + r[1] + "|" + r[2]] = "seed " + r[3] + " status " + r[4] +
-                                                         (planning ? " cost " : " makespan ") + r[5] +
-                                                         (planning ? " length " : " flowtime ") + r[6];
-            c.runRows += scalar(file, "SELECT count(*) FROM runs");
-            c.logs += scalar(file, "SELECT count(*) FROM mhplan_logs");
-            c.paths += scalar(file, "SELECT count(*) FROM paths");
-        }
+        addContents(db, true, c);
+        addContents(simulationDb(db), false, c);
         return c;
     }
+
+    /** A database of the campaign, as a kill may leave it, is whole: every experiment in it once and
+        recorded in mhplan_logs, each with exactly its runs of the uninterrupted run \e reference (none half
+        appended, none missing, the same seeds and results). */
+    void expectWhole(const std::string &file, bool planning, const Contents &reference)
+    {
+        Contents got;
+        addContents(file, planning, got);
+        const std::set<std::string> names(got.experiments.begin(), got.experiments.end());
+        EXPECT_EQ(names.size(), got.experiments.size()) << file << ": an experiment appended twice";
+        EXPECT_EQ(got.logs, static_cast<long long>(got.experiments.size())) << file;
+        long long expected = 0;
+        for (const auto &kv : reference.runs)
+            expected += names.count(kv.first.substr(0, kv.first.find('|'))) ? 1 : 0;
+        EXPECT_EQ(got.runRows, expected) << file;
+        for (const auto &kv : got.runs)
+        {
+            const auto it = reference.runs.find(kv.first);
+            if (it == reference.runs.end())
+                ADD_FAILURE() << file << ": a run the uninterrupted run does not have: " << kv.first;
+            else
+                EXPECT_EQ(kv.second, it->second) << file << ": " << kv.first;
+        }
+    }
+
+    /** The work file of a merge into \e db (DATABASE.merging, benchmarks/README.md "The database": a copy
+        of DATABASE renamed over it once complete, removed when there was nothing to append), as it was when
+        constructed: fresh() says whether a merge made or rewrote it since, and it still exists. A kill
+        leaves the file behind; the next merge reuses it (same inode, truncated: a new modification time). */
+    class MergeWorkFile
+    {
+      public:
+        explicit MergeWorkFile(std::string db) : file_(std::move(db) + ".merging"), before_(stamp()) {}
+        bool fresh() const
+        {
+            const Stamp now = stamp();
+            return now.exists && !(now == before_);
+        }
+
+      private:
+        struct Stamp
+        {
+            bool exists{false};
+            ino_t inode{0};
+            long long seconds{0}, nanoseconds{0};
+            bool operator==(const Stamp &o) const
+            {
+                return exists == o.exists && inode == o.inode && seconds == o.seconds &&
+                       nanoseconds == o.nanoseconds;
+            }
+        };
+        Stamp stamp() const
+        {
+            struct stat st
+            {
+            };
+            if (::stat(file_.c_str(), &st) != 0)
+                return {};
+            return {true, st.st_ino, static_cast<long long>(st.st_mtim.tv_sec),
+                    static_cast<long long>(st.st_mtim.tv_nsec)};
+        }
+        std::string file_;
+        Stamp before_;
+    };
 
     void expectSameContents(const Contents &got, const Contents &want)
     {
@@ -272,33 +352,47 @@ namespace
 TEST_F(CampaignFaults, KilledAtRandomMomentsAndResumedHoldsExactlyTheUninterruptedRuns)
 {
     const fs::path dir = freshDir("killed");
-    const std::string db = (dir / "f.db").string(), out = (dir / "out.txt").string();
+    const std::string db = (dir / "f.db").string(), sim = simulationDb(db), out = (dir / "out.txt").string();
     ompl::RNG rng(20261201);
-    int killed = 0, killedMerging = 0;
+    int killed = 0, killedMergingPlanning = 0, killedMergingSimulations = 0;
     for (int attempt = 0; attempt < 10; ++attempt)
     {
-        const pid_t pid = spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out);
-        ASSERT_GT(pid, 0);
-        // Five kills at a moment after the start, while the experiments run (the uninterrupted run spent
-        // wall - merge seconds on them, half of it per attempt); five at a moment after the merge began
-        // (every log written), within the merge time of the uninterrupted run, so that kills land inside
-        // ompl_benchmark_statistics and the recording after it.
+        // When to kill. Attempts 0-4: at a moment drawn after the start, while the experiments run (the
+        // uninterrupted run spent wall - merge seconds on them, half of it per attempt), or as soon as a
+        // merge begins, whichever comes first: no attempt before 5 completes the campaign. 5: as soon as the
+        // planning database's merge begins; 6: as soon as the simulation database's begins (after the
+        // planning one's completed); 7-9: at a moment drawn within the uninterrupted run's merge time after a
+        // merge began, so that kills land inside ompl_benchmark_statistics and the recording after it.
+        const MergeWorkFile planningMerge(db), simulationMerge(sim);
         const bool inMerge = attempt >= 5;
         const double delay =
-            inMerge ? rng.uniformReal(0.0, 0.8 * mergeSeconds_)
-                    : rng.uniformReal(0.0, std::min(0.5, 0.5 * std::max(0.1, wallSeconds_ - mergeSeconds_)));
+            attempt < 5
+                ? rng.uniformReal(0.0, std::min(0.5, 0.5 * std::max(0.1, wallSeconds_ - mergeSeconds_)))
+            : attempt < 7 ? 0.0
+                          : rng.uniformReal(0.0, 0.8 * mergeSeconds_);
+        const auto mergeBegan = [&]()
+        {
+            if (attempt == 5)
+                return planningMerge.fresh();
+            if (attempt == 6)
+                return simulationMerge.fresh();
+            return planningMerge.fresh() || simulationMerge.fresh();
+        };
+        const pid_t pid = spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out);
+        ASSERT_GT(pid, 0);
         auto t0 = std::chrono::steady_clock::now();
-        bool exited = false;
+        bool exited = false, clockRuns = !inMerge;
         int status = 0;
-        bool merging = !inMerge;
         while (!exited)
         {
-            if (!merging && completeLogs(db + ".logs") == 7)
+            if (!inMerge && mergeBegan())
+                break;
+            if (!clockRuns && mergeBegan())
             {
-                merging = true;
+                clockRuns = true;
                 t0 = std::chrono::steady_clock::now();
             }
-            if (merging &&
+            if (clockRuns &&
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() >= delay)
                 break;
             exited = ::waitpid(pid, &status, WNOHANG) == pid;
@@ -306,34 +400,29 @@ TEST_F(CampaignFaults, KilledAtRandomMomentsAndResumedHoldsExactlyTheUninterrupt
         }
         if (!exited)
         {
-            killedMerging += completeLogs(db + ".logs") == 7 ? 1 : 0;
             ::kill(-pid, SIGKILL);
             EXPECT_EQ(waitFor(pid), 128 + SIGKILL);
             ++killed;
+            // The process group is dead: a work file this attempt made that is still there was a merge in
+            // flight (a finished merge renames its work file, one with nothing to append removes it).
+            killedMergingPlanning += planningMerge.fresh() ? 1 : 0;
+            killedMergingSimulations += simulationMerge.fresh() ? 1 : 0;
         }
         else
             EXPECT_EQ(exitCode(status), 0) << readFile(out);
-        // Whatever the moment, the database on disk is whole: each experiment once, each recorded.
-        if (fs::exists(db))
-        {
-            const bool haveExperiments =
-                scalar(db,
-                       "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'experiments'") ==
-                1;
-            const long long experiments =
-                haveExperiments ? scalar(db, "SELECT count(*) FROM experiments") : 0;
-            EXPECT_EQ(experiments, scalar(db, "SELECT count(*) FROM mhplan_logs"))
-                << "after attempt " << attempt;
-            if (haveExperiments)
-            {
-                EXPECT_EQ(experiments, scalar(db, "SELECT count(DISTINCT name) FROM experiments"))
-                    << "after attempt " << attempt;
-            }
-        }
+        // Whatever the moment, both databases on disk are whole.
+        SCOPED_TRACE("after attempt " + std::to_string(attempt));
+        expectWhole(db, true, *reference_);
+        expectWhole(sim, false, *reference_);
     }
-    std::cout << "killed " << killed << " of 10 attempts: " << killed - killedMerging
-              << " while running experiments, " << killedMerging << " while merging\n";
-    EXPECT_GE(killed, 5); // at least the kills timed from the start land before the end of the campaign
+    std::cout << "killed " << killed
+              << " of 10 attempts: " << killed - killedMergingPlanning - killedMergingSimulations
+              << " while running experiments, " << killedMergingPlanning
+              << " while merging the planning database, " << killedMergingSimulations
+              << " while merging the simulation database\n";
+    EXPECT_GE(killed, 7); // attempts 0-6 are killed before the campaign ends
+    EXPECT_GE(killedMergingPlanning, 1);
+    EXPECT_GE(killedMergingSimulations, 1);
 
     // Resumed to the end; a further resume finds nothing to do.
     ASSERT_EQ(waitFor(spawnMhplan(benchArgs(dir, {"--jobs", "2"}), out)), 0) << readFile(out);
