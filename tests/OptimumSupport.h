@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Shared by the optimum tests (test_optimum.cpp, test_optimum_grid.cpp): portable random numbers, a test
-   world, independent path checks and the brute-force references (a dense roadmap, a visibility graph, plain
-   Dijkstra) the exact optimum is compared with. */
+   world, independent path checks (the exact motion validator; a dense check from the shapes themselves that
+   makes the optimum's own path a witness of its length) and the brute-force references (a dense roadmap, a
+   visibility graph, plain Dijkstra) the exact optimum is compared with. */
 #ifndef MHPLAN_TESTS_OPTIMUM_SUPPORT_H
 #define MHPLAN_TESTS_OPTIMUM_SUPPORT_H
 
 #include "mhplan/collision/Collision.h"
 #include "mhplan/collision/GridCollision.h"
+#include "mhplan/optimum/Optimum.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +19,7 @@
 #include <limits>
 #include <queue>
 #include <random>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -66,6 +69,181 @@ namespace mhplan::test
         for (std::size_t i = 0; i + 1 < p.size(); ++i)
             s += distance(p[i], p[i + 1]);
         return s;
+    }
+
+    /** Signed distance from \e p to the closed box \e b (negative inside). */
+    inline double pointBoxSignedDistance(const Vec2 &p, const Box &b)
+    {
+        const double dx = std::max(b.xmin - p.x, p.x - b.xmax);
+        const double dy = std::max(b.ymin - p.y, p.y - b.ymax);
+        if (dx <= 0.0 && dy <= 0.0)
+            return std::max(dx, dy);
+        return std::hypot(std::max(dx, 0.0), std::max(dy, 0.0));
+    }
+
+    /** Clearance of the robot's disc centred at \e p, from the world's shapes and Geometry.h's primitives
+        alone (no collision model, nothing of the optimum solver): the distance from \e p to the walls of the
+        bounds, to every circle, to every polygon (edges by pointSegmentDistance, inside by pointInPolygon)
+        and to every blocked cell as a closed square (cells outside the grid blocked), minus the robot
+        radius; negative inside an obstacle. Grid cells more than one cell beyond the robot's disc are
+        skipped: they cannot make it negative, so above the cell size the value is only a lower bound. */
+    inline double independentClearance(const World &w, const Vec2 &p)
+    {
+        const double r = w.robotRadius;
+        const Box &b = w.bounds;
+        double c = std::min({p.x - b.xmin, b.xmax - p.x, p.y - b.ymin, b.ymax - p.y}) - r;
+        for (const Circle &circle : w.circles)
+            c = std::min(c, distance(p, circle.center) - circle.radius - r);
+        for (const Polygon &poly : w.polygons)
+        {
+            const auto &v = poly.vertices;
+            double d = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i < v.size(); ++i)
+                d = std::min(d, pointSegmentDistance(p, v[i], v[(i + 1) % v.size()]));
+            c = std::min(c, (pointInPolygon(p, v) ? -d : d) - r);
+        }
+        if (w.isGrid())
+        {
+            const OccupancyGrid &g = *w.grid;
+            const Box gb = g.bounds();
+            c = std::min(c, std::min({p.x - gb.xmin, gb.xmax - p.x, p.y - gb.ymin, gb.ymax - p.y}) - r);
+            const int x0 = std::max(0, g.cellX(p.x - r) - 1),
+                      x1 = std::min(g.width() - 1, g.cellX(p.x + r) + 1);
+            const int y0 = std::max(0, g.cellY(p.y - r) - 1),
+                      y1 = std::min(g.height() - 1, g.cellY(p.y + r) + 1);
+            for (int iy = y0; iy <= y1; ++iy)
+                for (int ix = x0; ix <= x1; ++ix)
+                    if (g.blocked(ix, iy))
+                        c = std::min(c, pointBoxSignedDistance(p, g.cellBox(ix, iy)) - r);
+        }
+        return c;
+    }
+
+    /** Points at most \e spacing apart along a straight segment or an arc of the optimum, end points
+        included. */
+    inline std::vector<Vec2> pieceSamples(const OptimumPiece &p, double spacing)
+    {
+        const double len = p.arc ? p.radius * std::fabs(p.sweep) : distance(p.from, p.to);
+        const auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(len / spacing)));
+        std::vector<Vec2> out;
+        const double th0 = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x);
+        for (std::size_t k = 0; k <= n; ++k)
+        {
+            const double t = static_cast<double>(k) / static_cast<double>(n);
+            if (p.arc)
+                out.push_back({p.center.x + p.radius * std::cos(th0 + t * p.sweep),
+                               p.center.y + p.radius * std::sin(th0 + t * p.sweep)});
+            else
+                out.push_back(p.from + (p.to - p.from) * t);
+        }
+        return out;
+    }
+
+    /** The independent dense check: every point at most \e spacing apart along the polyline has an
+        independentClearance of at least -\e tol. */
+    inline ::testing::AssertionResult denselyClear(const World &w, const std::vector<Vec2> &path,
+                                                   double spacing, double tol)
+    {
+        for (std::size_t i = 0; i + 1 < path.size(); ++i)
+        {
+            OptimumPiece seg;
+            seg.from = path[i];
+            seg.to = path[i + 1];
+            for (const Vec2 &x : pieceSamples(seg, spacing))
+                if (independentClearance(w, x) < -tol)
+                    return ::testing::AssertionFailure()
+                           << "segment " << i << " enters an obstacle at (" << x.x << ", " << x.y
+                           << "), clearance " << independentClearance(w, x);
+        }
+        return ::testing::AssertionSuccess();
+    }
+
+    /** The lower-side oracle every world admits: the optimum must be witnessed by a real path no longer than
+        the length it reports. A too-short optimum fails it, for it would have to cut through an obstacle or
+        misreport its length. Checks, with sizes relative to the world's size S (max of width and height):
+        - the exact path (OptimumResult::pieces) runs from the query's start to its goal without gaps
+          (1e-9 S), every arc starts and ends on its circle where its sweep says;
+        - every piece's length is its geometric length (|to - from|, radius * |sweep|) and their sum is the
+          reported length (1e-9 relative);
+        - points at most 1e-4 S apart along the pieces have an independentClearance >= -1e-7 S (touching
+          obstacles is allowed, so arcs and corners lie at clearance 0);
+        - the drawing polyline (OptimumResult::path) passes the same dense check; without arcs of positive
+          radius its length is the reported one (1e-9 relative), with them it may exceed it by what the
+          circumscribed polylines add (the arc deviation times each sweep, and the 1e-10 S push per arc).
+        The pinch rule of point robots on grids (no passage between two blocked cells that meet at a corner)
+        is no clearance and is not checked here: test_optimum_grid.cpp compares those optima with a
+        brute-force visibility graph over the exact motion validator. */
+    inline ::testing::AssertionResult optimumWitnessed(const World &w, const Query &q, const OptimumResult &r,
+                                                       double arcDeviation = OptimumOptions().arcDeviation)
+    {
+        if (!r.found)
+            return ::testing::AssertionFailure() << "no optimum to witness";
+        const double scale = std::max(w.bounds.width(), w.bounds.height());
+        const double gapTol = 1e-9 * scale;
+        const double spacing = 1e-4 * scale;
+        const double tol = 1e-7 * scale;
+        const double push = 1e-10 * scale;
+        const double lengthTol = 1e-9 * std::max(r.length, gapTol);
+        auto at = [](const Vec2 &p)
+        {
+            std::ostringstream s;
+            s << "(" << p.x << ", " << p.y << ")";
+            return s.str();
+        };
+        Vec2 end = q.start;
+        double geometric = 0.0;
+        double allowance = 0.0;
+        for (std::size_t k = 0; k < r.pieces.size(); ++k)
+        {
+            const OptimumPiece &p = r.pieces[k];
+            if (distance(p.from, end) > gapTol)
+                return ::testing::AssertionFailure()
+                       << "piece " << k << " starts at " << at(p.from) << ", the path is at " << at(end);
+            double len = distance(p.from, p.to);
+            if (p.arc)
+            {
+                const double th1 = std::atan2(p.from.y - p.center.y, p.from.x - p.center.x) + p.sweep;
+                const Vec2 swept{p.center.x + p.radius * std::cos(th1),
+                                 p.center.y + p.radius * std::sin(th1)};
+                if (std::fabs(distance(p.from, p.center) - p.radius) > gapTol ||
+                    distance(swept, p.to) > gapTol)
+                    return ::testing::AssertionFailure()
+                           << "arc " << k << " from " << at(p.from) << " to " << at(p.to)
+                           << " is not on its circle " << at(p.center) << ", radius " << p.radius
+                           << ", sweep " << p.sweep;
+                len = p.radius * std::fabs(p.sweep);
+                if (p.radius > 0.0)
+                    allowance += std::max(arcDeviation * scale, 2.0 * push) * std::fabs(p.sweep) + 4.0 * push;
+            }
+            if (std::fabs(len - p.length) > lengthTol)
+                return ::testing::AssertionFailure()
+                       << "piece " << k << " reports length " << p.length << ", its geometry has " << len;
+            for (const Vec2 &x : pieceSamples(p, spacing))
+                if (independentClearance(w, x) < -tol)
+                    return ::testing::AssertionFailure()
+                           << "piece " << k << " enters an obstacle at " << at(x) << ", clearance "
+                           << independentClearance(w, x);
+            geometric += len;
+            end = p.to;
+        }
+        if (r.pieces.empty())
+            geometric = distance(q.start, q.goal);
+        else if (distance(end, q.goal) > gapTol)
+            return ::testing::AssertionFailure()
+                   << "the path ends at " << at(end) << ", the goal is " << at(q.goal);
+        if (std::fabs(geometric - r.length) > lengthTol)
+            return ::testing::AssertionFailure()
+                   << "reported length " << r.length << ", the path's pieces measure " << geometric;
+        const ::testing::AssertionResult drawn = denselyClear(w, r.path, spacing, tol);
+        if (!drawn)
+            return ::testing::AssertionFailure() << "the polyline: " << drawn.message();
+        const double drawnLength = polyline(r.path);
+        if (drawnLength > r.length + lengthTol + allowance ||
+            (allowance == 0.0 && drawnLength < r.length - lengthTol))
+            return ::testing::AssertionFailure()
+                   << "the polyline measures " << drawnLength << ", the reported length is " << r.length
+                   << " (allowance for arcs " << allowance << ")";
+        return ::testing::AssertionSuccess();
     }
 
     /** Shortest path over a graph given as adjacency lists (plain Dijkstra). */

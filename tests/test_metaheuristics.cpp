@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
-   and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each). */
+   and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each), measured
+   against the exact optimum. */
 #include "mhplan/planners/common/Fitness.h"
 #include "mhplan/planners/common/PathEncoding.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/collision/Validity.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/optimum/Optimum.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -223,23 +225,44 @@ INSTANTIATE_TEST_SUITE_P(Planners, MetaheuristicPlanner, ::testing::ValuesIn(tes
 
 namespace
 {
-    /** \brief Exact optimum of a seed world's default query: src/optimum/Optimum.h when it is built, else the
-        spec's figures (docs/algorithms.md 9); NaN when unknown. */
-    double optimumLength(const std::string &world)
+    /** \brief Exact optimum of a seed world's default query, by the exact solver (computeOptimum,
+        src/optimum/Optimum.h), computed once per world and cached across the planners. On bfo_case1 and
+        bfo_case2 it reproduces docs/algorithms.md 9.1 (test_optimum.cpp checks that). */
+    const OptimumResult &optimumOf(const std::string &world)
     {
-        const std::map<std::string, double> spec{{"bfo_case1", 14.2734}, {"bfo_case2", 14.4198}};
-        const auto it = spec.find(world);
-        return it == spec.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
+        static std::map<std::string, OptimumResult> cache;
+        auto it = cache.find(world);
+        if (it == cache.end())
+        {
+            const World w = seedWorld(world);
+            it = cache.emplace(world, computeOptimum(w, w.queries[0])).first;
+        }
+        return it->second;
     }
 
-    /** \brief What a planner achieves on a world with the papers' settings over 20 seeds (measured; the
-        issue's goal is minExact >= 19 and maxGap <= 5%). maxGap is checked when the optimum is known. */
+    /** \brief What a planner achieves on a world with the papers' settings over 20 seeds (the issue's goal is
+        minExact >= 19 and maxGap <= 5%), the median gap measured against the exact optimum (optimumOf). The
+        runs are iteration-bounded with fixed seeds, so the figures are deterministic and each bound is the
+        measured figure with a margin: minExact is the measured count less one or two runs (19 wherever 19 or
+        20 were measured, the issue's goal; 1 where a single run was), maxGap the measured median gap rounded
+        up plus 2 percentage points (at least the issue's 5%). Whenever a run is exact, the median gap is
+        checked against maxGap and the best length against the optimum. */
     struct Expectation
     {
         std::string world;
         unsigned int minExact;
         double maxGapPercent;
+        /** \brief Why the row asserts nothing (set by noExactRun). */
+        std::string why{};
     };
+
+    /** \brief A row that measured no exact run in 20: it can assert neither a count nor a gap, and \e why
+        says why there is none. maxGap is NaN, so an exact run appearing later fails the gap check until the
+        row is measured again. */
+    Expectation noExactRun(const std::string &world, const std::string &why)
+    {
+        return {world, 0, std::numeric_limits<double>::quiet_NaN(), why};
+    }
 
     const std::vector<std::string> &seedWorlds()
     {
@@ -252,76 +275,86 @@ namespace
     std::map<std::string, std::vector<Expectation>> expectations()
     {
         // Faithful algorithms, papers' budgets (SMA/LRSMA/MGO: N = 30, T = 30, m = 3; GA: N = 50, G = 100).
-        // The continuous planners cannot reach the goal on bfo_case2 (12 circles: three waypoints
-        // and 30 x 30 evaluations leave the median ~22% above the optimum) nor on the larger grids (three
-        // waypoints cannot describe a path through a 20 x 20 or 30 x 30 maze); the numbers are asserted as
-        // measured so that a regression shows, and reported.
+        // The comments give what was measured: exact runs of 20, median gap to the optimum. The continuous
+        // planners cannot reach the goal on bfo_case2 (12 circles: three waypoints and 30 x 30
+        // evaluations leave the median 18-26% above the optimum) nor on the larger grids (the optima of
+        // gms_grid20 and gms_grid30 have 9 segments; three waypoints give a path of 4 segments or a cubic
+        // spline through them); the numbers are asserted as measured so that a regression shows, and
+        // reported.
+        const std::string maze3 =
+            "measured 0/20: three waypoints within the papers' budget find no collision-free path through "
+            "this "
+            "maze (its optimum has 9 segments); with no exact run there is no count and no gap to assert";
         return {
             // SMA as [LRSMA] compares it: spline decoding, fitness S (docs/algorithms.md 4, 5).
             {"SMA",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 12, 25.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 15, 15.0},
-              {"lrsma_scenario3", 17, 15.0},
-              {"gms_grid10", 18, 100.0},
-              {"gms_grid20", 0, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},        // 20/20, 2.02%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.29%
+              {"bfo_case2", 12, 24.0},       // 13/20, 21.62%
+              {"lrsma_scenario1", 19, 6.0},  // 20/20, 3.30%
+              {"lrsma_scenario2", 15, 20.0}, // 16/20, 17.20%
+              {"lrsma_scenario3", 17, 14.0}, // 18/20, 11.96%
+              {"gms_grid10", 19, 6.0},       // 19/20, 3.54%
+              {"gms_grid20", 1, 15.0},       // 1/20, 12.16%
+              noExactRun("gms_grid30", maze3)}},
             {"LRSMA",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 14, 25.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 13, 15.0},
-              {"lrsma_scenario3", 19, 15.0},
-              {"gms_grid10", 6, 100.0},
-              {"gms_grid20", 0, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},        // 20/20, 0.61%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.21%
+              {"bfo_case2", 14, 23.0},       // 16/20, 20.39%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 1.25%
+              {"lrsma_scenario2", 13, 8.0},  // 15/20, 5.20%
+              {"lrsma_scenario3", 19, 14.0}, // 19/20, 11.66%
+              {"gms_grid10", 6, 28.0},       // 8/20, 26.00%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
             {"MGO",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 19, 25.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 19, 15.0},
-              {"lrsma_scenario3", 19, 15.0},
-              {"gms_grid10", 7, 100.0},
-              {"gms_grid20", 0, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},        // 20/20, 0.22%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.16%
+              {"bfo_case2", 19, 25.0},       // 20/20, 22.12%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 0.05%
+              {"lrsma_scenario2", 19, 5.0},  // 20/20, 2.93%
+              {"lrsma_scenario3", 19, 12.0}, // 20/20, 9.61%
+              {"gms_grid10", 19, 6.0},       // 20/20, 3.14%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
             // [GMS]'s SMA and MGO: the six operators, the maximised [GMS] fitness
             // (docs/algorithms.md 1.3, 1.5).
             // Measured: SMA-GMS 14/20 on gms_grid10 where SMA (S, no operators) has 19/20: with the maximised
             // f1 near 1 / length, p = tanh|f - DF| is small and most coordinates take the vc branch.
             {"SMA-GMS",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 19, 30.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 19, 15.0},
-              {"lrsma_scenario3", 19, 15.0},
-              {"gms_grid10", 12, 100.0},
-              {"gms_grid20", 0, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},        // 20/20, 1.07%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.59%
+              {"bfo_case2", 19, 28.0},       // 20/20, 25.81%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 0.49%
+              {"lrsma_scenario2", 19, 10.0}, // 20/20, 7.37%
+              {"lrsma_scenario3", 19, 16.0}, // 20/20, 13.97%
+              {"gms_grid10", 12, 11.0},      // 14/20, 8.48%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
             {"MGO-GMS",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 19, 20.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 19, 15.0},
-              {"lrsma_scenario3", 19, 15.0},
-              {"gms_grid10", 19, 100.0},
-              {"gms_grid20", 0, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},        // 20/20, 0.64%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.34%
+              {"bfo_case2", 19, 20.0},       // 20/20, 17.69%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 0.17%
+              {"lrsma_scenario2", 19, 6.0},  // 20/20, 3.41%
+              {"lrsma_scenario3", 19, 13.0}, // 20/20, 10.84%
+              {"gms_grid10", 19, 5.0},       // 20/20, 1.90%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
             {"GA",
-             {{"bfo_case1", 19, 5.0},
-              {"bfo_case1_moved", 19, 5.0},
-              {"bfo_case2", 19, 5.0},
-              {"lrsma_scenario1", 19, 5.0},
-              {"lrsma_scenario2", 19, 5.0},
-              {"lrsma_scenario3", 19, 5.0},
-              {"gms_grid10", 19, 5.0},
-              {"gms_grid20", 3, 100.0},
-              {"gms_grid30", 0, 100.0}}},
+             {{"bfo_case1", 19, 5.0},       // 20/20, 0.78%
+              {"bfo_case1_moved", 19, 5.0}, // 20/20, 0.32%
+              {"bfo_case2", 19, 5.0},       // 20/20, 1.31%
+              {"lrsma_scenario1", 19, 5.0}, // 20/20, 0.28%
+              {"lrsma_scenario2", 19, 5.0}, // 20/20, 0.88%
+              {"lrsma_scenario3", 19, 5.0}, // 20/20, 0.84%
+              {"gms_grid10", 19, 5.0},      // 20/20, 2.17%
+              {"gms_grid20", 3, 12.0},      // 4/20, 9.05%
+              noExactRun(
+                  "gms_grid30",
+                  "measured 0/20: 1 to 5 random points per new individual, the [GMS] repairs and 100 "
+                  "generations find no collision-free path through this maze (30% blocked, its optimum "
+                  "has 9 segments); with no exact run there is no count and no gap to assert")}},
         };
     }
 } // namespace
@@ -355,24 +388,32 @@ TEST_P(MetaheuristicQuality, PapersSettingsOnEverySeedWorld)
                 lengths.push_back(r.length);
             }
         }
-        const double opt = optimumLength(e.world);
+        const OptimumResult &optimum = optimumOf(e.world);
+        ASSERT_TRUE(optimum.found) << e.world;
+        const double opt = optimum.length;
         const double med = median(lengths);
-        const double gap = 100.0 * (med / opt - 1.0);
-        std::cout << std::setw(6) << planner << " " << std::setw(16) << e.world << ": exact " << exact
-                  << "/20, median length " << med << ", best "
-                  << (lengths.empty() ? std::numeric_limits<double>::infinity()
-                                      : *std::min_element(lengths.begin(), lengths.end()));
-        if (!std::isnan(opt))
-            std::cout << ", optimum " << opt << ", median gap " << gap << "%";
-        std::cout << "\n";
+        const double best = lengths.empty() ? std::numeric_limits<double>::infinity()
+                                            : *std::min_element(lengths.begin(), lengths.end());
+        const double gap = 100.0 * optimalityGap(med, optimum);
+        std::cout << std::setw(7) << planner << " " << std::setw(16) << e.world << ": exact " << exact
+                  << "/20, median length " << med << ", best " << best << ", optimum " << opt << " ("
+                  << optimum.method << ", " << optimum.pieces.size() << " pieces), median gap " << gap
+                  << "%\n";
         // Every exact solution passes the independent dense check.
         EXPECT_EQ(claimedExact, exact) << planner << " " << e.world;
         EXPECT_GE(exact, e.minExact) << planner << " " << e.world;
-        if (!std::isnan(opt) && exact > 0)
+        if (e.minExact == 0)
         {
+            EXPECT_FALSE(e.why.empty())
+                << planner << " " << e.world << ": a row expecting no exact run says why";
+        }
+        if (exact > 0)
+        {
+            EXPECT_FALSE(std::isnan(e.maxGapPercent))
+                << planner << " " << e.world
+                << ": exact runs where none were measured; measure the row again";
             EXPECT_LE(gap, e.maxGapPercent) << planner << " " << e.world;
-            EXPECT_GE(*std::min_element(lengths.begin(), lengths.end()), opt - 1e-6)
-                << planner << " " << e.world << " beats the optimum";
+            EXPECT_GE(best, opt - 1e-6) << planner << " " << e.world << " beats the optimum";
         }
     }
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the exact optimum on occupancy grids (random grids against a brute-force visibility graph over
-   the cell corners and against a plain octile Dijkstra, disc robots on grids, the octile semantics) and at
-   scale (a thousand circles, a 512^2 maze). */
+   the cell corners and against a plain octile Dijkstra, disc robots on grids against a dense roadmap from
+   above and their own paths from below, the octile semantics) and at scale (a thousand circles, a 512^2
+   maze). */
 #include "OptimumSupport.h"
 
 #include "mhplan/collision/Collision.h"
@@ -69,6 +70,7 @@ TEST(OptimumRandom, GridWorlds)
         ASSERT_TRUE(r.found) << "grid " << i;
         EXPECT_EQ(r.method, "grid-any-angle");
         ASSERT_TRUE(polylineValid(w, r.path)) << "grid " << i;
+        EXPECT_TRUE(optimumWitnessed(w, q, r)) << "grid " << i;
         const double brute = bruteVisibility(w, q, gridCornerPoints(*w.grid));
         ASSERT_NEAR(brute, r.length, 1e-9 * r.length) << "grid " << i;
         EXPECT_NEAR(r.lengthCells, r.length / w.grid->cellSize(), 1e-12);
@@ -88,9 +90,13 @@ TEST(OptimumRandom, GridWorlds)
     std::cout << "[optimum] grids: roadmap / optimum - 1 at most " << worstGap << "\n";
 }
 
+// A dense roadmap bounds the optimum from above; from below, the optimum's own path, checked point by point
+// against the blocked cells (optimumWitnessed, OptimumSupport.h), is valid and exactly as long as reported,
+// so a too-short optimum fails.
 TEST(OptimumRandom, GridWorldsDiscRobot)
 {
     double worstGap = 0.0;
+    int witnessed = 0;
     for (int i = 0; i < 100; ++i)
     {
         GeneratorOptions o;
@@ -116,9 +122,12 @@ TEST(OptimumRandom, GridWorldsDiscRobot)
             continue;
         EXPECT_EQ(r.method, "grid-tangent-graph");
         ASSERT_TRUE(polylineValid(w, r.path)) << "grid " << i;
+        EXPECT_TRUE(optimumWitnessed(w, q, r)) << "grid " << i;
+        ++witnessed;
         EXPECT_NEAR(r.lengthCells, r.length / w.grid->cellSize(), 1e-12);
     }
-    std::cout << "[optimum] disc-robot grids: roadmap / optimum - 1 at most " << worstGap << "\n";
+    std::cout << "[optimum] disc-robot grids: roadmap / optimum - 1 at most " << worstGap
+              << "; witnessed by its own path " << witnessed << " of 100\n";
 }
 
 TEST(OptimumGrid, OctileSemantics)
@@ -170,6 +179,7 @@ TEST(OptimumScale, ThousandCircles)
     const OptimumResult r = computeOptimum(w, w.queries.front());
     ASSERT_TRUE(r.found);
     EXPECT_TRUE(polylineValid(w, r.path));
+    EXPECT_TRUE(optimumWitnessed(w, w.queries.front(), r));
     EXPECT_GE(r.length, distance(w.queries.front().start, w.queries.front().goal));
     std::cout << "[optimum] 1000 circles: " << r.length << " in " << r.seconds << " s (" << r.graphNodes
               << " nodes, " << r.graphEdges << " edges)\n";
@@ -197,6 +207,7 @@ TEST(OptimumScale, Maze512)
     ASSERT_TRUE(oct.found);
     EXPECT_LE(any.length, oct.length);
     EXPECT_TRUE(polylineValid(w, any.path));
+    EXPECT_TRUE(optimumWitnessed(w, q, any));
     std::cout << "[optimum] 512 x 512 maze: any-angle " << any.length << " in " << any.seconds << " s ("
               << any.graphNodes << " nodes, " << any.graphEdges << " edges); octile " << oct.lengthCells
               << " cells in " << oct.seconds << " s\n";
