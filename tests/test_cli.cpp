@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using mhplan::test::contains;
 using Result = mhplan::test::CliResult;
@@ -19,6 +23,55 @@ namespace
     std::string tempPath(const std::string &name)
     {
         return testing::TempDir() + "/mhplan_cli_" + name;
+    }
+
+    /** \brief The value printed after \e key (e.g. "seed:"), up to the end of its line. */
+    std::string valueAfter(const std::string &out, const std::string &key)
+    {
+        const auto at = out.find(key);
+        if (at == std::string::npos)
+            return "";
+        const auto begin = out.find_first_not_of(' ', at + key.size());
+        return out.substr(begin, out.find('\n', begin) - begin);
+    }
+
+    /** \brief Everything from "length:" on (the timing line comes before it). */
+    std::string pathPart(const std::string &out)
+    {
+        const auto at = out.find("length:");
+        return at == std::string::npos ? std::string() : out.substr(at);
+    }
+
+    /** \brief The states printed after "path:" (one "x y" per line), in order. */
+    std::vector<std::pair<double, double>> pathStates(const std::string &out)
+    {
+        std::vector<std::pair<double, double>> states;
+        const auto at = out.find("\npath:");
+        if (at == std::string::npos)
+            return states;
+        std::istringstream lines(out.substr(out.find('\n', at + 1) + 1));
+        std::string line;
+        while (std::getline(lines, line))
+        {
+            std::istringstream in(line);
+            double x = 0.0, y = 0.0;
+            std::string rest;
+            if (!(in >> x >> y) || (in >> rest))
+                break;
+            states.emplace_back(x, y);
+        }
+        return states;
+    }
+
+    /** \brief Planner settings whose run ends by itself, not by the clock, so that runs compared bit for bit
+        do not depend on the machine's speed: OMPL's RRT returns at its first exact solution (so an exact
+        status shows the clock did not stop it), SMA after max_iterations iterations (milliseconds). --time
+        is only a safety net. */
+    const std::vector<std::string> &selfEndingPlanners()
+    {
+        static const std::vector<std::string> planners{"--planner RRT --set range=0.5 --time 60",
+                                                       "--planner SMA --set max_iterations=30 --time 60"};
+        return planners;
     }
 } // namespace
 
@@ -37,11 +90,35 @@ TEST(Cli, PlanFindsAValidPathAndWritesSvg)
 
 TEST(Cli, SameSeedSamePath)
 {
-    const Result a = run("plan bfo_case1 --planner RRT --time 0.5 --seed 11 --set range=0.5");
-    const Result b = run("plan bfo_case1 --planner RRT --time 0.5 --seed 11 --set range=0.5");
-    ASSERT_EQ(a.code, 0) << a.out;
-    auto pathPart = [](const std::string &s) { return s.substr(s.find("length:")); };
-    EXPECT_EQ(pathPart(a.out), pathPart(b.out));
+    for (const std::string &planner : selfEndingPlanners())
+    {
+        const Result a = run("plan bfo_case1 " + planner + " --seed 11");
+        const Result b = run("plan bfo_case1 " + planner + " --seed 11");
+        ASSERT_EQ(a.code, 0) << a.out;
+        ASSERT_EQ(b.code, 0) << b.out;
+        EXPECT_EQ(valueAfter(a.out, "status:"), "Exact solution") << planner;
+        EXPECT_FALSE(pathStates(a.out).empty()) << a.out;
+        EXPECT_EQ(pathPart(a.out), pathPart(b.out)) << planner; // length, gap, validity and every state
+    }
+}
+
+TEST(Cli, AnotherSeedAnotherPath)
+{
+    // The seed matters: the same settings with seeds 11 and 12 give different paths (both valid).
+    for (const std::string &planner : selfEndingPlanners())
+    {
+        const Result a = run("plan bfo_case1 " + planner + " --seed 11");
+        const Result b = run("plan bfo_case1 " + planner + " --seed 12");
+        ASSERT_EQ(a.code, 0) << a.out;
+        ASSERT_EQ(b.code, 0) << b.out;
+        EXPECT_EQ(valueAfter(a.out, "seed:"), "11");
+        EXPECT_EQ(valueAfter(b.out, "seed:"), "12");
+        const auto pa = pathStates(a.out), pb = pathStates(b.out);
+        ASSERT_GE(pa.size(), 2u) << a.out;
+        ASSERT_GE(pb.size(), 2u) << b.out;
+        EXPECT_NE(pa, pb) << planner;
+        EXPECT_NE(valueAfter(a.out, "length:"), valueAfter(b.out, "length:")) << planner;
+    }
 }
 
 TEST(Cli, RefusesBadInputWithAClearMessage)
@@ -198,26 +275,6 @@ TEST(Cli, RefusesWhatTheHardeningPassFound)
     const Result gen = run("generate circles --radius 100");
     EXPECT_FALSE(contains(gen.out, "error: generate:")) << gen.out;
 }
-
-namespace
-{
-    /** \brief The value printed after \e key (e.g. "seed:"), up to the end of its line. */
-    std::string valueAfter(const std::string &out, const std::string &key)
-    {
-        const auto at = out.find(key);
-        if (at == std::string::npos)
-            return "";
-        const auto begin = out.find_first_not_of(' ', at + key.size());
-        return out.substr(begin, out.find('\n', begin) - begin);
-    }
-
-    /** \brief Everything from "length:" on except the timing line. */
-    std::string pathPart(const std::string &out)
-    {
-        const auto at = out.find("length:");
-        return at == std::string::npos ? std::string() : out.substr(at);
-    }
-} // namespace
 
 // Issue 19: the seed printed by a run without --seed is a 32-bit seed that --seed accepts and that gives the
 // same run (iteration-bounded planner: no wall-clock dependence).

@@ -44,6 +44,8 @@ namespace mhplan
             return point;
         }
 
+        /** \brief Distance a disc added in a replan keeps from the robot at the start and at the goal (m). */
+        constexpr double kRoomSlack = 1e-6;
     } // namespace
 
     // ---------------------------------------------------------------------------------------------------
@@ -154,11 +156,13 @@ namespace mhplan
             if (bare.isGrid())
                 grid = std::make_shared<OccupancyGrid>(*bare.grid);
             // A disc inflated by the margin; by less when that would cover the start or the goal; dropped
-            // when even the bare disc would.
+            // when even the bare disc would. The room left keeps kRoomSlack from the start and the goal: a
+            // disc that touched one exactly would make it invalid by rounding, the query would be refused
+            // and the replan would fall back to the static world, blind to every sensed disc.
             auto addDisc = [&](const Vec2 &center, double bareRadius)
             {
                 const double room = std::min(distance(center, query.start), distance(center, query.goal)) -
-                                    spaced.robotRadius;
+                                    spaced.robotRadius - kRoomSlack;
                 const double radius = std::min(bareRadius + margin_, room);
                 if (radius < bareRadius)
                     return;
