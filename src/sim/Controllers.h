@@ -126,7 +126,8 @@ namespace mhplan
         mapf_u_trap and atbfo on a static world end stuck. It acts
         only within a few centimetres of contact at TurtleBot speeds, so the controllers' own behaviour is
        what the metrics show, and it keeps a controller from ever being cut by the simulator at a static
-       obstacle. Moving obstacles are not braked for (they do not yield). */
+       obstacle. Moving obstacles are not braked for (they do not yield; plan:<PLANNER> evades them,
+       PlanFollowController). */
     class ControllerBase : public Controller
     {
       public:
@@ -340,16 +341,37 @@ namespace mhplan
         step); while a robot blocks the path within \c lookahead and a replan is not yet allowed, the robot
         waits (it does not wait for moving obstacles: they do not yield).
 
+        Evasion (parameter \c evade, 1 = on, the default; docs/algorithms.md 8.1): a path planned on a
+        snapshot does not keep the robot off a moving obstacle that then runs into it, and the safety brake
+        does not brake for moving obstacles. So each step's command passes a reactive layer before the
+        brake. It sees what the replanning sees: the moving obstacles whose surface is within
+        \c sense_range of the robot's (centre, radius, velocity); of those, the ones that could come
+        within \c evade_margin during the horizon (\c evade_horizon, rounded up to whole steps). Each
+        candidate velocity is held constant over the horizon and rolled out with the simulator's unicycle
+        kinematics (unicycleCommand: turn at most maxTurnRate dt per step, drive along the new heading
+        scaled by the cosine of the heading error left), the robot staying where the next position would
+        leave the static free space (Simulation::staticFree, as the brake would stop it), each disc moving
+        on at its sensed velocity; its score is the smallest gap between the robot and any disc over the
+        horizon, and its progress the displacement after the horizon along the pursuit direction. The
+        candidates: the follower's command, the same at 1/2 and 1/4 of its speed, stop, and
+        \c evade_headings headings at full speed evenly spread from the robot's heading. A candidate is
+        safe when its gap stays at least \c evade_margin. The follower's command is kept when it is safe
+        (the layer is then invisible); otherwise the safe candidate with the most progress (ties: the
+        larger gap) is taken, and when none is safe the one with the largest gap (ties: progress).
+        Counted in counters()["evasions"] (commands replaced). Robots are left to the brake, the wait and
+        the replans (they brake too; the brake keeps an evasion off them and off static obstacles).
+
         Parameters: plan_time 0.5 (0.001..600 s), lookahead 0.3 (0.01..100 m), slowdown 0.3 (0..100 m),
         sense_range 1.0 (0..1000 m), margin 0.1 (0..100 m), clearance 0.05 (0..100 m), predict_time 3
-        (0..100 s), goal_tolerance 0.2 (0.001..1000 m), replan_interval 0.5 (0..1000 s), safety_brake 1, and
-        planner.<name> = value, forwarded to the planner with applyPlannerParameters (checked when set, on
-        a throwaway planner). A planner with a "seed" parameter (mhplan's population planners) gets a seed
-        drawn from the run's RNG unless planner.seed is set.
+        (0..100 s), goal_tolerance 0.2 (0.001..1000 m), replan_interval 0.5 (0..1000 s), evade 1 (0 or 1),
+        evade_horizon 2 (0.01..20 s), evade_margin 0.05 (0..10 m), evade_headings 16 (4..360), safety_brake
+        1, and planner.<name> = value, forwarded to the planner with applyPlannerParameters (checked when
+        set, on a throwaway planner). A planner with a "seed" parameter (mhplan's population planners) gets
+        a seed drawn from the run's RNG unless planner.seed is set.
         Determinism: ThetaStar and AStar are deterministic (they finish far within the budget), so runs
         repeat exactly per seed; sampling planners (RRT*, PRM, ...) draw from OMPL's global RNG and any
         planner stopped by the plan_time budget depends on the machine's speed: those runs do not repeat.
-        Planning allocates (unavoidable); following and the blocked check do not. */
+        Planning allocates (unavoidable); following, the blocked check and the evasion do not. */
     class PlanFollowController : public ControllerBase
     {
       public:
@@ -386,15 +408,32 @@ namespace mhplan
         /** \brief Path distance from the projection at which a sensed disc blocks the path (infinity when
             none does); \e byRobot tells whether the nearest blocker is a robot. */
         double blockedAt(const Simulation &sim, std::size_t i, bool &byRobot) const;
+        /** \brief What a velocity held over the evasion horizon leads to: the smallest gap to the threats
+            and the displacement along the pursuit direction at the end. */
+        struct Rollout
+        {
+            double gap;
+            double progress;
+        };
+        /** \brief The evasion layer: \e follow (the follower's command) or the velocity that replaces it;
+            \e toward is the unit pursuit direction (zero when there is none). */
+        Vec2 evade(const Simulation &sim, std::size_t i, const Vec2 &follow, const Vec2 &toward);
+        /** \brief Roll velocity \e v out over \e steps steps from robot i's state against threats_. */
+        Rollout rollout(const Simulation &sim, std::size_t i, const Vec2 &v, const Vec2 &toward,
+                        int steps) const;
 
         std::string planner_;
         const PlannerRegistry *registry_;
         std::map<std::string, std::string> plannerParams_;
         double planTime_{0.5}, lookahead_{0.3}, slowdown_{0.3}, senseRange_{1.0}, margin_{0.1};
         double goalTolerance_{0.2}, replanInterval_{0.5}, clearance_{0.05}, predictTime_{3.0};
+        double evade_{1.0}, evadeHorizon_{2.0}, evadeMargin_{0.05}, evadeHeadings_{16.0};
         ompl::RNG *rng_{nullptr};
         std::vector<Track> tracks_;
-        double plans_{0.0}, replans_{0.0};
+        /** \brief The moving obstacles the evasion of the current command considers (capacity: all of
+            them, reserved in reset(), so a command allocates nothing). */
+        std::vector<SensedObstacle> threats_;
+        double plans_{0.0}, replans_{0.0}, evasions_{0.0};
     };
 } // namespace mhplan
 

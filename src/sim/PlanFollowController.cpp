@@ -72,6 +72,14 @@ namespace mhplan
                     "extra radius when planning on the static world (m)");
         params_.add("predict_time", &predictTime_, 0.0, 100.0, false,
                     "how far ahead blocking discs are predicted (s)");
+        params_.add("evade", &evade_, 0.0, 1.0, true,
+                    "1 = each command evades sensed moving obstacles predicted to come within evade_margin");
+        params_.add("evade_horizon", &evadeHorizon_, 0.01, 20.0, false,
+                    "how far ahead the evasion rolls candidate velocities out (s)");
+        params_.add("evade_margin", &evadeMargin_, 0.0, 10.0, false,
+                    "least predicted gap to a moving obstacle for a candidate velocity to be safe (m)");
+        params_.add("evade_headings", &evadeHeadings_, 4.0, 360.0, true,
+                    "evasive headings at full speed among the evasion's candidates");
     }
 
     void PlanFollowController::setParameter(const std::string &name, const std::string &value)
@@ -110,12 +118,14 @@ namespace mhplan
     {
         rng_ = &rng;
         tracks_.assign(sim.robotCount(), Track{});
-        plans_ = replans_ = 0.0;
+        threats_.clear();
+        threats_.reserve(sim.scenario().movingObstacles.size());
+        plans_ = replans_ = evasions_ = 0.0;
     }
 
     std::map<std::string, double> PlanFollowController::counters() const
     {
-        return {{"plans", plans_}, {"replans", replans_}};
+        return {{"plans", plans_}, {"replans", replans_}, {"evasions", evasions_}};
     }
 
     void PlanFollowController::taskStarted(const Simulation &sim, std::size_t i)
@@ -309,8 +319,9 @@ namespace mhplan
             project(sim, i);
             blocked = blockedAt(sim, i, byRobot);
         }
-        if (byRobot && blocked <= lookahead_ && !mayReplan)
-            return {};
+        // While a robot blocks the path within the lookahead and no replan is allowed yet, the follower
+        // waits (a zero command; the evasion still moves it out of a moving obstacle's way).
+        const bool wait = byRobot && blocked <= lookahead_ && !mayReplan;
 
         // Pure pursuit toward the point lookahead further along the path, pulled back (halving) while the
         // straight way there is not free; the speed follows the path length left.
@@ -328,6 +339,113 @@ namespace mhplan
             remaining = distance(s.position, s.goal);
         }
         const double speed = slowdown_ > 0.0 ? vmax * std::min(1.0, remaining / slowdown_) : vmax;
-        return {brake(sim, i, unit(target - s.position) * speed)};
+        const Vec2 toward = unit(target - s.position);
+        const Vec2 follow = wait ? Vec2() : toward * speed;
+        return {brake(sim, i, evade(sim, i, follow, toward))};
+    }
+
+    PlanFollowController::Rollout PlanFollowController::rollout(const Simulation &sim, std::size_t i,
+                                                                const Vec2 &v, const Vec2 &toward,
+                                                                int steps) const
+    {
+        const RobotSpec &spec = sim.spec(i);
+        const RobotState &s = sim.state(i);
+        const double dt = sim.dt();
+        Vec2 p = s.position;
+        double heading = s.heading;
+        bool stopped = false;
+        double gap = kInf;
+        for (int k = 1; k <= steps; ++k)
+        {
+            // The simulator's step from the world-frame command (Simulation.h, Command); a step that would
+            // leave the static free space is not made (the brake and the simulator stop the robot there).
+            if (!stopped)
+            {
+                const Command u = unicycleCommand(spec, heading, v, dt);
+                if (u.unicycle)
+                {
+                    const double h = heading + u.turn;
+                    const Vec2 next = p + Vec2(std::cos(h), std::sin(h)) * (u.forward * dt);
+                    if (sim.staticFree(next, spec.radius))
+                    {
+                        p = next;
+                        heading = h;
+                    }
+                    else
+                        stopped = true;
+                }
+            }
+            const double time = k * dt;
+            for (const SensedObstacle &o : threats_)
+                gap = std::min(gap, distance(p, o.center + o.velocity * time) - o.radius - spec.radius);
+        }
+        return {gap, dot(p - s.position, toward)};
+    }
+
+    Vec2 PlanFollowController::evade(const Simulation &sim, std::size_t i, const Vec2 &follow,
+                                     const Vec2 &toward)
+    {
+        if (evade_ == 0.0)
+            return follow;
+        const RobotSpec &spec = sim.spec(i);
+        const RobotState &s = sim.state(i);
+        const int steps = std::max(1, static_cast<int>(std::ceil(evadeHorizon_ / sim.dt() - 1e-9)));
+        const double horizon = steps * sim.dt();
+        // The sensed moving obstacles (what the replanning sees) that can come within the margin of anywhere
+        // the robot can reach within the horizon: the disc's centre sweeps c + v t, the robot stays within
+        // maxSpeed t of its position.
+        threats_.clear();
+        forEachObstacle(sim, i, s.position, senseRange_, false,
+                        [&](const SensedObstacle &o, double, const Vec2 &)
+                        {
+                            if (o.source != SensedObstacle::Source::Moving)
+                                return;
+                            const double closest =
+                                pointSegmentDistance(s.position, o.center, o.center + o.velocity * horizon) -
+                                o.radius - spec.radius;
+                            if (closest - spec.maxSpeed * horizon < evadeMargin_)
+                                threats_.push_back(o); // within the capacity reserved in reset()
+                        });
+        if (threats_.empty())
+            return follow;
+        const Rollout kept = rollout(sim, i, follow, toward, steps);
+        if (kept.gap >= evadeMargin_)
+            return follow;
+
+        // a is better than b: safe before unsafe; among safe ones more progress (then the larger gap); among
+        // unsafe ones the larger gap (then more progress).
+        auto better = [&](const Rollout &a, const Rollout &b)
+        {
+            const bool safeA = a.gap >= evadeMargin_, safeB = b.gap >= evadeMargin_;
+            if (safeA != safeB)
+                return safeA;
+            const double first = safeA ? a.progress - b.progress : a.gap - b.gap;
+            const double second = safeA ? a.gap - b.gap : a.progress - b.progress;
+            constexpr double tie = 1e-9;
+            return first > tie || (first >= -tie && second > tie);
+        };
+        Vec2 best = follow;
+        Rollout bestRollout = kept;
+        auto consider = [&](const Vec2 &v)
+        {
+            const Rollout candidate = rollout(sim, i, v, toward, steps);
+            if (better(candidate, bestRollout))
+            {
+                best = v;
+                bestRollout = candidate;
+            }
+        };
+        consider(follow * 0.5);
+        consider(follow * 0.25);
+        consider(Vec2());
+        const int headings = static_cast<int>(evadeHeadings_);
+        for (int k = 0; k < headings; ++k)
+        {
+            const double angle = s.heading + 2.0 * kPi * k / headings;
+            consider(Vec2(std::cos(angle), std::sin(angle)) * spec.maxSpeed);
+        }
+        if (best != follow)
+            evasions_ += 1.0;
+        return best;
     }
 } // namespace mhplan
