@@ -504,3 +504,115 @@ TEST(OptimumRandom, MixedWorlds)
 {
     checkAgainstRoadmap(Kind::Mixed, "mixed");
 }
+
+// ------------------------------------------------------------------------------------------------------
+// Large polygons: the edge index (OptimumOptions::polygonEdgeIndex) changes no result.
+
+namespace
+{
+    /** \brief A simple star polygon of \e n vertices about \e c (angles strictly increasing):
+        even vertices at radius in [0.8, 1] times \e outer, odd ones in [0.45, 0.75] times it (every other
+        vertex convex), and \e slits narrow notches down to 0.1 times \e outer. */
+    std::vector<Vec2> largeStar(Rng &rng, int n, const Vec2 &c, double outer, int slits = 0)
+    {
+        std::vector<double> radius;
+        for (int i = 0; i < n; ++i)
+            radius.push_back(outer * (i % 2 == 0 ? rng.uniform(0.8, 1.0) : rng.uniform(0.45, 0.75)));
+        for (int k = 0; k < slits; ++k)
+        {
+            const int at = static_cast<int>(rng.uniform(0.0, n - 3.0));
+            radius[at + 1] = radius[at + 2] = outer * rng.uniform(0.1, 0.3);
+        }
+        std::vector<Vec2> v;
+        for (int i = 0; i < n; ++i)
+        {
+            const double a = 2.0 * kPi * (i + rng.uniform(0.0, 0.5)) / n;
+            v.push_back({c.x + radius[i] * std::cos(a), c.y + radius[i] * std::sin(a)});
+        }
+        return v;
+    }
+
+    /** \brief One or two large star polygons (some with slits), a few circles, a random valid query. */
+    World largePolygonWorld(int index)
+    {
+        Rng rng(5000 + 104729 * static_cast<std::uint64_t>(index));
+        World w = box10(index % 2 == 0 ? 0.0 : rng.uniform(0.02, 0.2));
+        w.name = "large-polygons";
+        const int sizes[] = {200, 300, 400, 500, 250, 600};
+        const int n = sizes[index % 6];
+        if (index % 3 == 2)
+        {
+            w.polygons.push_back(makePolygon(largeStar(rng, n, {3.0, 5.0}, 2.3, 3)));
+            w.polygons.push_back(makePolygon(largeStar(rng, n / 2, {7.3, 5.0}, 2.0, 2)));
+        }
+        else
+            w.polygons.push_back(makePolygon(largeStar(rng, n, {5.0, 5.0}, 3.8, index % 2 == 0 ? 4 : 0)));
+        const int circles = static_cast<int>(rng.uniform(1.0, 4.999));
+        for (int i = 0; i < circles; ++i)
+            w.circles.push_back({{rng.uniform(0.5, 9.5), rng.uniform(0.5, 9.5)}, rng.uniform(0.1, 0.6)});
+        for (const auto &p : w.polygons)
+            EXPECT_TRUE(polygonIsSimple(p.vertices));
+        const CollisionModelPtr model = makeCollisionModel(w);
+        const Box in = w.bounds.inflated(-w.robotRadius);
+        auto sample = [&]
+        {
+            for (;;)
+            {
+                const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
+                if (model->isValid(p))
+                    return p;
+            }
+        };
+        const Vec2 s = sample();
+        const Vec2 g = sample();
+        w.queries.push_back({"default", s, g});
+        return w;
+    }
+} // namespace
+
+// Random worlds of polygons with 100 to 600 vertices (point and disc robots): the optimum with the edge
+// index has the same graph and length (1e-12 relative) as with the plain per-edge checks, and is witnessed
+// by its own path.
+TEST(OptimumLargePolygon, EdgeIndexChangesNothing)
+{
+    OptimumOptions plain;
+    plain.polygonEdgeIndex = false;
+    int found = 0;
+    for (int i = 0; i < 12; ++i)
+    {
+        const World w = largePolygonWorld(i);
+        const Query &q = w.queries.front();
+        const OptimumResult indexed = computeOptimum(w, q);
+        const OptimumResult reference = computeOptimum(w, q, plain);
+        ASSERT_EQ(indexed.found, reference.found) << "world " << i;
+        EXPECT_EQ(indexed.graphNodes, reference.graphNodes) << "world " << i;
+        EXPECT_EQ(indexed.graphEdges, reference.graphEdges) << "world " << i;
+        if (!indexed.found)
+            continue;
+        ++found;
+        EXPECT_NEAR(indexed.length, reference.length, 1e-12 * reference.length) << "world " << i;
+        EXPECT_TRUE(optimumWitnessed(w, q, indexed)) << "world " << i;
+        EXPECT_TRUE(polylineValid(w, indexed.path)) << "world " << i;
+    }
+    EXPECT_GE(found, 8);
+}
+
+// Timing of one large polygon (disabled: run with --gtest_also_run_disabled_tests; MHPLAN_PLAIN=1 times the
+// plain per-edge checks).
+TEST(OptimumLargePolygon, DISABLED_Timing)
+{
+    OptimumOptions options;
+    options.polygonEdgeIndex = std::getenv("MHPLAN_PLAIN") == nullptr;
+    for (int n : {500, 1000, 2000})
+        for (double robot : {0.0, 0.1})
+        {
+            Rng rng(4242 + n);
+            World w = box10(robot);
+            w.polygons.push_back(makePolygon(largeStar(rng, n, {5.0, 5.0}, 4.2)));
+            const Query q = query({0.3, 5.0}, {9.7, 5.2});
+            const OptimumResult r = computeOptimum(w, q, options);
+            std::cout << "[optimum] " << n << " vertices, robot " << robot << ": " << r.seconds
+                      << " s, length " << r.length << ", nodes " << r.graphNodes << ", edges " << r.graphEdges
+                      << std::endl;
+        }
+}

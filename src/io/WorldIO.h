@@ -16,9 +16,10 @@ namespace mhplan
         largest radius; beyond it lengths lose the precision the planners and the optimum solver need. */
     constexpr double kMaxCoordinate = 1e9;
     /** \brief The most vertices of one polygon. It bounds the exact-optimum solver (computeOptimum), which
-        joins every pair of convex vertices by their tangents and checks each against every edge: cubic in the
-        vertex count, over a minute for one 2,000-vertex polygon with 1,000 convex vertices. Collision
-        queries are linear in it (the simplicity check is an O(n log n) sweep, under 1 ms at 2,000). */
+        joins every pair of convex vertices by their tangents and checks each against the edges near it (an
+        edge index per polygon, docs/conventions.md): about 9 s for one 2,000-vertex polygon with 1,000
+        convex vertices. Collision queries are linear in it (the simplicity check is an O(n log n) sweep,
+        under 1 ms at 2,000). */
     constexpr std::size_t kMaxPolygonVertices = 2000;
     /** \brief Largest robot polygon (its convex pieces are FCL shapes queried at every pose). */
     constexpr std::size_t kMaxRobotVertices = 64;

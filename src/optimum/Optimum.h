@@ -70,6 +70,10 @@ namespace mhplan
         /** \brief Largest distance of a polyline vertex of \e path outside an arc's circle, relative to the
             world's size (max of width and height); in (0, 0.1]. */
         double arcDeviation{1e-6};
+        /** \brief Geometric worlds: index the edges of every polygon of more than 32 vertices in a bucket
+            grid, so that checking a segment or arc against it visits only the edges nearby (same results,
+            see docs/conventions.md). Only tests turn it off, to compare with the plain per-edge checks. */
+        bool polygonEdgeIndex{true};
     };
 
     /** \brief The exact shortest collision-free path for the world's disc robot, under the validity semantics
@@ -85,13 +89,15 @@ namespace mhplan
         another obstacle or outside the box are discarded; the bounds need no nodes because the admissible
         box is convex (a shortest path may run along it as a straight segment, never bend on it). Checks
         use a tolerance of 1e-9 of the world's size, so paths that touch obstacles are kept. A uniform
-        bucket grid over the obstacles makes every segment check visit only the buckets it crosses. Only
-        discs meeting the ellipse {x : |x - start| + |x - goal| <= U} and tangent segments that fit on a path
-        of length <= U are built, for U = 1.05, then 1.4 times the straight-line distance, then unbounded,
-        until the graph's shortest path is no longer than U (then it is the optimum: shorter paths never
-        leave the ellipse). A* with
-        the Euclidean heuristic finds the shortest path in the graph, which is the exact optimum (shortest
-        paths in the plane among such obstacles consist of tangent segments and arcs of these discs).
+        bucket grid over the obstacles makes every segment check visit only the buckets it crosses, and
+        polygons of more than 32 vertices get one over their edges, so that a check visits only the edges
+        nearby (same results as checking every edge; OptimumOptions::polygonEdgeIndex). Only discs meeting
+        the ellipse {x : |x - start| + |x - goal| <= U} and tangent segments that fit on a path of length
+        <= U are built, for U = 1.05, then 1.4 times the straight-line distance, then unbounded, until the
+        graph's shortest path is no longer than U (then it is the optimum: shorter paths never leave the
+        ellipse). A* with the Euclidean heuristic finds the shortest path in the graph, which is the exact
+        optimum (shortest paths in the plane among such obstacles consist of tangent segments and arcs of
+        these discs).
 
         Grid worlds, point robot (any-angle): blocked cells are closed squares, cells outside the grid are
         blocked, and a "pinch" corner where two blocked cells meet diagonally blocks passage (see

@@ -5,10 +5,12 @@
 #include "mhplan/optimum/detail/BucketIndex.h"
 #include "mhplan/optimum/detail/OptimumInternal.h"
 #include "mhplan/optimum/detail/PathGraph.h"
+#include "mhplan/optimum/detail/PolygonEdgeIndex.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -53,6 +55,20 @@ namespace mhplan
                     }
                     for (std::size_t k = 0; k < w.polygons.size(); ++k)
                         index_.insert(nc + static_cast<int>(k), w.polygons[k].bbox.inflated(r_ + tol_));
+                    // Large polygons get an edge index (docs/conventions.md, "Polygon simplicity"). Its
+                    // margin exceeds every threshold the checks use (r + tol) by the rounding of the crossing
+                    // points they compute (near-tangent circle-edge intersections err by ~1e-8 of the
+                    // coordinates).
+                    edgeIndex_.resize(w.polygons.size());
+                    for (std::size_t k = 0; opt_.polygonEdgeIndex && k < w.polygons.size(); ++k)
+                    {
+                        const Polygon &poly = w.polygons[k];
+                        if (poly.vertices.size() <= kEdgeIndexMinVertices)
+                            continue;
+                        const double diag = std::hypot(poly.bbox.width(), poly.bbox.height());
+                        edgeIndex_[k] = std::make_unique<PolygonEdgeIndex>(
+                            poly.vertices, r_ + 2.0 * tol_ + 1e-6 * (scale_ + diag));
+                    }
                 }
 
                 /** Builds the graph over the discs that meet the ellipse {x : |x - s| + |x - g| <= U} and the
@@ -116,6 +132,11 @@ namespace mhplan
                 double scale_;
                 double tol_;
                 BucketIndex index_;
+                /** Polygons of more than this many vertices get an edge index. */
+                static constexpr std::size_t kEdgeIndexMinVertices = 32;
+                /** Per polygon: its edge index, or null (small polygon, or OptimumOptions::polygonEdgeIndex
+                    off). */
+                std::vector<std::unique_ptr<PolygonEdgeIndex>> edgeIndex_;
                 std::vector<Disc> discs_;
                 Graph g_;
                 /** Paths longer than this are not looked for (see run()). */
@@ -171,6 +192,8 @@ namespace mhplan
                     const Box bb = poly.bbox.inflated(r_);
                     if (!bb.contains(p))
                         return false;
+                    if (const PolygonEdgeIndex *edges = edgeIndex_[id - nc].get())
+                        return edges->signedDistanceBelow(p, r_ - tol_);
                     return pointPolygonSignedDistance(p, poly.vertices) < r_ - tol_;
                 }
 
@@ -199,6 +222,9 @@ namespace mhplan
                             const Polygon &poly = world_.polygons[id - nc];
                             if (!sb.overlaps(poly.bbox.inflated(r_)))
                                 return false;
+                            if (const PolygonEdgeIndex *edges = edgeIndex_[id - nc].get())
+                                return r_ > 0.0 ? edges->segmentDistanceBelow(a, b, r_ - tol_)
+                                                : segmentDeepInside(a, b, *edges, tol_);
                             if (r_ > 0.0)
                                 return segmentPolygonDistance(a, b, poly.vertices) < r_ - tol_;
                             return segmentDeepInside(a, b, poly.vertices, tol_);
@@ -208,13 +234,7 @@ namespace mhplan
                 bool arcFree(const Arc &arc, int ownCircle) const
                 {
                     // The admissible box: end points and the axis-extreme points of the arc.
-                    Box bb = boundingBox({arc.at(0.0), arc.at(1.0)});
-                    for (int k = 0; k < 4; ++k)
-                        if (arc.contains(k * 0.5 * kPi))
-                        {
-                            const Vec2 p = polar(arc.c, arc.rho, k * 0.5 * kPi);
-                            bb = boundingBox({{bb.xmin, bb.ymin}, {bb.xmax, bb.ymax}, p});
-                        }
+                    const Box bb = arcBoundingBox(arc);
                     if (bb.xmin < inner_.xmin - tol_ || bb.xmax > inner_.xmax + tol_ ||
                         bb.ymin < inner_.ymin - tol_ || bb.ymax > inner_.ymax + tol_)
                         return false;
@@ -233,6 +253,23 @@ namespace mhplan
                             const Polygon &poly = world_.polygons[id - nc];
                             if (!bb.overlaps(poly.bbox.inflated(r_)))
                                 return false;
+                            if (const PolygonEdgeIndex *edges = edgeIndex_[id - nc].get())
+                            {
+                                if (!(r_ > 0.0))
+                                    return arcDeepInside(arc, *edges, tol_);
+                                const auto &v = poly.vertices;
+                                // Edges closer than r to the arc have an arc point in their inflated box.
+                                if (edges->anyEdgeInBox(bb.inflated(tol_),
+                                                        [&](int e)
+                                                        {
+                                                            const auto i = static_cast<std::size_t>(e);
+                                                            return arcSegmentDistance(arc, v[i],
+                                                                                      v[(i + 1) % v.size()]) <
+                                                                   r_ - tol_;
+                                                        }))
+                                    return true;
+                                return edges->signedDistanceBelow(arc.at(0.5), r_ - tol_);
+                            }
                             if (r_ > 0.0)
                             {
                                 const auto &v = poly.vertices;

@@ -6,6 +6,7 @@
 
 #include "mhplan/base/Geometry.h"
 #include "mhplan/optimum/detail/OptimumInternal.h"
+#include "mhplan/optimum/detail/PolygonEdgeIndex.h"
 
 #include <cmath>
 #include <vector>
@@ -56,8 +57,19 @@ namespace mhplan
         /** True when some part of the segment lies inside the polygon deeper than tol. */
         bool segmentDeepInside(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly, double tol);
 
+        /** The same as segmentDeepInside(a, b, index.polygon(), tol), visiting only the edges near the
+            segment; tol below the index's margin. */
+        bool segmentDeepInside(const Vec2 &a, const Vec2 &b, const PolygonEdgeIndex &index, double tol);
+
         /** True when some part of the arc lies inside the polygon deeper than tol. */
         bool arcDeepInside(const Arc &arc, const std::vector<Vec2> &poly, double tol);
+
+        /** The same as arcDeepInside(arc, index.polygon(), tol), visiting only the edges near the arc; tol
+            below the index's margin. */
+        bool arcDeepInside(const Arc &arc, const PolygonEdgeIndex &index, double tol);
+
+        /** The arc's bounding box: its end points and the axis-extreme points it passes. */
+        Box arcBoundingBox(const Arc &arc);
     } // namespace optimum_detail
 } // namespace mhplan
 
