@@ -270,6 +270,19 @@ namespace mhplan::test
         return dist[t];
     }
 
+    /** A uniformly random point of the world's robot-centre box that \e model accepts (rejection sampling).
+     */
+    inline Vec2 sampleValid(Rng &rng, const World &w, const CollisionModel &model)
+    {
+        const Box in = w.bounds.inflated(-w.robotRadius);
+        for (;;)
+        {
+            const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
+            if (model.isValid(p))
+                return p;
+        }
+    }
+
     /** A dense PRM*-style roadmap: a lattice of \e n x \e n points plus \e extra random samples, start and
         goal; every pair closer than \e radius joined when the exact motion validator accepts it. */
     inline double roadmapLength(const World &world, const Query &q, int n, int extra, double radiusCells,

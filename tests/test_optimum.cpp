@@ -345,15 +345,7 @@ namespace
         }
         const CollisionModelPtr model = makeCollisionModel(w);
         const Box in = w.bounds.inflated(-w.robotRadius);
-        auto sample = [&]
-        {
-            for (;;)
-            {
-                const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
-                if (model->isValid(p))
-                    return p;
-            }
-        };
+        auto sample = [&] { return sampleValid(rng, w, *model); };
         Vec2 s = sample();
         Vec2 g = sample();
         // Half of the queries run corner to corner (start and goal on the admissible box).
@@ -553,16 +545,7 @@ namespace
         for (const auto &p : w.polygons)
             EXPECT_TRUE(polygonIsSimple(p.vertices));
         const CollisionModelPtr model = makeCollisionModel(w);
-        const Box in = w.bounds.inflated(-w.robotRadius);
-        auto sample = [&]
-        {
-            for (;;)
-            {
-                const Vec2 p{rng.uniform(in.xmin, in.xmax), rng.uniform(in.ymin, in.ymax)};
-                if (model->isValid(p))
-                    return p;
-            }
-        };
+        auto sample = [&] { return sampleValid(rng, w, *model); };
         const Vec2 s = sample();
         const Vec2 g = sample();
         w.queries.push_back({"default", s, g});
