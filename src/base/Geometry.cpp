@@ -25,21 +25,6 @@ namespace mhplan
         return distance(p, closestPointOnSegment(p, a, b));
     }
 
-    namespace
-    {
-        int orientation(const Vec2 &a, const Vec2 &b, const Vec2 &c)
-        {
-            const double v = cross(b - a, c - a);
-            return (v > 0.0) - (v < 0.0);
-        }
-
-        bool onSegment(const Vec2 &p, const Vec2 &a, const Vec2 &b)
-        {
-            return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-                   p.y <= std::max(a.y, b.y);
-        }
-    } // namespace
-
     bool segmentsIntersect(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
     {
         const int o1 = orientation(a, b, c);

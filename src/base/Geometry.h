@@ -3,6 +3,7 @@
 #ifndef MHPLAN_GEOMETRY_H
 #define MHPLAN_GEOMETRY_H
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -36,6 +37,21 @@ namespace mhplan
     inline double cross(const Vec2 &a, const Vec2 &b)
     {
         return a.x * b.y - a.y * b.x;
+    }
+
+    /** \brief The sign of the turn a -> b -> c: 1 left (counter-clockwise), -1 right, 0 collinear (the sign
+       of the exact cross product's rounding, as every polygon predicate here uses it). */
+    inline int orientation(const Vec2 &a, const Vec2 &b, const Vec2 &c)
+    {
+        const double v = cross(b - a, c - a);
+        return (v > 0.0) - (v < 0.0);
+    }
+
+    /** \brief \e p lies in the axis-aligned box of [a, b] (on the segment when also collinear with it). */
+    inline bool onSegment(const Vec2 &p, const Vec2 &a, const Vec2 &b)
+    {
+        return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+               p.y <= std::max(a.y, b.y);
     }
     inline double norm(const Vec2 &a)
     {

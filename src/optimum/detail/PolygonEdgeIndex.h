@@ -145,18 +145,6 @@ namespace mhplan
             double margin_;
             Box bbox_;
             BucketIndex grid_;
-
-            /** The orientation and on-segment predicates of src/base/Geometry.cpp, term for term. */
-            static int orientation(const Vec2 &a, const Vec2 &b, const Vec2 &c)
-            {
-                const double x = cross(b - a, c - a);
-                return (x > 0.0) - (x < 0.0);
-            }
-            static bool onSegment(const Vec2 &p, const Vec2 &a, const Vec2 &b)
-            {
-                return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-                       p.y <= std::max(a.y, b.y);
-            }
         };
     } // namespace optimum_detail
 } // namespace mhplan
