@@ -8,10 +8,14 @@
 #include "mhplan/planners/lattice/ThetaStar.h"
 #include "mhplan/planners/memetic/MemeticGenetic.h"
 #include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
+#include "mhplan/planners/pagmo/PagmoPlanner.h"
 #include "mhplan/planners/population/Genetic.h"
+#include "mhplan/planners/population/GreyWolf.h"
 #include "mhplan/planners/population/LRSMA.h"
 #include "mhplan/planners/population/MountainGazelle.h"
+#include "mhplan/planners/population/ParticleSwarm.h"
 #include "mhplan/planners/population/SlimeMould.h"
+#include "mhplan/planners/population/Whale.h"
 
 namespace ob = ompl::base;
 
@@ -104,6 +108,18 @@ namespace mhplan
                allocatorFor<SlimeMould>(), "population", kFaithful, kAnyDimension});
         r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
                allocatorFor<LRSMA>(), "population", kFaithful, kAnyDimension});
+        r.add({"PSO", "mhplan",
+               "Particle swarm optimization as [LRSMA] compares it (Kennedy & Eberhart 1995; c1 = c2 = 0.4, "
+               "w = 1): spline, fitness S",
+               allocatorFor<ParticleSwarm>(), "population", kFaithful, kAnyDimension});
+        r.add({"WOA", "mhplan",
+               "Whale optimization algorithm as [LRSMA] compares it (Mirjalili & Lewis 2016; a from 2 to 0): "
+               "spline, fitness S",
+               allocatorFor<Whale>(), "population", kFaithful, kAnyDimension});
+        r.add({"GWO", "mhplan",
+               "Grey wolf optimizer as [LRSMA] compares it (Mirjalili et al. 2014; a from 2 to 0): spline, "
+               "fitness S",
+               allocatorFor<GreyWolf>(), "population", kFaithful, kAnyDimension});
         r.add({"MGO", "mhplan", "Mountain gazelle optimizer, the original (Abdollahzadeh et al. 2022)",
                allocatorFor<MountainGazelle>(), "population", kFaithful, kAnyDimension});
         r.add({"SMA-GMS", "mhplan",
@@ -154,5 +170,8 @@ namespace mhplan
              "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
              "stations along the best path, feasible decoding, local search, restarts",
              allocatorFor<MemeticGazelle>(), "memetic", kImproved, kPlanar});
+        // pagmo2's single-objective, derivative-free algorithms, one planner each ("pagmo:de", ...; origin
+        // "pagmo"; docs/algorithms.md 11).
+        registerPagmoPlanners(r);
     }
 } // namespace mhplan

@@ -75,8 +75,15 @@ namespace mhplan::contract
         std::vector<double> x_;
     };
 
-    /** \brief The registry the contract runs on: every built-in mhplan planner, plus the planner above
-        (one registration line, as in ompl_planners/Registration.cpp). */
+    /** \brief True for a planner of ompl_planners/: mhplan's own (origin "mhplan") and pagmo2's algorithms
+        through the bridge of ompl_planners/pagmo (origin "pagmo"). */
+    inline bool fromOmplPlanners(const PlannerEntry &e)
+    {
+        return e.origin == "mhplan" || e.origin == "pagmo";
+    }
+
+    /** \brief The registry the contract runs on: every built-in planner of ompl_planners/, plus the planner
+        above (one registration line, as in ompl_planners/Registration.cpp). */
     inline const PlannerRegistry &contractRegistry()
     {
         static const PlannerRegistry registry = []
@@ -84,7 +91,7 @@ namespace mhplan::contract
             PlannerRegistry r;
             const PlannerRegistry &builtin = builtinPlanners();
             for (const std::string &name : builtin.names())
-                if (builtin.get(name).origin == "mhplan")
+                if (fromOmplPlanners(builtin.get(name)))
                     r.add(builtin.get(name));
             r.add({"StraightLineRestarts", "mhplan", "test planner: straight line, then random restarts",
                    allocatorFor<StraightLineRestarts>(), "population", false, true});
@@ -99,15 +106,15 @@ namespace mhplan::contract
         return contractRegistry().names();
     }
 
-    /** \brief Every planner of ompl_planners/ the built-in registry knows (origin "mhplan"): population
-        planners with their improved variants, the memetic variants, lattice searches and potential-field
-        walks. */
+    /** \brief Every planner of ompl_planners/ the built-in registry knows (fromOmplPlanners): population
+        planners with their improved variants, pagmo2's algorithms, the memetic variants, lattice searches
+        and potential-field walks. */
     inline std::vector<std::string> mhplanPlanners()
     {
         std::vector<std::string> out;
         const PlannerRegistry &registry = builtinPlanners();
         for (const std::string &name : registry.names())
-            if (registry.get(name).origin == "mhplan")
+            if (fromOmplPlanners(registry.get(name)))
                 out.push_back(name);
         return out;
     }

@@ -306,9 +306,11 @@ TEST(Fidelity, DefaultCampaignRunsThePapersPlannersAndRunCounts)
     std::map<std::string, unsigned int> runs;
     for (const auto &p : c.planners)
         runs[p.planner] = bench::runsOf(c, p);
-    for (const char *name : {"ATBFO", "BFO", "SMA-GMS", "MGO-GMS", "GA", "SMA", "LRSMA", "MGO"})
+    for (const char *name :
+         {"ATBFO", "BFO", "SMA-GMS", "MGO-GMS", "GA", "SMA", "LRSMA", "MGO", "GWO", "WOA", "PSO"})
         EXPECT_EQ(runs.count(name), 1u) << name;
-    for (const char *name : {"SMA", "LRSMA", "MGO"})
+    // All five rows of [LRSMA] Table 3 (GWO, WOA, PSO, SMA, LRSMA) and MGO.
+    for (const char *name : {"SMA", "LRSMA", "MGO", "GWO", "WOA", "PSO"})
         EXPECT_EQ(runs[name], 100u) << name << ": [LRSMA] Table 3 has 100 runs per algorithm";
     EXPECT_EQ(runs["RRTstar"], c.runs);
     // A planner's runs must be a positive integer; the message names the field.

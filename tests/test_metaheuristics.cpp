@@ -317,6 +317,38 @@ namespace
               {"gms_grid10", 19, 6.0},       // 20/20, 3.14%
               noExactRun("gms_grid20", maze3),
               noExactRun("gms_grid30", maze3)}},
+            // [LRSMA] Table 3's comparators (docs/algorithms.md 10): spline decoding, fitness S, the papers'
+            // settings (PSO c1 = c2 = 0.4, w = 1; WOA and GWO a from 2 to 0).
+            {"PSO",
+             {{"bfo_case1", 19, 5.0},        // 20/20, 1.79%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 1.04%
+              {"bfo_case2", 2, 39.0},        // 3/20, 36.64%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 2.24%
+              {"lrsma_scenario2", 6, 23.0},  // 8/20, 20.88%
+              {"lrsma_scenario3", 11, 19.0}, // 13/20, 16.29%
+              {"gms_grid10", 19, 9.0},       // 20/20, 6.07%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
+            {"WOA",
+             {{"bfo_case1", 19, 13.0},       // 20/20, 10.41%
+              {"bfo_case1_moved", 19, 11.0}, // 20/20, 8.29%
+              {"bfo_case2", 2, 38.0},        // 4/20, 35.42%
+              {"lrsma_scenario1", 11, 16.0}, // 13/20, 13.58%
+              {"lrsma_scenario2", 2, 21.0},  // 4/20, 18.31%
+              {"lrsma_scenario3", 9, 19.0},  // 11/20, 16.92%
+              {"gms_grid10", 6, 20.0},       // 8/20, 17.75%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
+            {"GWO",
+             {{"bfo_case1", 19, 5.0},        // 20/20, 0.62%
+              {"bfo_case1_moved", 19, 5.0},  // 20/20, 0.12%
+              {"bfo_case2", 7, 24.0},        // 9/20, 21.78%
+              {"lrsma_scenario1", 19, 5.0},  // 20/20, 2.14%
+              {"lrsma_scenario2", 11, 16.0}, // 13/20, 13.28%
+              {"lrsma_scenario3", 16, 15.0}, // 18/20, 12.30%
+              {"gms_grid10", 19, 5.0},       // 19/20, 1.96%
+              noExactRun("gms_grid20", maze3),
+              noExactRun("gms_grid30", maze3)}},
             // [GMS]'s SMA and MGO: the six operators, the maximised [GMS] fitness
             // (docs/algorithms.md 1.3, 1.5).
             // Measured: SMA-GMS 14/20 on gms_grid10 where SMA (S, no operators) has 19/20: with the maximised
