@@ -175,6 +175,10 @@ class ReportTest(unittest.TestCase):
             self.assertIn("time of the fastest run", text)
             self.assertNotIn("14.404", text)
             self.assertIn("all runs: S", text)  # [LRSMA] Table 3 both ways
+            # Table 3's rows in the paper's order (GWO, WOA, PSO, SMA, LRSMA), each of ours above the paper's.
+            order = [text.index("<td>%s</td>" % row) for row in
+                     ("GWO (paper)", "WOA (paper)", "PSO (paper)", "SMA (paper)", "LRSMA (ours)", "LRSMA (paper)")]
+            self.assertEqual(order, sorted(order))
             self.assertIn("Crasher", text)
 
     def test_missing_progress_and_failed_planner(self):
