@@ -39,6 +39,7 @@ depends=$(dpkg-deb -f "$deb" Depends)
 contents=$(dpkg-deb -c "$deb")
 grep -q libompl-dev <<<"$depends"
 grep -q libgif7 <<<"$depends" # libmhplan links giflib (src/draw/GifWriter.cpp)
+grep -q libpagmo8 <<<"$depends" # libmhplan links pagmo2 (ompl_planners/pagmo)
 grep -q "usr/lib/cmake/mhplan/mhplanConfig.cmake" <<<"$contents"
 grep -q "usr/bin/mhplan" <<<"$contents"
 echo "consumer project built and ran against the installed package; $(basename "$deb") built"
