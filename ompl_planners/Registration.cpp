@@ -115,7 +115,7 @@ namespace mhplan
         r.add({"WOA", "mhplan",
                "Whale optimization algorithm as [LRSMA] compares it (Mirjalili & Lewis 2016; a from 2 to 0): "
                "spline, fitness S",
-               allocatorFor<Whale>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<Whale>(), "population", kFaithful, kPlanar});
         r.add({"GWO", "mhplan",
                "Grey wolf optimizer as [LRSMA] compares it (Mirjalili et al. 2014; a from 2 to 0): spline, "
                "fitness S",

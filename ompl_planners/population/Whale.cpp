@@ -19,6 +19,17 @@ namespace mhplan
         declareRanged<double>(params(), this, kSpiral, &Whale::setSpiral, &Whale::getSpiral);
     }
 
+    void Whale::setup()
+    {
+        SwarmPlanner::setup();
+        if (!onRealVectorSpace())
+            refuseSetup("plans in the plane only (docs/algorithms.md 10.2); the state space '" +
+                        si_->getStateSpace()->getName() + "' is not a RealVectorStateSpace of dimension 2");
+        if (spaceDimension() != 2)
+            refuseSetup("plans in the plane only (docs/algorithms.md 10.2); the space has dimension " +
+                        std::to_string(spaceDimension()));
+    }
+
     void Whale::setSpiral(double b)
     {
         checkParameter(kSpiral, b);

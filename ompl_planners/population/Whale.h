@@ -26,7 +26,11 @@ namespace mhplan
         paper's |A| < 1 test needs one number; the authors' code does the same); R is one whale per move
         (the code draws one per coordinate); l ~ U(-1, 1) as the paper (the code narrows it to
         [a2, 1], a2 from -1 to -2); b = 1 (\c spiral); a as in the code (2 at the first iteration, 2 / T at
-        the last); synchronous moves. Framework: SwarmPlanner. */
+        the last); synchronous moves. Framework: SwarmPlanner.
+
+        Planar only (R^2; setup() refuses other spaces naming them): on a Dubins car space OMPL 1.5.2's
+        Dubins distance aborted the process (an assertion in its RSR word) on waypoints WOA proposed, and in
+        R^3 and R^6 its paths stayed over 30 % above the shortest (docs/algorithms.md 10.2). */
     class Whale : public SwarmPlanner
     {
       public:
@@ -51,6 +55,9 @@ namespace mhplan
             or the random whale's for Search; \e l and \e b only for Spiral). */
         static double moveCoordinate(Move move, double x, double target, double A, double C, double l,
                                      double b);
+
+        /** \brief PopulationPlanner::setup(), then refuses every space but R^2 (docs/algorithms.md 10.2). */
+        void setup() override;
 
       protected:
         bool iterate(unsigned int t) override;
