@@ -17,7 +17,7 @@ namespace mhplan
         algorithm): N = 30, T = 30, m = 3 waypoints, spline decoding (n = 100), fitness S (eta1 = 1, eta2 =
         1000). The initial population is drawn uniformly in the bounds and evaluated (N evaluations). Each
         iteration a concrete algorithm writes the moved population into next() from the current one
-        (population(), fitnessOf()), then moveRound() clamps and evaluates it (N evaluations); when the
+        (member(), fitnessOf()), then moveRound() clamps and evaluates it (N evaluations); when the
         termination condition interrupts the round nothing is committed (the iteration is discarded, its
         evaluations still count). After every committed round, and after the initial one, evaluated() is
         called so that the algorithm updates its memory (personal bests, leaders). */
