@@ -256,7 +256,9 @@ namespace mhplan::bench::detail
     {
         const Campaign &c = *xs.campaign;
         const Experiment &e = *xs.experiment;
-        xs.world = loadWorld(e.worldFile);
+        std::string bytes;
+        xs.world = loadWorld(e.worldFile, &bytes);
+        checkInputUnchanged(e, bytes, e.worldFile);
         xs.query = experimentQuery(xs.world, e); // a MovingAI problem: from its .scen line
         xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
         xs.metricStep = defaultMetricStep(xs.world);

@@ -8,6 +8,7 @@ reads whatever is there and the rest of the report says plainly what is missing.
 """
 
 import math
+import os
 import sqlite3
 from dataclasses import dataclass, field
 
@@ -102,9 +103,17 @@ def to_float(value):
     return f if math.isfinite(f) else None
 
 
+def connect_readonly(path):
+    """Open the SQLite file \\e path read-only, whatever characters its name holds ('#', '?', '%', blanks:
+    the name is percent-encoded into SQLite's file: URI, so it never names another file)."""
+    from urllib.parse import quote
+
+    return sqlite3.connect("file:%s?mode=ro" % quote(os.path.abspath(path)), uri=True)
+
+
 def load(path):
     """Read the database at \\p path. Raises ValueError when it is not an OMPL benchmark database."""
-    conn = sqlite3.connect("file:%s?mode=ro" % path, uri=True)
+    conn = connect_readonly(path)
     try:
         cur = conn.cursor()
         tables = _tables(cur)
