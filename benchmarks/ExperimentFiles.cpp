@@ -66,8 +66,14 @@ namespace mhplan::bench::detail
         else
             why << "exit code " << WEXITSTATUS(outcome.status) << (outcome.error.empty() ? "" : ": ")
                 << outcome.error;
-        std::cerr << (::isatty(2) ? "\n" : "") << "mhplan bench: " << experiment << ": " << what << " run "
-                  << run << " crashed (" << why.str() << "); recorded as Crash\n";
+        // One write: experiment processes running at the same time share stderr, and a line written in
+        // pieces could be cut by another's.
+        std::ostringstream line;
+        line << (::isatty(2) ? "\n" : "") << "mhplan bench: " << experiment << ": " << what << " run " << run
+             << " crashed (" << why.str() << "); recorded as Crash\n";
+        const std::string text = line.str();
+        std::cerr.flush();
+        writeAll(2, text);
     }
 
     ompl::tools::Benchmark::RunProperties crashRun(double elapsed, std::size_t runIndex, std::uint32_t seed)

@@ -61,6 +61,11 @@ namespace mhplan::bench::detail
         edited world or scenario would otherwise carry the fingerprint of the original. */
     void checkInputUnchanged(const Experiment &e, const std::string &bytes, const std::string &file);
 
+    /** The CPU description of the logs (`lscpu`'s output, run once per process tree without a shell;
+        MachineInfo.cpp also answers OMPL's ompl::machine::getCPUInfo() with it). Call it before forking so
+        that the children inherit it. */
+    const std::string &machineCpuInfo();
+
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs);
 

@@ -290,6 +290,7 @@ namespace mhplan::bench
 
         if (options.run && !todo.empty())
         {
+            machineCpuInfo(); // once for every experiment and run process (MachineInfo.cpp)
             removeStaleTemporaryFiles(campaign, todo);
             const std::string host = currentHostName();
             std::vector<std::size_t> slotRuns(slots, 0);

@@ -294,3 +294,69 @@ TEST(CampaignIntegrity, DatabaseLinkModeAndHardLinksAreKeptAndBadDatabasesRefuse
     EXPECT_EQ(cut.code, 1) << cut.out;
     EXPECT_TRUE(has(cut.out, "is damaged")) << cut.out;
 }
+
+namespace
+{
+    /** `mhplan ARGS` (its stdout and stderr). */
+    Result runMhplan(const fs::path &dir, const std::vector<std::string> &args)
+    {
+        static int calls = 0;
+        const std::string output = (dir / ("cli" + std::to_string(++calls) + ".txt")).string();
+        return finish(spawn(args, output), output);
+    }
+
+    std::string lineOf(const std::string &text, const std::string &head)
+    {
+        const std::size_t at = text.find(head);
+        return at == std::string::npos ? "" : text.substr(at, text.find('\n', at) - at);
+    }
+} // namespace
+
+// Row 17: start == goal is one problem for every command: a benchmark run and `mhplan plan` with its seed
+// agree on the outcome (they did not: RRT* skips samples equal to their nearest tree state only when an
+// intermediate-solution callback is registered, which only the benchmark did).
+TEST(CampaignIntegrity, StartEqualToGoalIsOneProblemInBenchAndPlan)
+{
+    const fs::path dir = campaignDir("start_is_goal");
+    std::ofstream(dir / "w.yaml", std::ios::trunc)
+        << "name: w\nbounds: [0, 10, 0, 10]\nobstacles:\n  - circle: {center: [5, 5], radius: 1}\n"
+           "queries:\n  - {name: a, start: [2, 2], goal: [2, 2]}\n";
+    std::ofstream(dir / "c.yaml", std::ios::trunc)
+        << "campaign: sg\ntime_limit: 0.05\nruns: 2\nseed: 5\nplanner_data: false\nworlds: [w.yaml]\n"
+           "planners: [RRTstar]\n";
+    const std::string db = (dir / "f.db").string();
+    ASSERT_EQ(runBench(dir, db).code, 0);
+    const auto runs = test::Sql(db).rows("SELECT run_seed, status FROM runs ORDER BY run_index");
+    ASSERT_EQ(runs.size(), 2u);
+    const std::map<std::string, std::string> statusName{{"5", "Approximate solution"},
+                                                        {"6", "Exact solution"}};
+    for (const auto &run : runs)
+    {
+        const Result plan = runMhplan(dir, {"plan", (dir / "w.yaml").string(), "--planner", "RRTstar",
+                                            "--time", "0.05", "--seed", run[0]});
+        ASSERT_TRUE(statusName.count(run[1])) << run[1];
+        EXPECT_EQ(lineOf(plan.out, "status:"), "status:    " + statusName.at(run[1])) << plan.out;
+    }
+}
+
+// Row 22: a population planner that cannot reach the goal reports a collision-free approximate path (the
+// best valid prefix), as OMPL's planners do, never one through walls.
+TEST(CampaignIntegrity, ApproximateSolutionsOfPopulationPlannersAreCollisionFree)
+{
+    const fs::path dir = campaignDir("enclosed");
+    // The goal is walled in: no planner reaches it.
+    std::ofstream(dir / "e.yaml") << "name: enclosed\nbounds: [0, 10, 0, 10]\nobstacles:\n"
+                                     "  - polygon: {points: [[6, 6], [9, 6], [9, 6.5], [6, 6.5]]}\n"
+                                     "  - polygon: {points: [[6, 8.5], [9, 8.5], [9, 9], [6, 9]]}\n"
+                                     "  - polygon: {points: [[6, 6.4], [6.5, 6.4], [6.5, 8.6], [6, 8.6]]}\n"
+                                     "  - polygon: {points: [[8.5, 6.4], [9, 6.4], [9, 8.6], [8.5, 8.6]]}\n"
+                                     "queries:\n  - {name: q, start: [1, 1], goal: [7.5, 7.5]}\n";
+    for (const std::string planner : {"GA", "SMA", "MGO", "LRSMA"})
+    {
+        const Result plan = runMhplan(dir, {"plan", (dir / "e.yaml").string(), "--planner", planner, "--seed",
+                                            "3", "--set", "population_size=10", "--set", "max_iterations=5"});
+        EXPECT_EQ(lineOf(plan.out, "status:"), "status:    Approximate solution") << planner << "\n"
+                                                                                  << plan.out;
+        EXPECT_TRUE(has(lineOf(plan.out, "valid:"), "valid:     yes")) << planner << "\n" << plan.out;
+    }
+}
