@@ -7,6 +7,7 @@
 #include "mhplan/collision/Problem.h"
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/base/World.h"
+#include "mhplan/io/InputFile.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/io/YamlReader.h"
 
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -27,14 +29,9 @@ namespace mhplan::bench
 {
     namespace
     {
-        std::string readFile(const std::string &path)
+        std::string readFile(const std::string &path, const std::string &what)
         {
-            std::ifstream in(path, std::ios::binary);
-            if (!in)
-                throw InputError("cannot read '" + path + "'");
-            std::ostringstream ss;
-            ss << in.rdbuf();
-            return ss.str();
+            return readInputFile(path, kMaxYamlBytes, what);
         }
 
         /** Names that OMPL's log format and the database accept unchanged: no blanks, no ';' or ','. */
@@ -410,22 +407,32 @@ namespace mhplan::bench
 
     Campaign loadCampaign(const std::string &path, const PlannerRegistry &registry)
     {
-        if (!fs::is_regular_file(path))
-            throw InputError("campaign '" + path + "': no such file");
-        return parseCampaign(readFile(path), path, registry);
+        return parseCampaign(readFile(path, "campaign file"), path, registry);
     }
 
-    std::string fingerprint(const std::string &text)
+    void Fingerprint::add(const std::string &text)
     {
-        std::uint64_t h = 1469598103934665603ULL;
+        std::uint64_t h = h_;
         for (unsigned char ch : text)
         {
             h ^= ch;
             h *= 1099511628211ULL;
         }
+        h_ = h;
+    }
+
+    std::string Fingerprint::hex() const
+    {
         char buf[17];
-        std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h));
+        std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(h_));
         return buf;
+    }
+
+    std::string fingerprint(const std::string &text)
+    {
+        Fingerprint f;
+        f.add(text);
+        return f.hex();
     }
 
     std::uint32_t deriveSeed(std::uint32_t base, const std::string &label, std::uint64_t index)
@@ -512,9 +519,10 @@ namespace mhplan::bench
                 throw InputError(campaign.file + line + ": worlds[" + std::to_string(wi) + "]: " + e.what());
             }
             World world;
+            std::string worldText; // the bytes parsed: hashed once for all the world's queries
             try
             {
-                world = loadWorld(file);
+                world = loadWorld(file, &worldText);
             }
             catch (const InputError &e)
             {
@@ -522,17 +530,43 @@ namespace mhplan::bench
             }
             const CollisionModelPtr model =
                 makeCollisionModel(world, parseCollisionBackend(campaign.collision));
-            std::vector<std::string> queries = spec.queries;
-            if (queries.empty())
+            std::vector<const Query *> queries;
+            if (spec.queries.empty())
                 for (const auto &q : world.queries)
-                    queries.push_back(q.name);
+                    queries.push_back(&q);
+            else
+            {
+                std::map<std::string, const Query *> byName;
+                for (const auto &q : world.queries)
+                    byName.emplace(q.name, &q);
+                for (const auto &qname : spec.queries)
+                {
+                    const auto it = byName.find(qname);
+                    queries.push_back(it != byName.end() ? it->second : &world.query(qname)); // throws
+                }
+            }
             if (queries.empty())
                 throw InputError(campaign.file + ": world '" + world.name + "' (" + file +
                                  ") has no queries");
-            const std::string worldText = readFile(file);
-            for (const auto &qname : queries)
+            // Experiment names go into OMPL's logs, whose reader keeps only the last word of a name with
+            // blanks ("lab one" and "hall one" would both become "one"): such names are refused.
+            if (!plainName(world.name))
+                throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: world name '" +
+                                 world.name + "' (" + file +
+                                 ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
+            Fingerprint prefix;
+            prefix.add(common.str());
+            prefix.add("world ");
+            prefix.add(worldText);
+            const std::string inputHash = fingerprint(worldText);
+            for (const Query *qp : queries)
             {
-                const Query &q = world.query(qname);
+                const Query &q = *qp;
+                if (!plainName(q.name))
+                    throw InputError(
+                        campaign.file + ": worlds[" + std::to_string(wi) + "]: query name '" + q.name +
+                        "' of world '" + world.name + "' (" + file +
+                        ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
                 validateQuery(world, q, *model);
                 Experiment e;
                 e.index = out.size();
@@ -545,11 +579,14 @@ namespace mhplan::bench
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");
                 e.seed = deriveSeed(campaign.seed, e.name, 0);
-                std::ostringstream all;
-                all.precision(17);
-                all << common.str() << "world " << worldText << "\nquery " << q.name << " " << q.start.x
-                    << " " << q.start.y << " " << q.goal.x << " " << q.goal.y << "\n";
-                e.configHash = fingerprint(all.str());
+                std::ostringstream tail; // after the world's bytes (the same fingerprint as before)
+                tail.precision(17);
+                tail << "\nquery " << q.name << " " << q.start.x << " " << q.start.y << " " << q.goal.x << " "
+                     << q.goal.y << "\n";
+                Fingerprint all = prefix;
+                all.add(tail.str());
+                e.configHash = all.hex();
+                e.inputHash = inputHash;
                 out.push_back(std::move(e));
             }
         }
@@ -613,8 +650,10 @@ namespace mhplan::bench
                     all << " " << kv.first << "=" << kv.second;
                 all << "\n";
             }
-            all << "scenario " << readFile(file) << "\n";
+            const std::string scenarioText = readFile(file, "scenario file");
+            all << "scenario " << scenarioText << "\n";
             e.configHash = fingerprint(all.str());
+            e.inputHash = fingerprint(scenarioText);
             out.push_back(std::move(e));
         }
         return out;

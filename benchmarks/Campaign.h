@@ -194,6 +194,10 @@ namespace mhplan::bench
         /** \brief Fingerprint of everything that determines the experiment's results (world file contents,
             query, planners, limits, runs, seeds); a log with another fingerprint is re-run. */
         std::string configHash;
+        /** \brief fingerprint() of the world (planning) or scenario (simulation) file's bytes as they were
+            when the campaign was enumerated: the experiment process checks the bytes it loads against it,
+            and the merge checks the file again (a file edited while the campaign runs is never mixed in). */
+        std::string inputHash;
     };
 
     /** \brief The query of planning experiment \e e on its \e world: a MovingAI problem's start and goal,
@@ -225,10 +229,31 @@ namespace mhplan::bench
     /** \brief 64-bit FNV-1a hash of a string, as 16 hex digits. */
     std::string fingerprint(const std::string &text);
 
+    /** \brief The FNV-1a hash of fingerprint() fed piece by piece: a copy continues from where it was, so a
+        long common prefix (a world file) is hashed once for all the texts that start with it. */
+    class Fingerprint
+    {
+      public:
+        void add(const std::string &text);
+        /** \brief 16 hex digits, as fingerprint(all the text added). */
+        std::string hex() const;
+
+      private:
+        std::uint64_t h_{1469598103934665603ULL};
+    };
+
     /** \brief The experiments of shard \e part (1-based) of \e parts: those with index % parts == part - 1.
      */
     std::vector<Experiment> shardExperiments(const std::vector<Experiment> &all, unsigned int part,
                                              unsigned int parts);
+
+    /** \brief The name under which \e file (a log, a side file, a generated world, a script) is written
+        before it is renamed to its own name: "FILE.mhplan-tmp.HOST.PID" (the host as safeFileStem makes it).
+        The name says whose it is: a campaign removes only its own experiments' temporary files of dead
+        processes on this host, never another host's, never a file it did not make. */
+    std::string temporaryFile(const std::string &file);
+    /** \brief The part of temporaryFile(file) before the process id. */
+    std::string temporaryFilePrefix(const std::string &file);
 
     /** \brief A file-system-safe version of an experiment name. */
     std::string safeFileStem(const std::string &name);

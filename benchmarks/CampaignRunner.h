@@ -59,6 +59,8 @@ namespace mhplan::bench
         std::size_t runs{0};        ///< planner runs executed now
         std::size_t crashes{0};     ///< of which recorded as Crash
         std::size_t mergedLogs{0};  ///< logs appended to the database now
+        std::size_t missing{0};     ///< merging: experiments of the campaign without a complete log
+        std::size_t rejected{0};    ///< merging: logs not taken (side files or input files changed)
         double wallSeconds{0.0};    ///< whole call
         double workerSeconds{0.0};  ///< sum over experiments of their processes' wall time
         double solveSeconds{0.0};   ///< sum of the planners' solve times (OMPL's "time" of each run)
@@ -125,9 +127,12 @@ namespace mhplan::bench
         from another configuration, which is replaced) with ompl_benchmark_statistics, then add their
         solution paths to the table solution_paths(runid, idx, x, y). Planning experiments go to the
         campaign's database, simulation experiments to simulationDatabaseFile(campaign) (the same file for a
-        campaign of simulations only). Returns the number of logs merged. */
+        campaign of simulations only). A log is identified by its experiment and content fingerprint (not
+        its path), taken only with the side files it was written with and only while its world or scenario
+        file is unchanged; \e problems receives why a log was not taken. Returns the number of logs
+        merged. */
     std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
-                              const std::string &statisticsTool);
+                              const std::string &statisticsTool, std::vector<std::string> &problems);
 } // namespace mhplan::bench
 
 #endif

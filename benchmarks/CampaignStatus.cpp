@@ -145,4 +145,14 @@ namespace mhplan::bench
     {
         return hostName();
     }
+
+    std::string temporaryFilePrefix(const std::string &file)
+    {
+        return file + ".mhplan-tmp." + safeFileStem(hostName()) + ".";
+    }
+
+    std::string temporaryFile(const std::string &file)
+    {
+        return temporaryFilePrefix(file) + std::to_string(::getpid());
+    }
 } // namespace mhplan::bench

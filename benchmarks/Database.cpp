@@ -8,7 +8,9 @@
 
 #include "mhplan/bench/CampaignRunner.h"
 #include "mhplan/bench/ChildProcess.h"
+#include "mhplan/bench/ExperimentRuns.h"
 #include "mhplan/bench/Improvements.h"
+#include "mhplan/io/InputFile.h"
 
 #include <sqlite3.h>
 
@@ -255,11 +257,37 @@ namespace mhplan::bench
                 ::close(in);
             }
 
-            /** Flush the work file to disk and rename it over \e target. */
+            /** Flush the work file to disk and make it \e target: renamed over it, with the target's
+                permissions; a target with other hard links is updated in place instead (SQLite's backup
+                into it, atomic through the target's own journal), so that every link sees the new
+                database. */
             void commit(const std::string &target)
             {
                 if (::fsync(fd_) != 0)
                     throw std::runtime_error(errnoText("cannot write", name_));
+                struct stat st
+                {
+                };
+                if (::stat(target.c_str(), &st) == 0)
+                {
+                    if (st.st_nlink > 1)
+                    {
+                        Database to(target), from(name_);
+                        sqlite3_backup *b = sqlite3_backup_init(to.handle(), "main", from.handle(), "main");
+                        if (!b)
+                            throw std::runtime_error("cannot update the database '" + target +
+                                                     "': " + sqlite3_errmsg(to.handle()));
+                        const int rc = sqlite3_backup_step(b, -1);
+                        sqlite3_backup_finish(b);
+                        if (rc != SQLITE_DONE)
+                            throw std::runtime_error("cannot update the database '" + target +
+                                                     "': " + sqlite3_errstr(rc));
+                        return; // the work file is removed by the destructor
+                    }
+                    if (::fchmod(fd_, st.st_mode & 07777) != 0 ||
+                        (::fchown(fd_, st.st_uid, st.st_gid) != 0 && errno != EPERM))
+                        throw std::runtime_error(errnoText("cannot set the permissions of", name_));
+                }
                 if (::rename(name_.c_str(), target.c_str()) != 0)
                     throw std::runtime_error(errnoText("cannot replace the database", target));
                 committed_ = true;
@@ -272,17 +300,104 @@ namespace mhplan::bench
         };
     } // namespace
 
-    /** Append the complete logs of \e experiments to the database \e target (static: this file's own). */
-    static std::size_t mergeInto(const std::string &target, const Campaign &campaign,
+    void detail::checkDatabaseFile(const std::string &file)
+    {
+        std::error_code ec;
+        if (!fs::exists(fs::symlink_status(file, ec)) && !fs::is_symlink(file, ec))
+            return; // made by the merge
+        struct stat st
+        {
+        };
+        if (::stat(file.c_str(), &st) != 0 && errno == ENOENT)
+            return; // a link to a file the merge will create
+        if (::stat(file.c_str(), &st) != 0)
+            throw InputError("the database '" + file + "': " +
+                             (errno == ELOOP ? std::string("too many levels of symbolic links (a loop?)")
+                                             : std::string(std::strerror(errno))));
+        if (S_ISDIR(st.st_mode))
+            throw InputError("the database '" + file + "' is a directory");
+        if (!S_ISREG(st.st_mode))
+            throw InputError("the database '" + file + "' is not a regular file (a FIFO, a device)");
+        if (st.st_size == 0)
+            return; // an empty file is an empty SQLite database
+        char magic[16] = {};
+        {
+            std::ifstream in(file, std::ios::binary);
+            if (!in.read(magic, sizeof magic) || std::memcmp(magic, "SQLite format 3", 16) != 0)
+                throw InputError(
+                    "the database '" + file +
+                    "' is not an SQLite database (choose another --database, or move the file away)");
+        }
+        std::string verdict;
+        try
+        {
+            Database db(file);
+            Database::Statement st2(db, "PRAGMA quick_check");
+            if (st2.step())
+                verdict = st2.text(0);
+        }
+        catch (const std::runtime_error &e)
+        {
+            verdict = e.what();
+        }
+        if (verdict != "ok")
+            throw InputError("the database '" + file + "' is damaged (" + verdict +
+                             "); restore it or move it away before merging into it");
+    }
+
+    namespace
+    {
+        /** The value of experiment property \e name in the head of log text \e log ("" when absent). */
+        std::string logProperty(const std::string &log, const std::string &name)
+        {
+            const std::string key = "\n" + name + " TEXT = ";
+            const std::size_t at = log.find(key);
+            if (at == std::string::npos)
+                return "";
+            const std::size_t from = at + key.size();
+            return log.substr(from, log.find('\n', from) - from);
+        }
+
+        /** The bytes of \e file, or "" when it does not exist (an absent side file is an empty one). */
+        std::string readSideFile(const std::string &file)
+        {
+            std::error_code ec;
+            if (!fs::exists(file, ec))
+                return "";
+            return readInputFile(file, std::size_t{1} << 31, "side file");
+        }
+
+        /** The file the database name stands for: a symbolic link's target (the link is kept, the file it
+            points to is updated). */
+        std::string realDatabase(const std::string &target)
+        {
+            std::error_code ec;
+            if (!fs::is_symlink(target, ec))
+                return target;
+            const fs::path real = fs::weakly_canonical(target, ec);
+            return ec ? target : real.string();
+        }
+    } // namespace
+
+    /** Append the complete logs of \e experiments to the database \e target (static: this file's own). A log
+        is identified by its experiment (campaign and name) and its content fingerprint, not by where it
+        lies: the same log merged again from a moved or copied folder is recognised, a re-run replaces the
+        old rows. A log is taken only together with its side files (their fingerprints are in the log) and
+        only while the world or scenario file is still the one the campaign fingerprinted; \e problems
+        receives why a log was not taken. */
+    static std::size_t mergeInto(const std::string &databaseName, const Campaign &campaign,
                                  const std::vector<Experiment> &experiments,
-                                 const std::string &statisticsTool)
+                                 const std::string &statisticsTool, std::vector<std::string> &problems)
     {
         struct Pending
         {
             const Experiment *experiment;
-            std::string log;
-            std::string content;
+            std::string log;     // the log's bytes, checked
+            std::string content; // their fingerprint
+            std::string paths;   // the side files' bytes, checked against the log
+            std::string improvements;
         };
+        const std::string target = realDatabase(databaseName);
         const fs::path dbPath(target);
         if (dbPath.has_parent_path())
             fs::create_directories(dbPath.parent_path());
@@ -293,17 +408,56 @@ namespace mhplan::bench
         WorkFile work(target + ".merging");
         work.copyFrom(target);
 
+        // The input files as they are now (each read once), against the campaign's fingerprints.
+        std::map<std::string, std::string> inputNow;
+        const auto inputChanged = [&](const Experiment &e)
+        {
+            const std::string &file =
+                e.simulation == Experiment::kNoSimulation ? e.worldFile : e.scenarioFile;
+            if (e.inputHash.empty() || file.empty())
+                return false;
+            auto it = inputNow.find(file);
+            if (it == inputNow.end())
+            {
+                std::string hash = "(unreadable)";
+                try
+                {
+                    hash = fingerprint(readInputFile(file, kMaxGridFileBytes, "input file"));
+                }
+                catch (const InputError &)
+                {
+                }
+                it = inputNow.emplace(file, hash).first;
+            }
+            return it->second != e.inputHash;
+        };
+
         std::vector<Pending> pending;
         long long maxBefore = 0;
         {
             Database db(work.name());
             db.exec("CREATE TABLE IF NOT EXISTS mhplan_logs (file TEXT PRIMARY KEY, experiment TEXT, "
                     "experimentid INTEGER, log_fingerprint TEXT, merged DATETIME)");
-            std::map<std::string, std::pair<std::string, long long>> merged;
+            bool haveCampaign = false;
             {
-                Database::Statement st(db, "SELECT file, log_fingerprint, experimentid FROM mhplan_logs");
+                Database::Statement cols(db, "SELECT name FROM pragma_table_info('mhplan_logs')");
+                while (cols.step())
+                    haveCampaign = haveCampaign || cols.text(0) == "campaign";
+            }
+            if (!haveCampaign)
+                db.exec("ALTER TABLE mhplan_logs ADD COLUMN campaign TEXT");
+            // Merged before: experiment -> (campaign or "" for rows of older versions, fingerprint, id).
+            struct Merged
+            {
+                std::string campaign, content;
+                long long id;
+            };
+            std::multimap<std::string, Merged> merged;
+            {
+                Database::Statement st(db, "SELECT experiment, coalesce(campaign, ''), log_fingerprint, "
+                                           "experimentid FROM mhplan_logs");
                 while (st.step())
-                    merged[st.text(0)] = {st.text(1), st.integer(2)};
+                    merged.emplace(st.text(0), Merged{st.text(1), st.text(2), st.integer(3)});
             }
             const bool haveExperiments = db.hasTable("experiments");
             for (const auto &e : experiments)
@@ -311,22 +465,61 @@ namespace mhplan::bench
                 const std::string log = logFile(campaign, e);
                 if (!logIsComplete(log, e.configHash))
                     continue;
-                const std::string key = fs::absolute(log).lexically_normal().string();
-                const std::string content = fingerprint(readAll(log));
-                const auto it = merged.find(key);
-                if (it != merged.end() && it->second.first == content)
-                    continue;
-                if (it != merged.end() && haveExperiments)
+                if (inputChanged(e))
                 {
-                    // The experiment was re-run with another configuration: replace its old rows.
-                    Database::Statement del(db, "DELETE FROM experiments WHERE id = ?");
-                    del.bind(1, it->second.second);
-                    del.step();
-                    Database::Statement del2(db, "DELETE FROM mhplan_logs WHERE file = ?");
-                    del2.bind(1, key);
-                    del2.step();
+                    problems.push_back(
+                        "experiment " + e.name + ": '" +
+                        (e.simulation == Experiment::kNoSimulation ? e.worldFile : e.scenarioFile) +
+                        "' changed since the campaign started; its log is not merged (re-run "
+                        "the campaign)");
+                    continue;
                 }
-                pending.push_back({&e, log, content});
+                Pending p{&e, readSideFile(log), "", "", ""};
+                p.content = fingerprint(p.log);
+                bool same = false;
+                std::vector<long long> replaced;
+                const auto range = merged.equal_range(e.name);
+                for (auto it = range.first; it != range.second; ++it)
+                    if (it->second.campaign.empty() || it->second.campaign == campaign.name)
+                    {
+                        if (it->second.content == p.content)
+                            same = true;
+                        else
+                            replaced.push_back(it->second.id);
+                    }
+                if (same)
+                    continue;
+                // The side files, taken with the log or not at all.
+                p.paths = readSideFile(pathsFile(campaign, e));
+                p.improvements = readSideFile(improvementsFile(campaign, e));
+                const std::string expected = logProperty(p.log, detail::kSidecarsProperty);
+                const std::string found = fingerprint(p.paths) + "/" + fingerprint(p.improvements);
+                if (!expected.empty() && expected != found)
+                {
+                    // Truncated or edited: this log cannot be trusted with them. Set it aside so that the
+                    // next run of the campaign runs the experiment again.
+                    const std::string aside = log + ".rejected";
+                    std::error_code ec;
+                    fs::rename(log, aside, ec);
+                    problems.push_back("experiment " + e.name + ": its side files (" +
+                                       pathsFile(campaign, e) + ", " + improvementsFile(campaign, e) +
+                                       ") are not those its log was written with (truncated or edited); "
+                                       "the log is set aside as " +
+                                       aside + " and the experiment runs again with the next 'mhplan bench'");
+                    continue;
+                }
+                if (haveExperiments)
+                    for (long long id : replaced)
+                    {
+                        // The experiment was re-run (another configuration, or again): replace its old rows.
+                        Database::Statement del(db, "DELETE FROM experiments WHERE id = ?");
+                        del.bind(1, id);
+                        del.step();
+                        Database::Statement del2(db, "DELETE FROM mhplan_logs WHERE experimentid = ?");
+                        del2.bind(1, id);
+                        del2.step();
+                    }
+                pending.push_back(std::move(p));
             }
             if (haveExperiments)
             {
@@ -343,11 +536,25 @@ namespace mhplan::bench
             return 0;
         }
 
+        // ompl_benchmark_statistics reads exactly the bytes that were checked: private copies of the logs.
+        const fs::path copies = work.name() + ".logs";
+        std::error_code ec;
+        fs::remove_all(copies, ec);
+        fs::create_directories(copies);
         std::vector<std::string> argv{statisticsTool, "-a", "-d", work.name()};
-        for (const auto &p : pending)
-            argv.push_back(p.log);
+        for (std::size_t i = 0; i < pending.size(); ++i)
+        {
+            const std::string copy = (copies / (std::to_string(i) + ".log")).string();
+            std::ofstream out(copy, std::ios::binary | std::ios::trunc);
+            out << pending[i].log;
+            out.close();
+            if (!out)
+                throw std::runtime_error(errnoText("cannot write", copy));
+            argv.push_back(copy);
+        }
         const std::string output = target + ".merge-output.txt";
         const int rc = runProgram(argv, output);
+        fs::remove_all(copies, ec);
         if (rc != 0)
             throw std::runtime_error(statisticsTool + " failed with exit code " + std::to_string(rc) + ":\n" +
                                      readAll(output));
@@ -370,7 +577,8 @@ namespace mhplan::bench
                     "database '" + target + "': expected " + std::to_string(pending.size()) +
                     " new experiments after the merge, found " + std::to_string(ids.size()));
             Database::Statement record(
-                db, "INSERT OR REPLACE INTO mhplan_logs VALUES (?, ?, ?, ?, datetime('now'))");
+                db, "INSERT OR REPLACE INTO mhplan_logs (file, experiment, experimentid, log_fingerprint, "
+                    "merged, campaign) VALUES (?, ?, ?, ?, datetime('now'), ?)");
             Database::Statement findRun(
                 db, "SELECT runs.id FROM runs JOIN plannerConfigs ON runs.plannerid = "
                     "plannerConfigs.id WHERE runs.experimentid = ? AND plannerConfigs.name = ? "
@@ -379,13 +587,15 @@ namespace mhplan::bench
             for (std::size_t i = 0; i < pending.size(); ++i)
             {
                 const Experiment &e = *pending[i].experiment;
-                record.bind(1, fs::absolute(pending[i].log).lexically_normal().string());
+                // Where the log was when it was merged (for people; the identity is experiment + content).
+                record.bind(1, fs::absolute(logFile(campaign, e)).lexically_normal().string());
                 record.bind(2, e.name);
                 record.bind(3, ids[i]);
                 record.bind(4, pending[i].content);
+                record.bind(5, campaign.name);
                 record.step();
                 record.reset();
-                std::ifstream in(pathsFile(campaign, e));
+                std::istringstream in(pending[i].paths);
                 std::string line;
                 while (std::getline(in, line))
                 {
@@ -407,7 +617,8 @@ namespace mhplan::bench
                     insertPath.step();
                     insertPath.reset();
                 }
-                insertImprovements(db.handle(), ids[i], improvementsFile(campaign, e));
+                std::istringstream improvements(pending[i].improvements);
+                insertImprovements(db.handle(), ids[i], improvements);
             }
             db.exec("COMMIT");
         }
@@ -416,15 +627,15 @@ namespace mhplan::bench
     }
 
     std::size_t mergeDatabase(const Campaign &campaign, const std::vector<Experiment> &experiments,
-                              const std::string &statisticsTool)
+                              const std::string &statisticsTool, std::vector<std::string> &problems)
     {
         const std::string simulations = simulationDatabaseFile(campaign);
         if (simulations == campaign.database)
-            return mergeInto(campaign.database, campaign, experiments, statisticsTool);
+            return mergeInto(campaign.database, campaign, experiments, statisticsTool, problems);
         std::vector<Experiment> planning, moving;
         for (const Experiment &e : experiments)
             (e.simulation == Experiment::kNoSimulation ? planning : moving).push_back(e);
-        return mergeInto(campaign.database, campaign, planning, statisticsTool) +
-               mergeInto(simulations, campaign, moving, statisticsTool);
+        return mergeInto(campaign.database, campaign, planning, statisticsTool, problems) +
+               mergeInto(simulations, campaign, moving, statisticsTool, problems);
     }
 } // namespace mhplan::bench

@@ -10,6 +10,11 @@ struct sqlite3_stmt;
 
 namespace mhplan::bench::detail
 {
+    /** Refuse (InputError naming the file) a campaign database that exists but that no merge could use:
+        not a regular file, not an SQLite database, or damaged (SQLite's quick_check; e.g. truncated). An
+        absent file is fine (the merge creates it). Checked before any run. */
+    void checkDatabaseFile(const std::string &file);
+
     /** An open SQLite database (foreign keys on, a 10 s busy timeout). Errors throw std::runtime_error. */
     class Database
     {

@@ -37,6 +37,15 @@ namespace mhplan::bench::detail
         return buf;
     }
 
+    void checkInputUnchanged(const Experiment &e, const std::string &bytes, const std::string &file)
+    {
+        if (!e.inputHash.empty() && fingerprint(bytes) != e.inputHash)
+            throw std::runtime_error(
+                "'" + file + "' changed after the campaign started (fingerprint " + fingerprint(bytes) +
+                ", expected " + e.inputHash +
+                "); not run, so that no log mixes two versions of it: re-run the campaign");
+    }
+
     void reportRun(int progressFd, std::size_t experiment, bool crashed, std::size_t slot, double seconds)
     {
         std::ostringstream msg;
@@ -57,8 +66,14 @@ namespace mhplan::bench::detail
         else
             why << "exit code " << WEXITSTATUS(outcome.status) << (outcome.error.empty() ? "" : ": ")
                 << outcome.error;
-        std::cerr << (::isatty(2) ? "\n" : "") << "mhplan bench: " << experiment << ": " << what << " run "
-                  << run << " crashed (" << why.str() << "); recorded as Crash\n";
+        // One write: experiment processes running at the same time share stderr, and a line written in
+        // pieces could be cut by another's.
+        std::ostringstream line;
+        line << (::isatty(2) ? "\n" : "") << "mhplan bench: " << experiment << ": " << what << " run " << run
+             << " crashed (" << why.str() << "); recorded as Crash\n";
+        const std::string text = line.str();
+        std::cerr.flush();
+        writeAll(2, text);
     }
 
     ompl::tools::Benchmark::RunProperties crashRun(double elapsed, std::size_t runIndex, std::uint32_t seed)
@@ -72,9 +87,11 @@ namespace mhplan::bench::detail
         return crash;
     }
 
-    void writeExperimentFiles(const Campaign &c, const Experiment &e, const AssembledBenchmark &bench,
+    void writeExperimentFiles(const Campaign &c, const Experiment &e, AssembledBenchmark &bench,
                               const std::string &paths, const std::string &improvements)
     {
+        bench.experiment().parameters[std::string(kSidecarsProperty) + " TEXT"] =
+            fingerprint(paths) + "/" + fingerprint(improvements);
         std::ostringstream log;
         bench.saveResultsToStream(log);
         std::string text = log.str();
@@ -88,7 +105,7 @@ namespace mhplan::bench::detail
         fs::create_directories(c.logDir);
         const auto atomicWrite = [](const std::string &file, const std::string &content)
         {
-            const std::string tmp = file + ".tmp" + std::to_string(::getpid());
+            const std::string tmp = temporaryFile(file);
             {
                 std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
                 out << content;

@@ -56,6 +56,16 @@ namespace mhplan::bench::detail
         double metricStep{1e-3};
     };
 
+    /** Throw (the experiment fails, no log is written) when the \e bytes an experiment process loaded from
+        \e file are not those the campaign fingerprinted when it started (Experiment::inputHash): runs on an
+        edited world or scenario would otherwise carry the fingerprint of the original. */
+    void checkInputUnchanged(const Experiment &e, const std::string &bytes, const std::string &file);
+
+    /** The CPU description of the logs (`lscpu`'s output, run once per process tree without a shell;
+        MachineInfo.cpp also answers OMPL's ompl::machine::getCPUInfo() with it). Call it before forking so
+        that the children inherit it. */
+    const std::string &machineCpuInfo();
+
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs);
 
@@ -106,9 +116,15 @@ namespace mhplan::bench::detail
 
     /** Write an experiment's path sidecar (and its improvements sidecar when given) and then its log with
         OMPL's writer and the real version line. Every file is written under a temporary name and renamed
-        when complete, the log last: a log on disk means a finished experiment. */
-    void writeExperimentFiles(const Campaign &c, const Experiment &e, const AssembledBenchmark &bench,
+        when complete, the log last: a log on disk means a finished experiment. The log records the side
+        files' fingerprints (experiment property kSidecarsProperty), so that the merge takes a log and its
+        side files together or not at all. */
+    void writeExperimentFiles(const Campaign &c, const Experiment &e, AssembledBenchmark &bench,
                               const std::string &paths, const std::string &improvements = "");
+
+    /** The experiment property of the side files' fingerprints: "PATHS/IMPROVEMENTS", fingerprint() of
+        each file's bytes (an absent improvements file counts as empty). */
+    constexpr const char *kSidecarsProperty = "sidecars";
 
     /** Check every planner and parameter in a throw-away process (so that the campaign process never
         allocates a random number generator before the run processes set their seeds). */

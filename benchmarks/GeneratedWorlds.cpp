@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/GeneratedWorlds.h"
 
+#include "mhplan/bench/Campaign.h"
+
 #include "mhplan/io/WorldIO.h"
 
 #include <filesystem>
@@ -116,7 +118,7 @@ namespace mhplan::bench
         world.name = named.name;
         addRandomQueries(world, spec.queries);
         fs::create_directories(directory);
-        const std::string tmp = file.string() + ".tmp" + std::to_string(::getpid());
+        const std::string tmp = temporaryFile(file.string());
         {
             std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
             out << head << "\n" << worldToYaml(world);

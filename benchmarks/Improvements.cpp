@@ -189,13 +189,21 @@ namespace mhplan::bench
 
     std::size_t insertImprovements(sqlite3 *db, long long experimentId, const std::string &file)
     {
+        std::ifstream in(file);
+        if (!in)
+        {
+            std::istringstream none;
+            return insertImprovements(db, experimentId, none);
+        }
+        return insertImprovements(db, experimentId, in);
+    }
+
+    std::size_t insertImprovements(sqlite3 *db, long long experimentId, std::istream &in)
+    {
         execSql(db,
                 "CREATE TABLE IF NOT EXISTS improvements (runid INTEGER, time REAL, cost REAL, source TEXT, "
                 "FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE)");
         execSql(db, "CREATE INDEX IF NOT EXISTS improvements_runid ON improvements (runid)");
-        std::ifstream in(file);
-        if (!in)
-            return 0;
         Stmt findRun(db, "SELECT runs.id FROM runs JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id "
                          "WHERE runs.experimentid = ? AND plannerConfigs.name = ? AND runs.run_index = ?");
         Stmt remove(db, "DELETE FROM improvements WHERE runid = ?");

@@ -30,6 +30,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <iosfwd>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -109,6 +110,8 @@ namespace mhplan::bench
         \e file (a side file; missing: nothing) for experiment \e experimentId, matching runs by planner
         name and run index. Returns the number of rows inserted. */
     std::size_t insertImprovements(sqlite3 *db, long long experimentId, const std::string &file);
+    /** \brief As above, from the side file's text \e in (the bytes the merge has checked). */
+    std::size_t insertImprovements(sqlite3 *db, long long experimentId, std::istream &in);
 } // namespace mhplan::bench
 
 #endif

@@ -47,12 +47,13 @@ namespace mhplan::bench::detail
             campaign.file + ":" + std::to_string(spec.line) + ": worlds[" + std::to_string(index) + "]: ";
         std::string mapFile, scenFile;
         World world;
+        std::string mapText; // the bytes parsed: hashed once for all the selected problems
         std::vector<ScenProblem> problems;
         try
         {
             mapFile = locate(spec.world);
             scenFile = locate(spec.scen);
-            world = loadWorld(mapFile);
+            world = loadWorld(mapFile, &mapText);
             if (!world.isGrid())
                 throw InputError(mapFile + ": not a grid map (expected a MovingAI .map)");
             problems = loadMovingAIScen(scenFile, *world.grid);
@@ -71,9 +72,11 @@ namespace mhplan::bench::detail
                              "problems_per_bucket)");
         const OccupancyGrid &grid = *world.grid;
         const CollisionModelPtr model = makeCollisionModel(world, parseCollisionBackend(campaign.collision));
-        std::ifstream in(mapFile, std::ios::binary);
-        std::ostringstream mapText;
-        mapText << in.rdbuf();
+        Fingerprint prefix;
+        prefix.add(common);
+        prefix.add("map ");
+        prefix.add(mapText);
+        const std::string inputHash = fingerprint(mapText);
         for (const ScenProblem &p : selected)
         {
             Query q;
@@ -122,11 +125,14 @@ namespace mhplan::bench::detail
                 throw InputError(where + "experiment '" + e.name +
                                  "' appears twice (the same map and .scen problem listed twice)");
             e.seed = deriveSeed(campaign.seed, e.name, 0);
-            std::ostringstream all;
-            all.precision(17);
-            all << common << "map " << mapText.str() << "\nscen " << q.name << " " << q.start.x << " "
-                << q.start.y << " " << q.goal.x << " " << q.goal.y << " " << p.optimal << "\n";
-            e.configHash = fingerprint(all.str());
+            std::ostringstream tail;
+            tail.precision(17);
+            tail << "\nscen " << q.name << " " << q.start.x << " " << q.start.y << " " << q.goal.x << " "
+                 << q.goal.y << " " << p.optimal << "\n";
+            Fingerprint all = prefix;
+            all.add(tail.str());
+            e.configHash = all.hex();
+            e.inputHash = inputHash;
             out.push_back(std::move(e));
         }
     }

@@ -84,160 +84,175 @@ namespace mhplan::bench::detail
             std::string cpuInfo;
         };
 
-        /** Child process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send the
-           run's properties, path and progress to \e fd. One process per run: the seed applies to exactly this
-           run, OMPL's memory figure is this run's, a crash takes nothing else with it, and no planner is ever
-            cleared or destroyed (the process just ends). Never returns. */
-        [[noreturn]] void runPlannerChild(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
-                                          std::uint32_t seed, int fd)
+        /** One run of an experiment's sequence: planner \e planner, its run \e runIndex, its seed. */
+        struct RunSlot
         {
-            finishRunChild(
-                fd,
-                [&]()
-                {
-                    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                    // The seed before any random number generator of the run exists (ChildProcess.h).
-                    seedRunProcess(seed);
-                    const Campaign &c = *xs.campaign;
-                    // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
-                    // generator (its path simplifier's).
-                    const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
-                    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-                    ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
-                    inner->setName(spec.displayName);
-                    auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
-                    // CPU time of every run; with time_limit_kind: cpu also its limit.
-                    planner->setCpuClock(processCpuSeconds, c.cpuTimeLimit ? c.timeLimit : 0.0);
-                    ss->setPlanner(planner);
-                    ImprovementRecorder improvements;
-                    planner->setRecorder(&improvements);
+            std::size_t planner;
+            std::size_t runIndex;
+            std::uint32_t seed;
+        };
 
-                    ot::Benchmark benchmark(*ss, xs.experiment->name);
-                    benchmark.addPlanner(planner);
-                    CerrCapture capture;
-                    // OMPL's collector samples the progress properties from the start of solve() at a fixed
-                    // interval but not at its end: the post-run event adds that last sample.
-                    std::map<std::string, std::string> finalSample;
-                    benchmark.setPreRunEvent(
-                        [&](const ob::PlannerPtr &p)
-                        {
-                            const auto &data = benchmark.getRecordedExperimentData();
-                            std::map<std::string, std::string> common;
-                            p->params().getParams(common);
-                            p->getSpaceInformation()->params().getParams(common);
-                            std::ostringstream props;
-                            p->printProperties(props);
-                            std::string names = "time REAL";
-                            for (const auto &kv : p->getPlannerProgressProperties())
-                                names += std::string(1, kGroupSep) + kv.first;
-                            const auto &fns = inner->getPlannerProgressProperties();
-                            const auto best = fns.find("best cost REAL");
-                            improvements.attach(p->getProblemDefinition(),
-                                                best == fns.end() ? nullptr : best->second,
-                                                kImprovementPollInterval);
-                            sendMessage(fd, 'C', 0, encodeMap(common));
-                            sendMessage(fd, 'S', 0,
-                                        encodeMap({{"host", data.host},
-                                                   {"cpu", data.cpuInfo},
-                                                   {"properties", props.str()},
-                                                   {"progress", names}}));
-                        });
-                    benchmark.setPostRunEvent(
-                        [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
-                        {
-                            const std::string crash =
-                                std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
-                            // OMPL's benchmark catches a std::runtime_error thrown by solve() and only
-                            // reports it on std::cerr: that is a crash too.
-                            if (capture.take().find("error executing planner") != std::string::npos)
-                            {
-                                run["status ENUM"] = crash;
-                                run["solved BOOLEAN"] = "0";
-                            }
-                            if (!c.plannerData)
-                            {
-                                run.erase("graph states INTEGER");
-                                run.erase("graph motions INTEGER");
-                            }
-                            run["run index INTEGER"] = std::to_string(runIndex);
-                            run["run seed INTEGER"] = std::to_string(seed);
-                            run["cpu time REAL"] = num(planner->cpuSeconds());
-                            run["exact optimum length REAL"] = num(xs.optimum);
-                            if (!p->getPlannerProgressProperties().empty())
-                            {
-                                finalSample["time REAL"] = run["time REAL"];
-                                for (const auto &kv : p->getPlannerProgressProperties())
-                                    finalSample[kv.first] = kv.second();
-                            }
-                            for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
-                            {
-                                const auto &fns = p->getPlannerProgressProperties();
-                                const auto it = fns.find(name);
-                                if (it != fns.end() && run.count(name) == 0)
-                                    run[name] = it->second();
-                            }
-                            std::string path;
-                            const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
-                            if (pdef->hasSolution() && run["status ENUM"] != crash)
-                            {
-                                const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
-                                if (xs.world.isRigid())
-                                {
-                                    std::vector<Vec2> drawn;
-                                    rigidRunProperties(xs, *si, *geo, run, drawn);
-                                    if (pdef->hasExactSolution())
-                                        run["optimality gap REAL"] = num(std::nan(""));
-                                    path = encodePath(drawn);
-                                }
-                                else
-                                {
-                                    const std::vector<Vec2> pts = pathPoints(*geo);
-                                    const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
-                                    run["path length REAL"] = num(m.length);
-                                    run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
-                                    run["min clearance REAL"] = num(m.minClearance);
-                                    run["mean clearance REAL"] = num(m.meanClearance);
-                                    run["smoothness REAL"] = num(m.smoothness);
-                                    run["max curvature REAL"] = num(m.maxCurvature);
-                                    run["angle over length REAL"] = num(m.angleOverLength);
-                                    run["cusps INTEGER"] = std::to_string(m.cusps);
-                                    if (pdef->hasExactSolution())
-                                        run["optimality gap REAL"] =
-                                            num(optimalityGapPercent(m.length, xs.optimum));
-                                    path = encodePath(pts);
-                                }
-                            }
-                            const std::vector<Improvement> better = run["status ENUM"] == crash
-                                                                        ? std::vector<Improvement>{}
-                                                                        : improvements.finish(*pdef);
-                            run["improvements INTEGER"] = std::to_string(better.size());
-                            std::map<std::string, std::string> payload = run;
-                            payload["\x01path"] = path;
-                            payload["\x01improvements"] = encodeImprovements(better);
-                            sendMessage(fd, 'R', runIndex, encodeMap(payload));
-                        });
-                    const ot::Benchmark::Request req(runWallBound(c), c.memoryLimit, 1, c.progressInterval,
-                                                     false, false, false);
-                    benchmark.benchmark(req);
-                    const auto &pd = benchmark.getRecordedExperimentData().planners;
-                    if (!pd.empty() && !pd[0].runsProgressData.empty())
-                    {
-                        std::string payload;
-                        double lastTime = -1.0;
-                        for (const auto &sample : pd[0].runsProgressData.back())
-                        {
-                            payload += encodeMap(sample) + kGroupSep;
-                            const auto t = sample.find("time REAL");
-                            if (t != sample.end())
-                                lastTime = std::max(lastTime, std::atof(t->second.c_str()));
-                        }
-                        const auto t = finalSample.find("time REAL");
-                        if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
-                            payload += encodeMap(finalSample) + kGroupSep;
-                        sendMessage(fd, 'G', runIndex, payload);
-                    }
-                    sendMessage(fd, 'E', runIndex, "");
+        /** In the run process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send
+            the run's properties, path and progress to \e fd, every message with the run's position \e slot
+            in the experiment's sequence, the last one 'E'. Everything the run makes (the SimpleSetup, the
+            planner, the benchmark) is made after the run's seed is set and destroyed when it ends. */
+        void runPlannerOnce(ExperimentSetup &xs, const PlannerSpec &spec, std::size_t runIndex,
+                            std::uint32_t seed, std::size_t slot, int fd)
+        {
+            ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+            // The seed before any random number generator of the run exists (ChildProcess.h).
+            seedRunProcess(seed);
+            const Campaign &c = *xs.campaign;
+            // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
+            // generator (its path simplifier's).
+            const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+            const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+            ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
+            inner->setName(spec.displayName);
+            auto planner = std::make_shared<PlannerDataSwitch>(inner, c.plannerData, spec.progress);
+            // CPU time of every run; with time_limit_kind: cpu also its limit.
+            planner->setCpuClock(processCpuSeconds, c.cpuTimeLimit ? c.timeLimit : 0.0);
+            ss->setPlanner(planner);
+            ImprovementRecorder improvements;
+            planner->setRecorder(&improvements);
+
+            ot::Benchmark benchmark(*ss, xs.experiment->name);
+            benchmark.addPlanner(planner);
+            CerrCapture capture;
+            // OMPL's collector samples the progress properties from the start of solve() at a fixed
+            // interval but not at its end: the post-run event adds that last sample.
+            std::map<std::string, std::string> finalSample;
+            benchmark.setPreRunEvent(
+                [&](const ob::PlannerPtr &p)
+                {
+                    const auto &data = benchmark.getRecordedExperimentData();
+                    std::map<std::string, std::string> common;
+                    p->params().getParams(common);
+                    p->getSpaceInformation()->params().getParams(common);
+                    std::ostringstream props;
+                    p->printProperties(props);
+                    std::string names = "time REAL";
+                    for (const auto &kv : p->getPlannerProgressProperties())
+                        names += std::string(1, kGroupSep) + kv.first;
+                    const auto &fns = inner->getPlannerProgressProperties();
+                    const auto best = fns.find("best cost REAL");
+                    improvements.attach(p->getProblemDefinition(), best == fns.end() ? nullptr : best->second,
+                                        kImprovementPollInterval);
+                    sendMessage(fd, 'C', slot, encodeMap(common));
+                    sendMessage(fd, 'S', slot,
+                                encodeMap({{"host", data.host},
+                                           {"cpu", data.cpuInfo},
+                                           {"properties", props.str()},
+                                           {"progress", names}}));
                 });
+            benchmark.setPostRunEvent(
+                [&](const ob::PlannerPtr &p, ot::Benchmark::RunProperties &run)
+                {
+                    const std::string crash = std::to_string(static_cast<int>(ob::PlannerStatus::CRASH));
+                    // OMPL's benchmark catches a std::runtime_error thrown by solve() and only
+                    // reports it on std::cerr: that is a crash too.
+                    if (capture.take().find("error executing planner") != std::string::npos)
+                    {
+                        run["status ENUM"] = crash;
+                        run["solved BOOLEAN"] = "0";
+                    }
+                    if (!c.plannerData)
+                    {
+                        run.erase("graph states INTEGER");
+                        run.erase("graph motions INTEGER");
+                    }
+                    run["run index INTEGER"] = std::to_string(runIndex);
+                    run["run seed INTEGER"] = std::to_string(seed);
+                    run["cpu time REAL"] = num(planner->cpuSeconds());
+                    run["exact optimum length REAL"] = num(xs.optimum);
+                    if (!p->getPlannerProgressProperties().empty())
+                    {
+                        finalSample["time REAL"] = run["time REAL"];
+                        for (const auto &kv : p->getPlannerProgressProperties())
+                            finalSample[kv.first] = kv.second();
+                    }
+                    for (const char *name : {"iterations INTEGER", "fitness evaluations INTEGER"})
+                    {
+                        const auto &fns = p->getPlannerProgressProperties();
+                        const auto it = fns.find(name);
+                        if (it != fns.end() && run.count(name) == 0)
+                            run[name] = it->second();
+                    }
+                    std::string path;
+                    const ob::ProblemDefinitionPtr &pdef = p->getProblemDefinition();
+                    if (pdef->hasSolution() && run["status ENUM"] != crash)
+                    {
+                        const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
+                        if (xs.world.isRigid())
+                        {
+                            std::vector<Vec2> drawn;
+                            rigidRunProperties(xs, *si, *geo, run, drawn);
+                            if (pdef->hasExactSolution())
+                                run["optimality gap REAL"] = num(std::nan(""));
+                            path = encodePath(drawn);
+                        }
+                        else
+                        {
+                            const std::vector<Vec2> pts = pathPoints(*geo);
+                            const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
+                            run["path length REAL"] = num(m.length);
+                            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
+                            run["min clearance REAL"] = num(m.minClearance);
+                            run["mean clearance REAL"] = num(m.meanClearance);
+                            run["smoothness REAL"] = num(m.smoothness);
+                            run["max curvature REAL"] = num(m.maxCurvature);
+                            run["angle over length REAL"] = num(m.angleOverLength);
+                            run["cusps INTEGER"] = std::to_string(m.cusps);
+                            if (pdef->hasExactSolution())
+                                run["optimality gap REAL"] = num(optimalityGapPercent(m.length, xs.optimum));
+                            path = encodePath(pts);
+                        }
+                    }
+                    const std::vector<Improvement> better =
+                        run["status ENUM"] == crash ? std::vector<Improvement>{} : improvements.finish(*pdef);
+                    run["improvements INTEGER"] = std::to_string(better.size());
+                    std::map<std::string, std::string> payload = run;
+                    payload["\x01path"] = path;
+                    payload["\x01improvements"] = encodeImprovements(better);
+                    sendMessage(fd, 'R', slot, encodeMap(payload));
+                });
+            const ot::Benchmark::Request req(runWallBound(c), c.memoryLimit, 1, c.progressInterval, false,
+                                             false, false);
+            benchmark.benchmark(req);
+            const auto &pd = benchmark.getRecordedExperimentData().planners;
+            if (!pd.empty() && !pd[0].runsProgressData.empty())
+            {
+                std::string payload;
+                double lastTime = -1.0;
+                for (const auto &sample : pd[0].runsProgressData.back())
+                {
+                    payload += encodeMap(sample) + kGroupSep;
+                    const auto t = sample.find("time REAL");
+                    if (t != sample.end())
+                        lastTime = std::max(lastTime, std::atof(t->second.c_str()));
+                }
+                const auto t = finalSample.find("time REAL");
+                if (t != finalSample.end() && std::atof(t->second.c_str()) > lastTime)
+                    payload += encodeMap(finalSample) + kGroupSep;
+                sendMessage(fd, 'G', slot, payload);
+            }
+            sendMessage(fd, 'E', slot, "");
+        }
+
+        /** The run process of an experiment (docs: benchmarks/README.md, "How runs are executed"): runs
+            \e order[from], order[from + 1], ... one after the other, each from its own seed, and ends when
+           all are done. A run that crashes or hangs ends the process; the experiment process records that run
+            as Crash and starts a new run process for the runs after it. Never returns. */
+        [[noreturn]] void runServerChild(ExperimentSetup &xs, const std::vector<RunSlot> &order,
+                                         std::size_t from, int fd)
+        {
+            finishRunChild(fd,
+                           [&]()
+                           {
+                               for (std::size_t i = from; i < order.size(); ++i)
+                                   runPlannerOnce(xs, xs.campaign->planners[order[i].planner],
+                                                  order[i].runIndex, order[i].seed, i, fd);
+                           });
         }
     } // namespace
 
@@ -256,7 +271,10 @@ namespace mhplan::bench::detail
     {
         const Campaign &c = *xs.campaign;
         const Experiment &e = *xs.experiment;
-        xs.world = loadWorld(e.worldFile);
+        machineCpuInfo(); // once here, inherited by every run process
+        std::string bytes;
+        xs.world = loadWorld(e.worldFile, &bytes);
+        checkInputUnchanged(e, bytes, e.worldFile);
         xs.query = experimentQuery(xs.world, e); // a MovingAI problem: from its .scen line
         xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
         xs.metricStep = defaultMetricStep(xs.world);
@@ -294,6 +312,7 @@ namespace mhplan::bench::detail
         const int crashCode = static_cast<int>(ob::PlannerStatus::CRASH);
         const double watchdog = planningWatchdog(c);
 
+        std::vector<RunSlot> order; // every planner's runs, in campaign order
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {
             const PlannerSpec &spec = c.planners[pi];
@@ -304,64 +323,86 @@ namespace mhplan::bench::detail
             rec.paths.resize(runs);
             rec.improvements.resize(runs);
             rec.have.assign(runs, false);
-            for (std::size_t next = 0; next < runs; ++next)
-            {
-                const std::uint32_t seed = deriveSeed(e.seed, spec.displayName, next);
-                const ChildOutcome outcome = runChildProcess(
-                    watchdog, [&](int fd) { runPlannerChild(xs, spec, next, seed, fd); },
-                    [&](const Message &m, double runSeconds)
+            for (std::size_t k = 0; k < runs; ++k)
+                order.push_back({pi, k, deriveSeed(e.seed, spec.displayName, k)});
+        }
+        // One run process runs the runs in sequence; when it dies or hangs, the run in flight is a Crash and
+        // a new run process goes on with the next run.
+        std::size_t next = 0;
+        while (next < order.size())
+        {
+            std::size_t current = next; // the run in flight
+            double currentStart = 0.0;  // when it started, in seconds since the fork
+            const ChildOutcome outcome = runChildProcess(
+                watchdog, [&](int fd) { runServerChild(xs, order, next, fd); },
+                [&](const Message &m, double sinceFork)
+                {
+                    if (m.index >= order.size())
+                        return;
+                    const RunSlot &slot = order[m.index];
+                    PlannerRecord &rec = records[slot.planner];
+                    if (m.type == 'C')
+                        rec.common = decodeMap(m.payload);
+                    else if (m.type == 'S')
                     {
-                        if (m.type == 'C')
-                            rec.common = decodeMap(m.payload);
-                        else if (m.type == 'S')
-                        {
-                            const auto s = decodeMap(m.payload);
-                            info.host = s.at("host");
-                            info.cpuInfo = s.at("cpu");
-                            rec.properties = s.at("properties");
-                            rec.progressNames = splitOn(s.at("progress"), kGroupSep);
-                            std::sort(rec.progressNames.begin(), rec.progressNames.end());
-                            if (rec.progressNames.size() == 1) // only "time": no progress properties
-                                rec.progressNames.clear();
-                        }
-                        else if (m.type == 'R' && m.index < runs)
-                        {
-                            auto props = decodeMap(m.payload);
-                            rec.paths[m.index] = props["\x01path"];
-                            props.erase("\x01path");
-                            rec.improvements[m.index] = props["\x01improvements"];
-                            props.erase("\x01improvements");
-                            rec.runs[m.index] = props;
-                            rec.have[m.index] = true;
-                            const auto t = props.find("time REAL");
-                            if (t != props.end())
-                                times.wall += std::atof(t->second.c_str());
-                            const auto cpu = props.find("cpu time REAL");
-                            if (cpu != props.end())
-                                times.cpu += std::atof(cpu->second.c_str());
-                            reportRun(progressFd, e.index, props["status ENUM"] == std::to_string(crashCode),
-                                      pi, runSeconds);
-                        }
-                        else if (m.type == 'G' && m.index < runs)
-                        {
-                            ot::Benchmark::RunProgressData data;
-                            for (const auto &sample : splitOn(m.payload, kGroupSep))
-                                data.push_back(decodeMap(sample));
-                            rec.progress[m.index] = data;
-                        }
-                    },
-                    {progressFd});
-                const std::size_t k = next;
-                if (rec.have[k])
-                    continue;
-                ot::Benchmark::RunProperties crash = crashRun(outcome.elapsed, k, seed);
+                        const auto s = decodeMap(m.payload);
+                        info.host = s.at("host");
+                        info.cpuInfo = s.at("cpu");
+                        rec.properties = s.at("properties");
+                        rec.progressNames = splitOn(s.at("progress"), kGroupSep);
+                        std::sort(rec.progressNames.begin(), rec.progressNames.end());
+                        if (rec.progressNames.size() == 1) // only "time": no progress properties
+                            rec.progressNames.clear();
+                    }
+                    else if (m.type == 'R')
+                    {
+                        auto props = decodeMap(m.payload);
+                        rec.paths[slot.runIndex] = props["\x01path"];
+                        props.erase("\x01path");
+                        rec.improvements[slot.runIndex] = props["\x01improvements"];
+                        props.erase("\x01improvements");
+                        rec.runs[slot.runIndex] = props;
+                        rec.have[slot.runIndex] = true;
+                        const auto t = props.find("time REAL");
+                        if (t != props.end())
+                            times.wall += std::atof(t->second.c_str());
+                        const auto cpu = props.find("cpu time REAL");
+                        if (cpu != props.end())
+                            times.cpu += std::atof(cpu->second.c_str());
+                        reportRun(progressFd, e.index, props["status ENUM"] == std::to_string(crashCode),
+                                  slot.planner, sinceFork - currentStart);
+                    }
+                    else if (m.type == 'G')
+                    {
+                        ot::Benchmark::RunProgressData data;
+                        for (const auto &sample : splitOn(m.payload, kGroupSep))
+                            data.push_back(decodeMap(sample));
+                        rec.progress[slot.runIndex] = data;
+                    }
+                    else if (m.type == 'E')
+                    {
+                        current = m.index + 1;
+                        currentStart = sinceFork;
+                    }
+                },
+                {progressFd});
+            if (current >= order.size())
+                break;
+            // The run in flight ended its process without its record: a Crash.
+            const RunSlot &slot = order[current];
+            PlannerRecord &rec = records[slot.planner];
+            if (!rec.have[slot.runIndex])
+            {
+                ot::Benchmark::RunProperties crash = crashRun(outcome.elapsed, slot.runIndex, slot.seed);
                 crash["exact optimum length REAL"] = num(xs.optimum);
-                rec.runs[k] = crash;
-                rec.have[k] = true;
+                rec.runs[slot.runIndex] = crash;
+                rec.have[slot.runIndex] = true;
                 times.wall += outcome.elapsed;
-                reportRun(progressFd, e.index, true, pi, outcome.runSeconds);
-                reportCrash(e.name, "planner " + spec.displayName, k, outcome, watchdog);
+                reportRun(progressFd, e.index, true, slot.planner, outcome.runSeconds - currentStart);
+                reportCrash(e.name, "planner " + c.planners[slot.planner].displayName, slot.runIndex, outcome,
+                            watchdog);
             }
+            next = current + 1;
         }
 
         // Assemble the experiment with OMPL's own record and writer.

@@ -4,13 +4,18 @@
    run reports for the progress bar and the summary, and merges the logs into the database. */
 #include "mhplan/bench/CampaignRunner.h"
 
+#include "mhplan/bench/Database.h"
 #include "mhplan/bench/ExperimentRuns.h"
+#include "mhplan/bench/Improvements.h"
 #include "mhplan/bench/Progress.h"
+#include "mhplan/io/InputFile.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/sim/ScenarioIO.h"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,6 +30,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -73,23 +79,100 @@ namespace mhplan::bench
                 refuse(std::strerror(err ? err : EIO));
         }
 
-        /** Remove the temporary files ("<file>.tmp<PID>", see writeExperimentFiles) that experiment
-            processes which no longer exist left in \e dir when they were killed while writing. */
-        void removeStaleTemporaryFiles(const std::string &dir)
+        /** Remove the temporary files (temporaryFile(): "<file>.mhplan-tmp.<host>.<PID>") of \e experiments'
+            logs and side files that processes of this host which no longer exist left in the log directory
+            when they were killed while writing. Nothing else is touched: not another experiment's, not
+            another host's (its process ids mean nothing here), not a file mhplan did not name. */
+        void removeStaleTemporaryFiles(const Campaign &campaign, const std::vector<const Experiment *> &mine)
         {
+            std::set<std::string> prefixes;
+            for (const Experiment *e : mine)
+                for (const std::string &file :
+                     {logFile(campaign, *e), pathsFile(campaign, *e), improvementsFile(campaign, *e)})
+                    prefixes.insert(fs::path(temporaryFilePrefix(file)).filename().string());
             std::error_code ec;
-            for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+            for (fs::directory_iterator it(campaign.logDir, ec), end; !ec && it != end; it.increment(ec))
             {
                 const std::string name = it->path().filename().string();
-                const std::size_t at = name.rfind(".tmp");
-                if (at == std::string::npos || at + 4 == name.size() ||
-                    name.find_first_not_of("0123456789", at + 4) != std::string::npos)
+                const std::size_t dot = name.rfind('.');
+                if (dot == std::string::npos || dot + 1 == name.size() ||
+                    name.find_first_not_of("0123456789", dot + 1) != std::string::npos ||
+                    prefixes.count(name.substr(0, dot + 1)) == 0)
                     continue;
-                const long pid = std::atol(name.c_str() + at + 4);
+                const long pid = std::atol(name.c_str() + dot + 1);
                 if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
                     fs::remove(it->path(), ec);
             }
         }
+        /** The lock of a campaign's log directory held while a bench runs (flock; released when the process
+            ends, however it ends). A whole campaign (--shard 1/1) locks it exclusively, a shard shares it and
+            locks its own shard exclusively: two benches on one campaign never run the same experiment twice
+            at once; the second waits, saying so, and then finds the first one's logs complete. (flock does
+            not reach across the nodes of a cluster: there the shards of one array job are disjoint.) */
+        class CampaignLock
+        {
+          public:
+            CampaignLock(const Campaign &c, unsigned int shard, unsigned int shards, std::ostream *msg)
+            {
+                std::error_code ec;
+                fs::create_directories(c.logDir, ec);
+                const std::string whole = (fs::path(c.logDir) / ".mhplan-bench.lock").string();
+                const std::string part =
+                    (fs::path(c.logDir) / (".mhplan-bench-shard-" + std::to_string(shard) + "-of-" +
+                                           std::to_string(shards) + ".lock"))
+                        .string();
+                fds_[0] = take(whole, shards == 1 ? LOCK_EX : LOCK_SH, msg);
+                if (shards > 1)
+                    fds_[1] = take(part, LOCK_EX, msg);
+                // Who holds it, for the message of the next one.
+                const int own = fds_[shards > 1 ? 1 : 0];
+                if (own >= 0 && ::ftruncate(own, 0) == 0)
+                {
+                    const std::string who = currentHostName() + " " + std::to_string(::getpid()) + "\n";
+                    if (::pwrite(own, who.data(), who.size(), 0) < 0)
+                    {
+                    }
+                }
+            }
+            ~CampaignLock()
+            {
+                for (int fd : fds_)
+                    if (fd >= 0)
+                        ::close(fd);
+            }
+            CampaignLock(const CampaignLock &) = delete;
+            CampaignLock &operator=(const CampaignLock &) = delete;
+
+          private:
+            static int take(const std::string &file, int mode, std::ostream *msg)
+            {
+                const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+                if (fd < 0)
+                    return -1; // an unwritable log directory is refused later, with its reason
+                if (::flock(fd, mode | LOCK_NB) == 0)
+                    return fd;
+                std::string holder;
+                {
+                    std::ifstream in(file);
+                    std::string host;
+                    long pid = 0;
+                    if (in >> host >> pid)
+                        holder = " (process " + std::to_string(pid) + " on " + host + ")";
+                }
+                if (msg)
+                    *msg << "mhplan bench: another mhplan bench" << holder
+                         << " is running this campaign (lock " << file << "); waiting for it to finish"
+                         << std::endl;
+                while (::flock(fd, mode) != 0 && errno == EINTR)
+                {
+                }
+                if (msg)
+                    *msg << "mhplan bench: the other mhplan bench has finished; going on" << std::endl;
+                return fd;
+            }
+
+            int fds_[2]{-1, -1};
+        };
     } // namespace
 
     bool logIsComplete(const std::string &log, const std::string &configHash)
@@ -167,6 +250,11 @@ namespace mhplan::bench
                        : campaign.simulations[e.simulation].controllers.size() * e.runs;
         };
 
+        // Before deciding what to run: a bench running this campaign now is waited for.
+        std::unique_ptr<CampaignLock> lock;
+        if (options.run)
+            lock = std::make_unique<CampaignLock>(campaign, options.shardIndex, options.shardCount, msg);
+
         CampaignSummary summary;
         summary.experiments = mine.size();
         std::vector<const Experiment *> todo;
@@ -192,6 +280,7 @@ namespace mhplan::bench
                 checkWritableDirectory(db.parent_path(), "the database '" + file + "'");
                 if (fs::is_directory(db))
                     throw InputError("the database '" + file + "' is a directory");
+                checkDatabaseFile(file);
             }
         }
 
@@ -201,7 +290,8 @@ namespace mhplan::bench
 
         if (options.run && !todo.empty())
         {
-            removeStaleTemporaryFiles(campaign.logDir);
+            machineCpuInfo(); // once for every experiment and run process (MachineInfo.cpp)
+            removeStaleTemporaryFiles(campaign, todo);
             const std::string host = currentHostName();
             std::vector<std::size_t> slotRuns(slots, 0);
             for (const Experiment *e : todo)
@@ -260,7 +350,10 @@ namespace mhplan::bench
                                     xs.experiment = e;
                                     xs.spec = &campaign.simulations[e->simulation];
                                     xs.registry = &registry;
-                                    xs.scenario = loadScenario(e->scenarioFile);
+                                    const std::string bytes =
+                                        readInputFile(e->scenarioFile, kMaxYamlBytes, "scenario file");
+                                    checkInputUnchanged(*e, bytes, e->scenarioFile);
+                                    xs.scenario = parseScenarioYaml(bytes, e->scenarioFile);
                                     xs.slotBase = slotBase[e->simulation];
                                     code = runSimulationExperiment(xs, fd, solve);
                                 }
@@ -377,8 +470,31 @@ namespace mhplan::bench
             const Clock::time_point m0 = Clock::now();
             // Merge every complete log of the whole campaign (all shards), so that one final step after
             // sharded runs builds the database.
-            summary.mergedLogs = mergeDatabase(campaign, all, options.statisticsTool);
+            std::vector<std::string> problems;
+            summary.mergedLogs = mergeDatabase(campaign, all, options.statisticsTool, problems);
             summary.mergeSeconds = secondsSince(m0);
+            summary.rejected = problems.size();
+            summary.errors.insert(summary.errors.end(), problems.begin(), problems.end());
+            // The database is the whole campaign's: say which experiments it lacks (a shard not run, a
+            // failed experiment, a log set aside), so that a partial database is never taken for all.
+            std::vector<std::string> missing;
+            for (const auto &e : all)
+                if (!logIsComplete(logFile(campaign, e), e.configHash))
+                    missing.push_back(e.name);
+            summary.missing = missing.size();
+            if (!missing.empty())
+            {
+                std::string names;
+                for (std::size_t i = 0; i < missing.size() && i < 20; ++i)
+                    names += (i ? ", " : "") + missing[i];
+                if (missing.size() > 20)
+                    names +=
+                        ", ... (" + std::to_string(missing.size() - 20) + " more; mhplan bench --status)";
+                summary.errors.push_back(
+                    std::to_string(missing.size()) + " of " + std::to_string(all.size()) +
+                    " experiments have no complete log and are not in the database: " + names +
+                    " (run the campaign, or its missing shards, again)");
+            }
         }
         summary.wallSeconds = secondsSince(t0);
         return summary;

@@ -110,44 +110,65 @@ namespace mhplan::bench
                 return run;
             }
 
-            /** Run process of a simulation: controller \e spec on the scenario (starts perturbed by
-                \e startSeed), seeded with \e seed, properties sent to \e fd. Never returns. */
-            [[noreturn]] void runSimulationChild(const SimulationSetup &xs, const ControllerSpec &spec,
-                                                 std::size_t runIndex, std::uint32_t seed,
-                                                 std::uint32_t startSeed, int fd)
+            /** One run of a simulation experiment's sequence. */
+            struct SimulationSlot
             {
-                finishRunChild(
-                    fd,
-                    [&]()
-                    {
-                        ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-                        // As for planners: the seed before any random number generator exists in this
-                        // process (plan-then-follow controllers run OMPL planners).
-                        seedRunProcess(seed);
-                        Scenario scenario = xs.scenario;
-                        applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
-                        const ControllerPtr controller = makeController(spec.controller, *xs.registry);
-                        for (const auto &kv : spec.params)
-                            controller->setParameter(kv.first, kv.second);
-                        std::map<std::string, std::string> common;
-                        for (const auto &kv : controller->parameters())
-                            common[oneLine(kv.first)] = oneLine(kv.second);
-                        common["controller"] = spec.controller;
-                        sendMessage(fd, 'C', 0, encodeMap(common));
-                        Simulation sim(std::move(scenario), controller, seed);
-                        const Clock::time_point t0 = Clock::now();
-                        const double cpu0 = processCpuSeconds();
-                        const SimulationResult result = sim.run();
-                        const double cpu = processCpuSeconds() - cpu0;
-                        const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
-                        ot::Benchmark::RunProperties run = simulationProperties(result, wall);
-                        run["run index INTEGER"] = std::to_string(runIndex);
-                        run["run seed INTEGER"] = std::to_string(seed);
-                        run["start seed INTEGER"] = std::to_string(startSeed);
-                        run["cpu time REAL"] = num(cpu);
-                        sendMessage(fd, 'R', runIndex, encodeMap(run));
-                        sendMessage(fd, 'E', runIndex, "");
-                    });
+                std::size_t controller;
+                std::size_t runIndex;
+                std::uint32_t seed;
+                std::uint32_t startSeed;
+            };
+
+            /** In the run process: controller \e spec on the scenario (starts perturbed by \e startSeed),
+                seeded with \e seed, properties sent to \e fd with the run's position \e slot, the last
+                message 'E'. */
+            void runSimulationOnce(const SimulationSetup &xs, const ControllerSpec &spec,
+                                   std::size_t runIndex, std::uint32_t seed, std::uint32_t startSeed,
+                                   std::size_t slot, int fd)
+            {
+                ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+                // As for planners: the seed before any random number generator exists in this
+                // process (plan-then-follow controllers run OMPL planners).
+                seedRunProcess(seed);
+                Scenario scenario = xs.scenario;
+                applyStartJitter(scenario, xs.spec->startJitter, xs.spec->headingJitter, startSeed);
+                const ControllerPtr controller = makeController(spec.controller, *xs.registry);
+                for (const auto &kv : spec.params)
+                    controller->setParameter(kv.first, kv.second);
+                std::map<std::string, std::string> common;
+                for (const auto &kv : controller->parameters())
+                    common[oneLine(kv.first)] = oneLine(kv.second);
+                common["controller"] = spec.controller;
+                sendMessage(fd, 'C', slot, encodeMap(common));
+                Simulation sim(std::move(scenario), controller, seed);
+                const Clock::time_point t0 = Clock::now();
+                const double cpu0 = processCpuSeconds();
+                const SimulationResult result = sim.run();
+                const double cpu = processCpuSeconds() - cpu0;
+                const double wall = result.wallTime > 0.0 ? result.wallTime : secondsSince(t0);
+                ot::Benchmark::RunProperties run = simulationProperties(result, wall);
+                run["run index INTEGER"] = std::to_string(runIndex);
+                run["run seed INTEGER"] = std::to_string(seed);
+                run["start seed INTEGER"] = std::to_string(startSeed);
+                run["cpu time REAL"] = num(cpu);
+                sendMessage(fd, 'R', slot, encodeMap(run));
+                sendMessage(fd, 'E', slot, "");
+            }
+
+            /** The run process of a simulation experiment: runs \e order[from], ... in sequence (as the
+                planning experiments' run processes do, PlanningRun.cpp). Never returns. */
+            [[noreturn]] void runSimulationServer(const SimulationSetup &xs,
+                                                  const std::vector<SimulationSlot> &order, std::size_t from,
+                                                  int fd)
+            {
+                finishRunChild(fd,
+                               [&]()
+                               {
+                                   for (std::size_t i = from; i < order.size(); ++i)
+                                       runSimulationOnce(xs, xs.spec->controllers[order[i].controller],
+                                                         order[i].runIndex, order[i].seed, order[i].startSeed,
+                                                         i, fd);
+                               });
             }
         } // namespace
 
@@ -161,43 +182,67 @@ namespace mhplan::bench
             const double watchdog = spec.wallLimit;
             times = SolveTimes{};
             std::vector<PlannerRecord> records(spec.controllers.size());
+            std::vector<SimulationSlot> order;
             for (std::size_t ci = 0; ci < spec.controllers.size(); ++ci)
             {
                 const ControllerSpec &ctl = spec.controllers[ci];
-                PlannerRecord &rec = records[ci];
-                rec.runs.resize(e.runs);
-                rec.have.assign(e.runs, false);
+                records[ci].runs.resize(e.runs);
+                records[ci].have.assign(e.runs, false);
                 for (std::size_t k = 0; k < e.runs; ++k)
-                {
-                    const std::uint32_t seed = simulationRunSeed(e, ctl.displayName, k);
-                    const std::uint32_t startSeed = simulationStartSeed(e, k);
-                    const ChildOutcome outcome = runChildProcess(
-                        watchdog, [&](int fd) { runSimulationChild(xs, ctl, k, seed, startSeed, fd); },
-                        [&](const Message &m, double runSeconds)
+                    order.push_back(
+                        {ci, k, simulationRunSeed(e, ctl.displayName, k), simulationStartSeed(e, k)});
+            }
+            // One run process for the runs in sequence, replaced when it dies or hangs (the run in flight is
+            // a Crash).
+            std::size_t next = 0;
+            while (next < order.size())
+            {
+                std::size_t current = next;
+                double currentStart = 0.0;
+                const ChildOutcome outcome = runChildProcess(
+                    watchdog, [&](int fd) { runSimulationServer(xs, order, next, fd); },
+                    [&](const Message &m, double sinceFork)
+                    {
+                        if (m.index >= order.size())
+                            return;
+                        const SimulationSlot &slot = order[m.index];
+                        PlannerRecord &rec = records[slot.controller];
+                        if (m.type == 'C')
+                            rec.common = decodeMap(m.payload);
+                        else if (m.type == 'R')
                         {
-                            if (m.type == 'C')
-                                rec.common = decodeMap(m.payload);
-                            else if (m.type == 'R' && m.index < e.runs)
-                            {
-                                auto props = decodeMap(m.payload);
-                                rec.runs[m.index] = props;
-                                rec.have[m.index] = true;
-                                times.wall += std::atof(props["time REAL"].c_str());
-                                times.cpu += std::atof(props["cpu time REAL"].c_str());
-                                reportRun(progressFd, e.index, false, xs.slotBase + ci, runSeconds);
-                            }
-                        },
-                        {progressFd});
-                    if (rec.have[k])
-                        continue;
-                    ot::Benchmark::RunProperties crash = crashRun(outcome.elapsed, k, seed);
-                    crash["start seed INTEGER"] = std::to_string(startSeed);
-                    rec.runs[k] = crash;
-                    rec.have[k] = true;
+                            auto props = decodeMap(m.payload);
+                            rec.runs[slot.runIndex] = props;
+                            rec.have[slot.runIndex] = true;
+                            times.wall += std::atof(props["time REAL"].c_str());
+                            times.cpu += std::atof(props["cpu time REAL"].c_str());
+                            reportRun(progressFd, e.index, false, xs.slotBase + slot.controller,
+                                      sinceFork - currentStart);
+                        }
+                        else if (m.type == 'E')
+                        {
+                            current = m.index + 1;
+                            currentStart = sinceFork;
+                        }
+                    },
+                    {progressFd});
+                if (current >= order.size())
+                    break;
+                const SimulationSlot &slot = order[current];
+                PlannerRecord &rec = records[slot.controller];
+                if (!rec.have[slot.runIndex])
+                {
+                    ot::Benchmark::RunProperties crash = crashRun(outcome.elapsed, slot.runIndex, slot.seed);
+                    crash["start seed INTEGER"] = std::to_string(slot.startSeed);
+                    rec.runs[slot.runIndex] = crash;
+                    rec.have[slot.runIndex] = true;
                     times.wall += outcome.elapsed;
-                    reportRun(progressFd, e.index, true, xs.slotBase + ci, outcome.runSeconds);
-                    reportCrash(e.name, "controller " + ctl.displayName, k, outcome, watchdog);
+                    reportRun(progressFd, e.index, true, xs.slotBase + slot.controller,
+                              outcome.runSeconds - currentStart);
+                    reportCrash(e.name, "controller " + spec.controllers[slot.controller].displayName,
+                                slot.runIndex, outcome, watchdog);
                 }
+                next = current + 1;
             }
 
             // OMPL's benchmark record needs a SimpleSetup: the plane of the scenario's bounds.

@@ -56,7 +56,7 @@ namespace mhplan::bench
 
         void writeScript(const std::string &file, const std::string &text)
         {
-            const std::string tmp = file + ".tmp" + std::to_string(::getpid());
+            const std::string tmp = temporaryFile(file);
             {
                 std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
                 out << text;

@@ -4,7 +4,8 @@
 # one of them, or all one after the other, for SECONDS each on one core.
 #   scripts/fuzz.sh TARGET|all SECONDS      e.g. scripts/fuzz.sh world_yaml 600, scripts/fuzz.sh all 30
 # MHPLAN_FUZZ_RUNS=N stops a target after N executions (SECONDS stays the cap).
-# Targets: world_yaml map pgm grid_rows scen scenario campaign cli_values.
+# Targets: world_yaml map pgm grid_rows scen scenario campaign cli_values, and report_db: the report's database
+# reader (analysis/mhplan_analysis/db.py, Python: tests/fuzz/fuzz_report_db.py, no clang build needed).
 # Seed corpora come from the shipped files (environments/, benchmarks/, tests/data/) and the kept crashing
 # inputs (tests/data/fuzz_regressions/); the growing corpus stays in $BUILD_DIR/corpus/TARGET. A finding
 # (crash, leak, undefined behaviour, an escaped exception other than InputError, an allocation over
@@ -12,7 +13,7 @@
 # and this script exits non-zero. Executions per target are printed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-TARGETS=(world_yaml map pgm grid_rows scen scenario campaign cli_values)
+TARGETS=(world_yaml map pgm grid_rows scen scenario campaign cli_values report_db)
 if [ $# -ne 2 ]; then
   echo "usage: scripts/fuzz.sh TARGET|all SECONDS (targets: ${TARGETS[*]})" >&2
   exit 2
@@ -27,6 +28,18 @@ else
     *" $WHICH "*) RUN=("$WHICH") ;;
     *) echo "scripts/fuzz.sh: unknown target '$WHICH'; accepted: all ${TARGETS[*]}" >&2; exit 2 ;;
   esac
+fi
+
+# report_db: the report's reader is Python; its fuzzer mutates databases itself (seeded, deterministic).
+if [ "$WHICH" = report_db ]; then
+  mkdir -p "$BUILD_DIR/artifacts/report_db"
+  exec /usr/bin/python3 tests/fuzz/fuzz_report_db.py "$SECONDS_EACH" "${MHPLAN_FUZZ_SEED:-1}" \
+    "$BUILD_DIR/artifacts/report_db"
+fi
+REPORT_DB=0
+if [ "$WHICH" = all ]; then
+  RUN=("${TARGETS[@]:0:${#TARGETS[@]}-1}")
+  REPORT_DB=1
 fi
 
 command -v clang++ >/dev/null || { echo "scripts/fuzz.sh: needs clang++ (apt-get install clang)" >&2; exit 1; }
@@ -98,6 +111,11 @@ for t in "${RUN[@]}"; do
     status=1
   fi
 done
+if [ "$REPORT_DB" = 1 ]; then
+  mkdir -p "$BUILD_DIR/artifacts/report_db"
+  /usr/bin/python3 tests/fuzz/fuzz_report_db.py "$SECONDS_EACH" "${MHPLAN_FUZZ_SEED:-1}" \
+    "$BUILD_DIR/artifacts/report_db" || status=1
+fi
 echo "executions per target:"
 for t in "${RUN[@]}"; do echo "  $t ${EXECS[$t]:-?}"; done
 exit $status

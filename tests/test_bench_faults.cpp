@@ -545,3 +545,60 @@ TEST_F(CampaignFaults, FullLogDirectoryFailsClearlyAndResumesToTheUninterruptedR
     ASSERT_EQ(resumed, 0) << readFile(out);
     expectSameContents(contents((dir / "f.db").string()), *reference_);
 }
+
+// Issue 26: the same "exactly the uninterrupted run" check after what is not a kill: two benches on the
+// campaign at once while one of its world files is edited and restored, the finished folder copied elsewhere
+// and run again there, and a side file truncated before the merge.
+TEST_F(CampaignFaults, ConcurrentBenchesEditedWorldsMovedFoldersAndTruncatedSideFilesGiveTheUninterruptedRun)
+{
+    const fs::path dir = freshDir("integrity");
+    // The campaign's shipped worlds from a copy that the test may edit.
+    const fs::path environments = dir / "environments";
+    fs::copy(MHPLAN_ENVIRONMENTS_DIR, environments, fs::copy_options::recursive);
+    const fs::path world = environments / "bfo_case1.yaml";
+    const std::string original = readFile(world.string());
+    ::setenv("MHPLAN_ENVIRONMENTS", environments.c_str(), 1);
+    const std::string db = (dir / "f.db").string();
+    const std::string out1 = (dir / "out1.txt").string(), out2 = (dir / "out2.txt").string();
+    const pid_t first = spawnMhplan(benchArgs(dir), out1);
+    const pid_t second = spawnMhplan(benchArgs(dir), out2);
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    std::string edited = original;
+    edited.replace(edited.find("radius: 0.7"), 11, "radius: 0.9");
+    std::ofstream(world, std::ios::trunc) << edited; // one circle grows while the campaign runs ...
+    const int rc1 = waitFor(first), rc2 = waitFor(second);
+    std::ofstream(world, std::ios::trunc) << original; // ... and is restored
+    EXPECT_TRUE(rc1 == 0 || rc1 == 3) << readFile(out1);
+    EXPECT_TRUE(rc2 == 0 || rc2 == 3) << readFile(out2);
+    EXPECT_NE((readFile(out1) + readFile(out2)).find("waiting for it to finish"), std::string::npos)
+        << readFile(out1) << readFile(out2);
+    const std::string out3 = (dir / "out3.txt").string();
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(dir), out3)), 0) << readFile(out3);
+    expectSameContents(contents(db), *reference_);
+
+    // The finished folder elsewhere: nothing runs, nothing is merged twice.
+    const fs::path moved = freshDir("integrity_moved");
+    for (const char *name : {"f.db", "f-sim.db", "f.db.logs"})
+        fs::copy(dir / name, moved / name, fs::copy_options::recursive);
+    const std::string out4 = (moved / "out4.txt").string();
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(moved), out4)), 0) << readFile(out4);
+    EXPECT_NE(readFile(out4).find("experiments: 7 (0 run now, 7 already complete"), std::string::npos)
+        << readFile(out4);
+    expectSameContents(contents((moved / "f.db").string()), *reference_);
+
+    // A truncated side file: its log is refused, the experiment runs again.
+    const fs::path logs = moved / "f.db.logs";
+    fs::remove(moved / "f.db");
+    fs::remove(moved / "f-sim.db");
+    const fs::path paths = logs / "bfo_case2-default.paths";
+    const std::string text = readFile(paths.string());
+    ASSERT_GT(text.size(), 20u);
+    std::ofstream(paths, std::ios::trunc) << text.substr(0, text.size() / 2);
+    const std::string out5 = (moved / "out5.txt").string();
+    EXPECT_EQ(waitFor(spawnMhplan(benchArgs(moved, {"--merge-only"}), out5)), 3) << readFile(out5);
+    EXPECT_NE(readFile(out5).find("bfo_case2-default: its side files"), std::string::npos) << readFile(out5);
+    const std::string out6 = (moved / "out6.txt").string();
+    ASSERT_EQ(waitFor(spawnMhplan(benchArgs(moved), out6)), 0) << readFile(out6);
+    ::unsetenv("MHPLAN_ENVIRONMENTS");
+    expectSameContents(contents((moved / "f.db").string()), *reference_);
+}

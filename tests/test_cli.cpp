@@ -135,7 +135,7 @@ TEST(Cli, RefusesBadInputWithAClearMessage)
         {"plan bfo_case1 --planner RRTstar --set goal_bias", {"expected key=value"}},
         {"plan no_such_world", {"no_such_world", "no such file"}},
         {"plan bfo_case1 --colour red", {"unknown option '--colour'", "--planner"}},
-        {"plan bfo_case1 --time -1", {"--time must be > 0"}},
+        {"plan bfo_case1 --time -1", {"--time must be in [0.001, 1000000]"}},
         {"plan bfo_case1 --seed abc", {"--seed expects an integer"}},
         {"plan bfo_case1 --start 2,2 --goal 9,9", {"query 'command-line'", "start", "in collision"}},
         {"plan bfo_case1 --start 0,0", {"give both --start"}},

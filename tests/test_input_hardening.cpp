@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Issue 19: inputs that were accepted or escaped as the wrong error, each refused with file, line and field.
  */
+#include "CliSupport.h"
+
 #include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/Database.h"
 #include "mhplan/io/GridIO.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/registry/Registry.h"
@@ -17,8 +20,19 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
 #include <sstream>
+#include <thread>
 
 namespace
 {
@@ -262,4 +276,228 @@ TEST(Limits, TimeStepPolygonAndFileSize)
     const std::string big = "bounds: [0, 10, 0, 10]\n" + std::string(mhplan::kMaxYamlBytes, '#');
     e = inputError([&] { mhplan::parseWorldYaml(big, "big.yaml"); });
     EXPECT_TRUE(contains(e, "big.yaml") && contains(e, "limited to")) << e;
+}
+
+// Issue 26: special files, second documents, hostile names, one --time range, write errors, signals, no
+// shell. Each check runs in a child process with a deadline and a memory cap where the old behaviour was to
+// block forever or to read without end, so that a regression fails here instead of hanging the suite.
+namespace
+{
+    namespace fs = std::filesystem;
+
+    fs::path scratchDir(const std::string &tag)
+    {
+        const fs::path dir =
+            fs::temp_directory_path() / ("mhplan_test_hardening_" + std::to_string(::getpid())) / tag;
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        return dir;
+    }
+
+    /** Run \e body in a child process (address space capped at 1 GiB) for at most \e seconds; its exit
+        code, or -1 when it had to be killed (it blocked or did not end). */
+    int isolated(const std::function<int()> &body, double seconds = 20.0)
+    {
+        std::cout.flush();
+        std::cerr.flush();
+        const pid_t pid = ::fork();
+        if (pid == 0)
+        {
+            struct rlimit cap
+            {
+                std::size_t{1} << 30, std::size_t{1} << 30
+            };
+            ::setrlimit(RLIMIT_AS, &cap);
+            int code = 99;
+            try
+            {
+                code = body();
+            }
+            catch (...)
+            {
+                code = 98;
+            }
+            ::_exit(code);
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        int status = 0;
+        while (::waitpid(pid, &status, WNOHANG) == 0)
+        {
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > seconds)
+            {
+                ::kill(pid, SIGKILL);
+                ::waitpid(pid, &status, 0);
+                return -1;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+
+    /** 0 when loading \e path as a world throws an InputError containing \e part, 1 otherwise. */
+    int worldRefused(const std::string &path, const std::string &part)
+    {
+        try
+        {
+            mhplan::loadWorld(path);
+        }
+        catch (const mhplan::InputError &e)
+        {
+            return contains(e.what(), part) ? 0 : 2;
+        }
+        return 1;
+    }
+} // namespace
+
+TEST(SpecialFiles, FifoDeviceAndLoopAreRefusedWithoutReading)
+{
+    const fs::path dir = scratchDir("special");
+    const std::string fifo = (dir / "fifo.yaml").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(isolated([&] { return worldRefused(fifo, "FIFO"); }), 0) << "a FIFO blocks or is read";
+    for (const char *name : {"zero.yaml", "zero.map", "zero.pgm"})
+    {
+        fs::create_symlink("/dev/zero", dir / name);
+        EXPECT_EQ(isolated([&] { return worldRefused((dir / name).string(), "is a device"); }), 0) << name;
+    }
+    fs::create_symlink(dir / "loop_b.yaml", dir / "loop_a.yaml");
+    fs::create_symlink(dir / "loop_a.yaml", dir / "loop_b.yaml");
+    EXPECT_EQ(isolated([&] { return worldRefused((dir / "loop_a.yaml").string(), "symbolic-link loop"); }),
+              0);
+    // Scenario and campaign files go through the same reader.
+    EXPECT_EQ(isolated(
+                  [&]
+                  {
+                      try
+                      {
+                          mhplan::loadScenario(fifo);
+                      }
+                      catch (const mhplan::InputError &e)
+                      {
+                          return contains(e.what(), "FIFO") ? 0 : 2;
+                      }
+                      return 1;
+                  }),
+              0);
+    const auto r = mhplan::test::runCli("bench " + fifo + " --list");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(contains(r.out, "FIFO")) << r.out;
+    const auto d = mhplan::test::runCli("bench " + dir.string() + " --list");
+    EXPECT_EQ(d.code, 1);
+    EXPECT_TRUE(contains(d.out, "is a directory")) << d.out;
+}
+
+TEST(YamlDocuments, ASecondDocumentIsRefused)
+{
+    const std::string world = "bounds: [0, 10, 0, 10]\nqueries: [{start: [1, 1], goal: [9, 9]}]\n";
+    std::string e =
+        inputError([&] { mhplan::parseWorldYaml(world + "---\nbounds: [0, 1, 0, 1]\n", "w.yaml"); });
+    EXPECT_TRUE(contains(e, "w.yaml:") && contains(e, "second one")) << e;
+    e = inputError(
+        [&] { mhplan::bench::parseCampaign("worlds: [bfo_case1]\nplanners: [RRTstar]\n---\n", "c.yaml"); });
+    EXPECT_TRUE(contains(e, "c.yaml") && contains(e, "second one")) << e;
+    // Nesting and explicit tags.
+    std::string deep =
+        "bounds: [0, 10, 0, 10]\ndescription: " + std::string(1000, '[') + std::string(1000, ']') + "\n";
+    e = inputError([&] { mhplan::parseWorldYaml(deep, "deep.yaml"); });
+    EXPECT_TRUE(contains(e, "deep.yaml")) << e;
+    e = inputError(
+        [&]
+        {
+            mhplan::bench::parseCampaign("time_limit: !!int 0.7\nworlds: [bfo_case1]\nplanners: [RRTstar]\n",
+                                         "t.yaml");
+        });
+    EXPECT_TRUE(contains(e, "t.yaml:1") && contains(e, "time_limit") && contains(e, "!!int")) << e;
+}
+
+TEST(Names, ControlCharactersAreRefusedWhenReadAndBlanksByCampaigns)
+{
+    std::string e =
+        inputError([&] { mhplan::parseWorldYaml("name: \"a\\nb\"\nbounds: [0, 10, 0, 10]\n", "n.yaml"); });
+    EXPECT_TRUE(contains(e, "n.yaml:1: field 'name'") && contains(e, "control characters (found 0x0a)")) << e;
+    e = inputError(
+        [&]
+        {
+            mhplan::parseWorldYaml(
+                "bounds: [0, 10, 0, 10]\nqueries: [{name: \"q\\tx\", start: [1, 1], goal: [9, 9]}]\n",
+                "q.yaml");
+        });
+    EXPECT_TRUE(contains(e, "q.yaml:2: field 'queries[0].name'") && contains(e, "0x09")) << e;
+
+    // Two worlds whose names differ only before a blank would both become "one-default" in OMPL's logs.
+    const fs::path dir = scratchDir("names");
+    std::ofstream(dir / "lab.yaml")
+        << "name: lab one\nbounds: [0, 10, 0, 10]\nqueries: [{start: [1, 1], goal: [9, 9]}]\n";
+    std::ofstream(dir / "c.yaml") << "worlds: [lab.yaml]\nplanners: [RRTstar]\n";
+    const mhplan::bench::Campaign c = mhplan::bench::loadCampaign((dir / "c.yaml").string());
+    e = inputError([&] { mhplan::bench::enumerateExperiments(c, [](const std::string &s) { return s; }); });
+    EXPECT_TRUE(contains(e, "world name 'lab one'") && contains(e, "no blanks")) << e;
+}
+
+TEST(CliLimits, TimeHasOneRangeAndWriteErrorsAreReported)
+{
+    for (const std::string cmd : {"plan bfo_case1 --planner RRTConnect --time 1e10",
+                                  "compare bfo_case1 --planners RRTConnect --runs 1 --time 1e10",
+                                  "plan bfo_case1 --planner RRTConnect --time 0.0001"})
+    {
+        const auto r = mhplan::test::runCli(cmd);
+        EXPECT_EQ(r.code, 1) << cmd << "\n" << r.out;
+        EXPECT_TRUE(contains(r.out, "--time must be in [0.001, 1000000]")) << r.out;
+    }
+    const auto full =
+        mhplan::test::runCli("plan bfo_case1 --planner RRTConnect --time 0.05 --json >/dev/full");
+    EXPECT_EQ(full.code, 1) << full.out; // (its message goes to stderr, which the shell sends there too)
+}
+
+TEST(CliSignals, ReportPassesSigtermToItsChild)
+{
+    const fs::path dir = scratchDir("report_signal");
+    const fs::path fake = dir / "python";
+    const fs::path marker = dir / "got_term";
+    // A stand-in for the Python interpreter that notes SIGTERM and waits for it.
+    std::ofstream(fake) << "#!/bin/bash\ntrap 'echo term > \"" << marker.string()
+                        << "\"; exit 143' TERM\necho started > \"" << (dir / "started").string()
+                        << "\"\nfor i in $(seq 200); do sleep 0.05; done\n";
+    fs::permissions(fake, fs::perms::owner_all);
+    std::ofstream(dir / "db.sqlite") << "SQLite format 3";
+    ::setenv("MHPLAN_PYTHON", fake.c_str(), 1);
+    const pid_t pid = ::fork();
+    if (pid == 0)
+    {
+        ::execl(MHPLAN_BINARY, MHPLAN_BINARY, "report", (dir / "db.sqlite").c_str(), "-o",
+                (dir / "out").c_str(), static_cast<char *>(nullptr));
+        ::_exit(127);
+    }
+    ::unsetenv("MHPLAN_PYTHON");
+    for (int i = 0; i < 400 && !fs::exists(dir / "started"); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(fs::exists(dir / "started"));
+    ::kill(pid, SIGTERM);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    for (int i = 0; i < 200 && !fs::exists(marker); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_TRUE(fs::exists(marker)) << "report.py was not told to stop";
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 143) << status;
+}
+
+TEST(CliShell, ArenaScriptPathsNeverReachAShell)
+{
+    const fs::path dir = scratchDir("arena_shell");
+    const fs::path witness = dir / "X";
+    const fs::path scripts = dir / ("a'$(touch " + witness.string() + ")'");
+    fs::create_directories(scripts);
+    std::ofstream(scripts / "install.sh") << "echo /nonexistent\nexit 1\n";
+    const std::string db = (dir / "b.db").string();
+    {
+        mhplan::bench::detail::Database d(db);
+        for (const char *t : {"experiments", "plannerConfigs", "runs", "progress", "enums"})
+            d.exec(std::string("CREATE TABLE ") + t + " (id INTEGER)");
+    }
+    ::setenv("MHPLAN_ARENA_SCRIPTS", scripts.c_str(), 1);
+    const auto r = mhplan::test::runCli("arena " + db + " --no-install --port 18767");
+    ::unsetenv("MHPLAN_ARENA_SCRIPTS");
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "Planner Arena is not available")) << r.out;
+    EXPECT_FALSE(fs::exists(witness)) << "the script's path was run by a shell";
 }

@@ -8,6 +8,7 @@ reads whatever is there and the rest of the report says plainly what is missing.
 """
 
 import math
+import os
 import sqlite3
 from dataclasses import dataclass, field
 
@@ -102,9 +103,17 @@ def to_float(value):
     return f if math.isfinite(f) else None
 
 
+def connect_readonly(path):
+    """Open the SQLite file \\e path read-only, whatever characters its name holds ('#', '?', '%', blanks:
+    the name is percent-encoded into SQLite's file: URI, so it never names another file)."""
+    from urllib.parse import quote
+
+    return sqlite3.connect("file:%s?mode=ro" % quote(os.path.abspath(path)), uri=True)
+
+
 def load(path):
     """Read the database at \\p path. Raises ValueError when it is not an OMPL benchmark database."""
-    conn = sqlite3.connect("file:%s?mode=ro" % path, uri=True)
+    conn = connect_readonly(path)
     try:
         cur = conn.cursor()
         tables = _tables(cur)
@@ -112,16 +121,26 @@ def load(path):
         if missing:
             raise ValueError("%s is not an OMPL benchmark database (missing tables: %s)" % (path, ", ".join(sorted(missing))))
         notes = []
+        # Columns the reader relies on (a damaged or hostile database is refused, never a traceback).
+        required = {"experiments": ("id", "name"), "plannerConfigs": ("id", "name"),
+                    "runs": ("id", "experimentid", "plannerid")}
+        if "progress" in tables:
+            required["progress"] = ("runid", "time")
+        for table, needed in required.items():
+            absent = [c for c in needed if c not in _columns(cur, table)]
+            if absent:
+                raise ValueError("%s is not an OMPL benchmark database (table %s has no column %s)"
+                                 % (path, table, ", ".join(absent)))
         exp_cols = _columns(cur, "experiments")
         cur.execute("SELECT * FROM experiments ORDER BY id")
-        experiments = [Experiment(row[0], row[exp_cols.index("name")], dict(zip(exp_cols, row))) for row in cur.fetchall()]
+        experiments = [Experiment(row[0], _text(row[exp_cols.index("name")]), dict(zip(exp_cols, row))) for row in cur.fetchall()]
 
         status_names = dict(DEFAULT_STATUS)
         if "enums" in tables:
             cur.execute("SELECT value, description FROM enums WHERE name = 'status'")
             rows = cur.fetchall()
             if rows:
-                status_names = {int(v): d for v, d in rows}
+                status_names = {_int(v): d for v, d in rows}
 
         cur.execute("SELECT id, name FROM plannerConfigs")
         planner_names = {pid: name for pid, name in cur.fetchall()}
@@ -130,13 +149,13 @@ def load(path):
         runs, planners = [], []
         for row in cur.fetchall():
             values = dict(zip(run_cols, row))
-            name = planner_names.get(values["plannerid"], "planner %s" % values["plannerid"])
+            name = _text(planner_names.get(values["plannerid"], "planner %s" % values["plannerid"]))
             if name.startswith("geometric_"):
                 name = name[len("geometric_"):]
             if name not in planners:
                 planners.append(name)
             if "status" in values and values["status"] is not None:
-                outcome = classify_status(status_names.get(int(values["status"]), ""))
+                outcome = classify_status(str(status_names.get(_int(values["status"]), "")))
             else:
                 solved = values.get("solved")
                 outcome = "exact" if solved in (1, "1", True) else "failed"
@@ -165,6 +184,22 @@ def load(path):
         return Database(path, experiments, planners, runs, run_cols, progress_cols, progress, improvements, notes)
     finally:
         conn.close()
+
+
+def _text(value):
+    """A name as text, whatever SQLite held (a blob, a number, NULL)."""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    return "" if value is None else str(value)
+
+
+def _int(value):
+    """An enum value as stored (an integer, or text or a float holding one); None when it is none."""
+    try:
+        f = float(value)
+    except (TypeError, ValueError):
+        return None
+    return int(f) if math.isfinite(f) and f == int(f) else None
 
 
 def run_value(run, *names):

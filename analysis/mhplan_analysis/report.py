@@ -328,7 +328,7 @@ def load_paths(database_path):
     "x y;x y;...") when present."""
     import sqlite3
 
-    conn = sqlite3.connect("file:%s?mode=ro" % database_path, uri=True)
+    conn = dbmod.connect_readonly(database_path)
     try:
         cur = conn.cursor()
         cur.execute("SELECT name FROM sqlite_master WHERE type='table' AND name='paths'")

@@ -55,7 +55,8 @@ def load_world(path):
         raise OSError("no mhplan program to read worlds (set MHPLAN_BIN or put mhplan on PATH)")
     proc = subprocess.run([binary, "worlds", path, "--json"], capture_output=True, text=True)
     if proc.returncode != 0:
-        raise ValueError((proc.stderr or proc.stdout).strip() or "mhplan worlds failed")
+        # The program's message may quote the file (a key, a value): a report never shows file contents.
+        raise ValueError("mhplan worlds refused the file (exit code %d; run 'mhplan worlds FILE' to see why)" % proc.returncode)
     return from_json(json.loads(proc.stdout)["worlds"][0])
 
 

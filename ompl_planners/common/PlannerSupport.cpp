@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace ob = ompl::base;
 
@@ -56,6 +58,42 @@ namespace mhplan
             path->append(s);
         }
         si->freeState(s);
+        if (!exact && path->getStateCount() > 0)
+        {
+            // An approximate solution is collision-free, as OMPL's planners' are: the best valid prefix
+            // (docs/conventions.md, "Approximate solutions"): the states from the start while every state
+            // and motion is valid, cut at the one nearest the goal; its distance to the goal is the
+            // solution's difference.
+            std::vector<ob::State *> &states = path->getStates();
+            const ob::GoalPtr &goal = pdef->getGoal();
+            std::size_t valid = si->isValid(states[0]) ? 1 : 0;
+            while (valid > 0 && valid < states.size() && si->isValid(states[valid]) &&
+                   si->checkMotion(states[valid - 1], states[valid]))
+                ++valid;
+            std::size_t best = 0;
+            double bestDistance = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i < valid; ++i)
+            {
+                double d = std::numeric_limits<double>::infinity();
+                if (goal)
+                    goal->isSatisfied(states[i], &d);
+                if (d < bestDistance)
+                {
+                    bestDistance = d;
+                    best = i;
+                }
+            }
+            if (valid == 0)
+            {
+                approximateDistance = std::numeric_limits<double>::infinity();
+                best = 0; // only the start, which is itself invalid: OMPL refuses such a problem anyway
+            }
+            else if (std::isfinite(bestDistance))
+                approximateDistance = bestDistance;
+            for (std::size_t i = best + 1; i < states.size(); ++i)
+                si->freeState(states[i]);
+            states.resize(best + 1);
+        }
         ob::PlannerSolution solution(path);
         solution.setPlannerName(planner.getName());
         if (exact)

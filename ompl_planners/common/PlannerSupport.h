@@ -40,8 +40,10 @@ namespace mhplan
                            const ompl::base::Cost &cost);
 
     /** \brief Add a planner's result to \e pdef: the \e count states of the path (\e fill(state, i) writes
-        point i), named after \e planner; optimized with \e cost when \e exact, else approximate at distance
-        \e approximateDistance (at least 1e-12, so OMPL counts it as approximate). */
+        point i), named after \e planner; optimized with \e cost when \e exact, else approximate: only the
+        best valid prefix of the path (docs/conventions.md, "Approximate solutions": collision-free, cut at
+        its state nearest the goal) at that state's distance to the goal (\e approximateDistance when the
+        goal gives none; at least 1e-12, so OMPL counts it as approximate). */
     void addSolution(const ompl::base::Planner &planner, const ompl::base::ProblemDefinitionPtr &pdef,
                      const ompl::base::SpaceInformationPtr &si, std::size_t count,
                      const std::function<void(ompl::base::State *, std::size_t)> &fill, bool exact,

@@ -72,7 +72,7 @@ namespace mhplan
         longer than T restart the schedule (t cycles; mhplan's choice, the papers stop at T).
 
         Reports an exact solution when the best path passes the motion validator on every segment, else an
-        approximate one (the path of best fitness; its difference is the collision violation). The
+        approximate one (the best valid prefix of the path of best fitness, docs/conventions.md). The
         intermediate-solution callback fires on each improvement of the best feasible path. Progress
         properties \c best \c cost (of the best feasible path, infinity before one exists), \c iterations
         and \c fitness \c evaluations are atomics, safe to read from the benchmark's sampling thread.

@@ -105,6 +105,15 @@ namespace mhplan::cli
         return v;
     }
 
+    double Args::timeLimit(double fallback) const
+    {
+        const double t = number("time", fallback);
+        if (!(t >= kMinTimeLimit && t <= kMaxTimeLimit))
+            throw InputError("mhplan " + command_ + ": --time must be in [0.001, 1000000] seconds (got " +
+                             get("time") + ")");
+        return t;
+    }
+
     long long Args::integer(const std::string &name, long long fallback) const
     {
         const auto it = values_.find(name);

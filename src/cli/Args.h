@@ -14,6 +14,11 @@
 
 namespace mhplan::cli
 {
+    /** \brief The range of every time limit (--time of plan, compare and bench; a campaign's time_limit):
+        1 ms to 10^6 s. Beyond 1e9 s OMPL's deadline overflows (it stopped after 3 ms at 1e10). */
+    constexpr double kMinTimeLimit = 1e-3;
+    constexpr double kMaxTimeLimit = 1e6;
+
     /** \brief Parsed command line of one subcommand: positionals, single-valued options, repeatable options
         and flags. Unknown options, missing values and repeated single options raise InputError naming the
         option and listing the accepted ones. */
@@ -39,6 +44,9 @@ namespace mhplan::cli
 
         double number(const std::string &name, double fallback) const;
         long long integer(const std::string &name, long long fallback) const;
+        /** \brief --time: seconds per run in [kMinTimeLimit, kMaxTimeLimit], the range of a campaign's
+            time_limit (one range for plan, compare and bench). */
+        double timeLimit(double fallback) const;
         /** \brief "x,y" */
         Vec2 point(const std::string &name) const;
 

@@ -91,15 +91,43 @@ namespace mhplan::cli
             if (!fs::exists(script))
                 throw InputError("mhplan arena: cannot find " + script +
                                  " (set MHPLAN_ARENA_SCRIPTS to the directory holding install.sh)");
-            const std::string cmd = "bash '" + script + "'" + (install ? "" : " --check");
-            std::FILE *p = ::popen(cmd.c_str(), "r");
-            if (!p)
-                throw InputError("mhplan arena: cannot run " + script);
+            // No shell: the script's path is one argument whatever characters it holds.
+            std::vector<std::string> args{"bash", script};
+            if (!install)
+                args.push_back("--check");
+            int pipeFd[2];
+            if (::pipe2(pipeFd, O_CLOEXEC) != 0)
+                throw InputError("mhplan arena: cannot run " + script + ": " + std::strerror(errno));
+            std::cout.flush();
+            const pid_t child = ::fork();
+            if (child < 0)
+                throw InputError("mhplan arena: cannot run " + script + ": " + std::strerror(errno));
+            if (child == 0)
+            {
+                ::dup2(pipeFd[1], 1);
+                std::vector<char *> cargs;
+                for (auto &a : args)
+                    cargs.push_back(a.data());
+                cargs.push_back(nullptr);
+                ::execvp(cargs[0], cargs.data());
+                ::_exit(127);
+            }
+            ::close(pipeFd[1]);
             std::string out;
             char buf[512];
-            for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;)
-                out.append(buf, n);
-            const int status = ::pclose(p);
+            for (ssize_t n; (n = ::read(pipeFd[0], buf, sizeof buf)) != 0;)
+            {
+                if (n < 0 && errno == EINTR)
+                    continue;
+                if (n < 0)
+                    break;
+                out.append(buf, static_cast<std::size_t>(n));
+            }
+            ::close(pipeFd[0]);
+            int status = 0;
+            while (::waitpid(child, &status, 0) < 0 && errno == EINTR)
+            {
+            }
             while (!out.empty() && out.back() == '\n')
                 out.pop_back();
             const std::string app =

@@ -171,7 +171,8 @@ namespace mhplan::cli
              {"--logs", "DIR", "directory of the experiments' logs (default: the campaign's)"},
              {"--runs", "N", "runs per planner and experiment, 1..1000000 (default: the campaign's)"},
              {"--time", "S",
-              "time limit per run in seconds, > 0 (default: the campaign's); with --slurm, HH:MM:SS is the "
+              "time limit per run in seconds, 0.001..1000000 (default: the campaign's); with --slurm, "
+              "HH:MM:SS is the "
               "task's wall-time limit instead"},
              {"--seed", "N", "campaign seed, 1..4294967295 (default: the campaign's)"},
              {"--no-progress", "", "no progress bar on stderr"},
@@ -190,7 +191,8 @@ namespace mhplan::cli
              "bench benchmarks/scaling.yaml --shard 1/4 && mhplan bench benchmarks/scaling.yaml "
              "--merge-only",
              "bench benchmarks/seeds.yaml --slurm --shards 4 --cpus 2 --time 01:00:00 --submit"},
-            "0 every experiment completed, 1 bad input, 2 internal error, 3 some experiment failed"};
+            "0 every experiment completed, 1 bad input, 2 internal error, 3 some experiment failed, or "
+            "(merging) the database lacks experiments of the campaign or a log was not taken"};
         return doc;
     }
 
@@ -241,10 +243,7 @@ namespace mhplan::cli
         }
         if (args.has("time") && !(args.has("slurm") && isClockTime(args.get("time"))))
         {
-            const double t = args.number("time", 1.0);
-            if (!(t > 0.0))
-                throw InputError("mhplan bench: --time must be > 0 seconds (got " + args.get("time") + ")");
-            campaign.timeLimit = t;
+            campaign.timeLimit = args.timeLimit(1.0);
         }
         if (args.has("seed"))
         {
@@ -347,6 +346,6 @@ namespace mhplan::cli
                       << args.positional()[0] << " --merge-only\n";
         for (const auto &e : s.errors)
             std::cerr << "mhplan bench: " << e << "\n";
-        return s.failed > 0 ? 3 : 0;
+        return s.failed > 0 || s.missing > 0 || s.rejected > 0 ? 3 : 0;
     }
 } // namespace mhplan::cli

@@ -63,7 +63,7 @@ namespace mhplan::cli
             {{"--planners", "A,B,...",
               "comma-separated planners (default: RRTstar, InformedRRTstar, PRMstar, BITstar and every "
               "mhplan planner)"},
-             {"--time", "S", "time limit per run in seconds, > 0 (default 1)"},
+             {"--time", "S", "time limit per run in seconds, 0.001..1000000 (default 1)"},
              {"--runs", "N", "runs per world and planner, 1..1000 (default 1)"},
              options::seed(),
              options::json("one result per world and planner")},
@@ -76,9 +76,7 @@ namespace mhplan::cli
     {
         const Args args("compare", argv, {{"planners", "time", "runs", "seed"}, {}, {"json"}});
         const std::uint_fast32_t seed = seedFromArgs(args);
-        const double timeLimit = args.number("time", 1.0);
-        if (!(timeLimit > 0.0))
-            throw InputError("mhplan compare: --time must be > 0 seconds");
+        const double timeLimit = args.timeLimit(1.0);
         const long long runs = args.integer("runs", 1);
         if (runs < 1 || runs > 1000)
             throw InputError("mhplan compare: --runs must be in [1, 1000] (got " + args.get("runs") + ")");

@@ -37,7 +37,7 @@ namespace mhplan::cli
              options::start(),
              options::goal(),
              {"--planner", "NAME", "the planner (default RRTstar; see 'mhplan planners')"},
-             {"--time", "S", "time limit of solve() in seconds, > 0 (default 1)"},
+             {"--time", "S", "time limit of solve() in seconds, 0.001..1000000 (default 1)"},
              options::seed(),
              {"--set", "KEY=VALUE",
               "set a planner parameter (repeatable; names, defaults and ranges: 'mhplan planners NAME')"},
@@ -67,9 +67,7 @@ namespace mhplan::cli
         const World world = loadWorldArg(args);
         const Query query = queryFromArgs(world, args);
         const std::string plannerName = args.get("planner", "RRTstar");
-        const double timeLimit = args.number("time", 1.0);
-        if (!(timeLimit > 0.0))
-            throw InputError("mhplan plan: --time must be > 0 seconds (got " + args.get("time") + ")");
+        const double timeLimit = args.timeLimit(1.0);
         std::map<std::string, std::string> params;
         for (const auto &kv : args.all("set"))
             parseKeyValue(kv, params);

@@ -5,6 +5,8 @@
 
 #include "mhplan/base/World.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +19,18 @@ namespace mhplan::cli
 {
     namespace
     {
+        volatile sig_atomic_t gChild = 0;
+        volatile sig_atomic_t gSignal = 0;
+
+        /** SIGTERM, SIGINT, SIGHUP while report.py runs: passed on to it (it then ends, and so does this
+            process, with the signal's exit code). */
+        void forwardSignal(int sig)
+        {
+            gSignal = sig;
+            if (gChild > 0)
+                ::kill(static_cast<pid_t>(gChild), sig);
+        }
+
         /** The report script: $MHPLAN_ANALYSIS/report.py, the installed share/mhplan/analysis, or the source
             tree's analysis/. */
         std::string reportScript()
@@ -77,11 +91,21 @@ namespace mhplan::cli
             cargs.push_back(a.data());
         cargs.push_back(nullptr);
         std::cout.flush();
+        struct sigaction sa
+        {
+        }, old[3];
+        sa.sa_handler = forwardSignal;
+        sigemptyset(&sa.sa_mask);
+        const int signals[3] = {SIGTERM, SIGINT, SIGHUP};
+        for (int i = 0; i < 3; ++i)
+            sigaction(signals[i], &sa, &old[i]);
         const pid_t pid = fork();
         if (pid < 0)
             throw InputError("mhplan report: cannot start " + python);
         if (pid == 0)
         {
+            for (int i = 0; i < 3; ++i)
+                sigaction(signals[i], &old[i], nullptr);
             // report.py asks this very program for the worlds it draws (mhplan worlds FILE --json).
             std::error_code ec;
             const fs::path self = fs::read_symlink("/proc/self/exe", ec);
@@ -90,8 +114,20 @@ namespace mhplan::cli
             execv(python.c_str(), cargs.data());
             _exit(127);
         }
+        gChild = pid;
+        if (gSignal != 0) // arrived between fork() and here
+            ::kill(pid, gSignal);
         int status = 0;
-        waitpid(pid, &status, 0);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        {
+        }
+        gChild = 0;
+        for (int i = 0; i < 3; ++i)
+            sigaction(signals[i], &old[i], nullptr);
+        if (gSignal != 0)
+            return 128 + gSignal;
+        if (WIFSIGNALED(status))
+            return 128 + WTERMSIG(status);
         return WIFEXITED(status) ? WEXITSTATUS(status) : 2;
     }
 } // namespace mhplan::cli

@@ -59,9 +59,7 @@ namespace mhplan::cli
         const std::string scenPath = args.positional()[1];
         const std::string plannerName = args.get("planner", "AStar");
         builtinPlanners().get(plannerName); // refuse an unknown name before any work
-        const double timeLimit = args.number("time", 0.0);
-        if (args.has("time") && !(timeLimit > 0.0))
-            throw InputError("mhplan scen: --time must be > 0 seconds (got " + args.get("time") + ")");
+        const double timeLimit = args.has("time") ? args.timeLimit(0.0) : 0.0;
         const bool verbose = args.has("verbose");
 
         const World world = loadWorld(mapPath);

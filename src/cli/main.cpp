@@ -8,6 +8,8 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <functional>
@@ -102,7 +104,18 @@ int main(int argc, char **argv)
     ompl::msg::setLogLevel(std::getenv("MHPLAN_VERBOSE") ? ompl::msg::LOG_DEBUG : ompl::msg::LOG_WARN);
     try
     {
-        return it->second.run(mhplan::cli::Argv(argv + 2, argv + argc));
+        const int rc = it->second.run(mhplan::cli::Argv(argv + 2, argv + argc));
+        // Output that could not be written (a full disk, /dev/full, a closed pipe) is an error, not rc 0.
+        std::cout.flush();
+        errno = 0;
+        const bool written = std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+        if (!written)
+        {
+            std::cerr << "mhplan " << name << ": error: cannot write the output to standard output"
+                      << (errno ? std::string(" (") + std::strerror(errno) + ")" : std::string()) << "\n";
+            return rc != 0 ? rc : 1;
+        }
+        return rc;
     }
     catch (const mhplan::InputError &e)
     {

@@ -164,10 +164,28 @@ namespace mhplan
         }
     } // namespace
 
+    namespace
+    {
+        /** Every command plans on the same problem definition as a benchmark run, which registers an
+            intermediate-solution callback (benchmarks/Improvements.h) that replaces this one. A callback
+            changes what OMPL's planners do: RRT* and its relatives skip a sample equal to its nearest tree
+            state when one is registered, so without it `mhplan plan` solved start == goal exactly (length 0)
+            while the benchmark's runs of the same seed were approximate. */
+        void registerIntermediateCallback(const og::SimpleSetupPtr &ss)
+        {
+            ss->getProblemDefinition()->setIntermediateSolutionCallback(
+                [](const ob::Planner *, const std::vector<const ob::State *> &, const ob::Cost &) {});
+        }
+    } // namespace
+
     og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
     {
         if (world.isRigid())
-            return makeRigidSetup(world, query);
+        {
+            og::SimpleSetupPtr rigid = makeRigidSetup(world, query);
+            registerIntermediateCallback(rigid);
+            return rigid;
+        }
         validateQuery(world, query, *model);
         auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
@@ -182,6 +200,7 @@ namespace mhplan
         const double diag = std::hypot(world.bounds.width(), world.bounds.height());
         ss->setStartAndGoalStates(start, goal, 1e-9 * diag);
         ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+        registerIntermediateCallback(ss);
         return ss;
     }
 

@@ -34,7 +34,9 @@ namespace mhplan
         SE(2)-based worlds: the world's space, a RigidValidityChecker and a CertifiedMotionValidator over a
         RigidBodyModel built here (\e model is not used), start and goal poses with their headings, and the
         path-length objective in the space's own metric (SE(2): |dxy| + 0.5 |dtheta|, OMPL's weights; the
-        cars: the length of the car's path). */
+        cars: the length of the car's path). A no-op intermediate-solution callback is registered, as every
+        benchmark run registers its own: the problem definition, and so what OMPL's planners do, is the same
+        in every command (RRT* skips samples equal to their nearest tree state only with a callback). */
     ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
                                                     const CollisionModelPtr &model);
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/GridIO.h"
 
+#include "mhplan/io/InputFile.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -222,6 +224,7 @@ namespace mhplan
 
     OccupancyGrid loadMovingAIMap(const std::string &path, double cellSize)
     {
+        requireRegularFile(path, "MovingAI map file");
         std::ifstream in(path, std::ios::binary);
         if (!in)
             throw InputError(path + ": cannot open MovingAI map file");
@@ -429,6 +432,7 @@ namespace mhplan
 
     OccupancyGrid loadPgm(const std::string &path, double cellSize, double threshold, bool negate)
     {
+        requireRegularFile(path, "PGM file");
         std::ifstream in(path, std::ios::binary);
         if (!in)
             throw InputError(path + ": cannot open PGM file");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/ScenIO.h"
 
+#include "mhplan/io/InputFile.h"
+
 #include "mhplan/io/GridIO.h"
 
 #include <algorithm>
@@ -141,6 +143,7 @@ namespace mhplan
 
     std::vector<ScenProblem> loadMovingAIScen(const std::string &path, const OccupancyGrid &grid)
     {
+        requireRegularFile(path, "scenario file");
         std::ifstream in(path, std::ios::binary);
         if (!in)
             throw InputError(path + ": cannot open the scenario file");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/io/WorldIO.h"
 
+#include "mhplan/io/InputFile.h"
+
 #include "mhplan/collision/Collision.h"
 #include "mhplan/io/GridIO.h"
 #include "mhplan/collision/Problem.h"
@@ -291,7 +293,7 @@ namespace mhplan
                 r.allowKeys(n[i], field, {"name", "start", "goal"});
                 Query q;
                 q.name = n[i]["name"].IsDefined()
-                             ? r.text(n[i]["name"], field + ".name")
+                             ? r.name(n[i]["name"], field + ".name")
                              : (i == 0 ? std::string("default") : "q" + std::to_string(i));
                 if (!names.insert(q.name).second)
                     r.fail(n[i], field + ".name", "duplicate query name '" + q.name + "'");
@@ -342,7 +344,7 @@ namespace mhplan
 
         World world;
         world.file = fileName;
-        world.name = root["name"].IsDefined() ? r.text(root["name"], "name") : fileName;
+        world.name = root["name"].IsDefined() ? r.name(root["name"], "name") : fileName;
         if (root["description"].IsDefined())
             world.description = r.text(root["description"], "description");
         if (root["source"].IsDefined())
@@ -458,43 +460,50 @@ namespace mhplan
         return world;
     }
 
-    World loadWorld(const std::string &path)
+    World loadWorld(const std::string &path, std::string *contents)
     {
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec))
             throw InputError(path + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
-        std::ifstream in(path);
-        if (!in)
-            throw InputError(path + ": cannot open world file");
         const std::string ext = extensionOf(path);
-        std::string stem =
-            path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-        stem = stem.substr(0, stem.find_last_of('.'));
-        if (ext == "map")
+        const bool grid = ext == "map" || ext == "pgm";
+        if (!grid && ext != "yaml" && ext != "yml")
         {
-            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parseMovingAIMap(in, path)));
-            w.file = path;
-            return w;
-        }
-        if (ext == "pgm")
-        {
-            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parsePgm(in, path)));
-            w.file = path;
-            return w;
-        }
-        if (ext != "yaml" && ext != "yml")
+            requireRegularFile(path, "world file");
             throw InputError(path + ": " +
                              (ext.empty() ? std::string("the file name has no extension")
                                           : "unknown world file type '." + ext + "'") +
                              "; accepted: .yaml, .yml, .map, .pgm");
-        const auto size = std::filesystem::file_size(path, ec);
-        if (!ec && size > kMaxYamlBytes)
-            throw InputError(path + ": the world file is " + std::to_string(size) +
-                             " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
-                             " bytes (4 MiB; large grids belong in .map or .pgm files)");
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        return parseWorldYaml(buffer.str(), path);
+        }
+        // Read once, whole (only a regular file, at most its limit): what is parsed is exactly what the
+        // caller may fingerprint (contents).
+        std::string text;
+        try
+        {
+            text = readInputFile(path, grid ? kMaxGridFileBytes : kMaxYamlBytes, "world file");
+        }
+        catch (const InputError &e)
+        {
+            if (!grid && std::string(e.what()).find("is larger than") != std::string::npos)
+                throw InputError(path + ": the world file is larger than " + std::to_string(kMaxYamlBytes) +
+                                 " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                                 " bytes (4 MiB; large grids belong in .map or .pgm files)");
+            throw;
+        }
+        if (contents)
+            *contents = text;
+        std::string stem =
+            path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+        stem = stem.substr(0, stem.find_last_of('.'));
+        if (grid)
+        {
+            std::istringstream in(std::move(text));
+            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(
+                                          ext == "map" ? parseMovingAIMap(in, path) : parsePgm(in, path)));
+            w.file = path;
+            return w;
+        }
+        return parseWorldYaml(text, path);
     }
 
     namespace

@@ -35,8 +35,11 @@ namespace mhplan
     /** \brief Load a world: a YAML world file (.yaml/.yml, see environments/README.md), a MovingAI map
         (.map) or a PGM image (.pgm, threshold 0.5 of the maximum grey value, dark = blocked). Throws
         InputError naming the file, line and field on any problem (malformed YAML, unknown keys, negative
-        radii, self-intersecting polygons, start or goal out of bounds or in collision). */
-    World loadWorld(const std::string &path);
+        radii, self-intersecting polygons, start or goal out of bounds or in collision), and any file that
+        is not a regular file (a FIFO, a device) or exceeds its limit before reading it (InputFile.h).
+        \e contents, when given, receives the bytes that were parsed (read once, so a fingerprint of them
+        describes exactly the world returned). */
+    World loadWorld(const std::string &path, std::string *contents = nullptr);
 
     /** \brief Parse a YAML world from text; \e fileName is used in error messages and to resolve relative
         grid file paths (relative to its directory). */

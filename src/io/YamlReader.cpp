@@ -4,8 +4,10 @@
 #include "mhplan/base/World.h"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace mhplan
 {
@@ -19,7 +21,19 @@ namespace mhplan
         YAML::Node root;
         try
         {
-            root = YAML::Load(text);
+            // Every document is parsed: a second one ("---") would otherwise be ignored silently.
+            const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+            if (docs.size() > 1)
+            {
+                std::ostringstream msg;
+                msg << fileName;
+                if (docs[1].Mark().line >= 0)
+                    msg << ":" << docs[1].Mark().line + 1;
+                msg << ": a " << what << " holds one YAML document; a second one (after '---') is not read";
+                throw InputError(msg.str());
+            }
+            if (!docs.empty())
+                root = docs.front();
         }
         catch (const YAML::ParserException &e)
         {
@@ -31,6 +45,20 @@ namespace mhplan
         if (!root.IsMap())
             throw InputError(fileName + ":1: a " + what + " must be a YAML mapping (see " + help + ")");
         return root;
+    }
+
+    std::string YamlReader::name(const YAML::Node &n, const std::string &field) const
+    {
+        const std::string s = text(n, field);
+        for (char c : s)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            {
+                char code[8];
+                std::snprintf(code, sizeof code, "0x%02x", static_cast<unsigned char>(c));
+                fail(n, field,
+                     std::string("a name must not contain control characters (found ") + code + ")");
+            }
+        return s;
     }
 
     void YamlReader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
@@ -92,10 +120,25 @@ namespace mhplan
         return n;
     }
 
+    namespace
+    {
+        const std::string kYamlInt = "tag:yaml.org,2002:int";
+        const std::string kYamlFloat = "tag:yaml.org,2002:float";
+
+        /** An explicit tag ("!!int 0.7", "!custom") other than the untagged ones ('?' plain, '!' quoted). */
+        bool explicitTag(const YAML::Node &n)
+        {
+            return n.Tag() != "?" && n.Tag() != "!" && !n.Tag().empty();
+        }
+    } // namespace
+
     double YamlReader::number(const YAML::Node &n, const std::string &field) const
     {
         if (!n.IsScalar())
             fail(n, field, "expected a number");
+        // An explicit tag must agree with the value: "!!int 0.7" is not silently 0.7.
+        if (explicitTag(n) && n.Tag() != kYamlInt && n.Tag() != kYamlFloat)
+            fail(n, field, "expected a number, got a value tagged '" + n.Tag() + "'");
         double v = 0.0;
         try
         {
@@ -107,6 +150,8 @@ namespace mhplan
         }
         if (!std::isfinite(v))
             fail(n, field, "must be finite");
+        if (n.Tag() == kYamlInt && v != std::floor(v))
+            fail(n, field, "tagged !!int but '" + n.Scalar() + "' is not an integer");
         return v;
     }
 
@@ -135,6 +180,8 @@ namespace mhplan
     {
         if (!n.IsScalar())
             fail(n, field, "expected a string");
+        if (explicitTag(n) && n.Tag() != "tag:yaml.org,2002:str")
+            fail(n, field, "expected a string, got a value tagged '" + n.Tag() + "'");
         return n.Scalar();
     }
 

@@ -51,6 +51,9 @@ namespace mhplan
         long long integer(const YAML::Node &n, const std::string &field, long long lo, long long hi) const;
         /** \brief A scalar as text (may be empty). */
         std::string text(const YAML::Node &n, const std::string &field) const;
+        /** \brief A name (of a world, a query, a robot): a scalar without control characters (a newline or
+            a tab in a name would break every line-oriented file it is written to: logs, side files). */
+        std::string name(const YAML::Node &n, const std::string &field) const;
         /** \brief A non-empty scalar. */
         std::string nonEmptyText(const YAML::Node &n, const std::string &field) const;
         bool boolean(const YAML::Node &n, const std::string &field) const;

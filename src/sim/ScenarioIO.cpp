@@ -2,6 +2,8 @@
 /* mhplan: scenario files (format: environments/README.md, "Scenario files"). */
 #include "mhplan/sim/ScenarioIO.h"
 
+#include "mhplan/io/InputFile.h"
+
 #include "mhplan/io/WorldIO.h"
 
 #include <cmath>
@@ -358,11 +360,6 @@ namespace mhplan
 
     Scenario loadScenario(const std::string &path)
     {
-        std::ifstream in(path);
-        if (!in)
-            throw InputError(path + ": cannot open scenario file");
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        return parseScenarioYaml(buffer.str(), path);
+        return parseScenarioYaml(readInputFile(path, kMaxYamlBytes, "scenario file"), path);
     }
 } // namespace mhplan
