@@ -99,6 +99,18 @@ namespace mhplan
                     integer("neighb_param", 1, 10000, 4, "neighbourhood size (lbest, adaptive random)")};
         }
 
+        /** \brief pagmo's pso and pso_gen index past the swarm (a crash, not an error) when the ring
+            (lbest) neighbourhood is larger than the swarm: measured with N = 30, neighb_param 61 runs and 100
+            crashes. */
+        std::string ringFitsTheSwarm(const std::vector<double> &v, unsigned int n)
+        {
+            if (u(v[5]) == 2 && u(v[6]) > n)
+                return "parameter 'neighb_param' (" + std::to_string(u(v[6])) +
+                       ") must not exceed the population (" + std::to_string(n) +
+                       ") with the ring topology neighb_type = 2 (pagmo would index past the swarm)";
+            return "";
+        }
+
         std::vector<PagmoAlgorithm> build()
         {
             std::vector<PagmoAlgorithm> a;
@@ -311,6 +323,9 @@ namespace mhplan
                      return wrap(pagmo::xnes(1, v[0], v[1], v[2], v[3], kNoTolerance, kNoTolerance, true,
                                              v[4] != 0.0, r.seed));
                  }});
+            for (PagmoAlgorithm &x : a)
+                if (x.name == "pso" || x.name == "pso_gen")
+                    x.check = ringFitsTheSwarm;
             return a;
         }
     } // namespace

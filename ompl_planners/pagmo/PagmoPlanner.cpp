@@ -164,6 +164,12 @@ namespace mhplan
         {
             refuseSetup("pagmo's " + algorithm_.name + " refuses its parameters: " + pagmoReason(e.what()));
         }
+        if (algorithm_.check)
+        {
+            const std::string why = algorithm_.check(values_, pagmoPopulationSize());
+            if (!why.empty())
+                refuseSetup(why);
+        }
     }
 
     void PagmoPlanner::clearPopulation()
