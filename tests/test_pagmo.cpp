@@ -173,7 +173,7 @@ TEST(Pagmo, BadParametersAreRefusedByNameAndPagmosCombinationsAtSetup)
         }
         catch (const ompl::Exception &e)
         {
-            EXPECT_NE(std::string(e.what()).find("'neighb_param' (100) must not exceed the population (30)"),
+            EXPECT_NE(std::string(e.what()).find("'neighb_param' (100) must be at most 2 N + 1 = 61"),
                       std::string::npos)
                 << e.what();
         }

@@ -100,14 +100,15 @@ namespace mhplan
         }
 
         /** \brief pagmo's pso and pso_gen index past the swarm (a crash, not an error) when the ring
-            (lbest) neighbourhood is larger than the swarm: measured with N = 30, neighb_param 61 runs and 100
-            crashes. */
+            (lbest) neighbourhood's half-width neighb_param / 2 exceeds the swarm: measured with N = 2, 3, 30,
+            neighb_param 2 N + 1 runs and 2 N + 2 crashes. */
         std::string ringFitsTheSwarm(const std::vector<double> &v, unsigned int n)
         {
-            if (u(v[5]) == 2 && u(v[6]) > n)
+            if (u(v[5]) == 2 && u(v[6]) / 2 > n)
                 return "parameter 'neighb_param' (" + std::to_string(u(v[6])) +
-                       ") must not exceed the population (" + std::to_string(n) +
-                       ") with the ring topology neighb_type = 2 (pagmo would index past the swarm)";
+                       ") must be at most 2 N + 1 = " + std::to_string(2 * n + 1) +
+                       " for the population N = " + std::to_string(n) +
+                       " with the ring topology neighb_type = 2 (pagmo would index past the swarm)";
             return "";
         }
 
