@@ -96,7 +96,7 @@ namespace mhplan
                             "1 canonical inertia, 2-4 shared random numbers, 5 constriction (Clerc), 6 FIPS"),
                     integer("neighb_type", 1, 4, 2,
                             "topology: 1 gbest, 2 lbest ring, 3 von Neumann, 4 adaptive random"),
-                    integer("neighb_param", 1, 10000, 4, "neighbourhood size (lbest, adaptive random)")};
+                    integer("neighb_param", 2, 10000, 4, "neighbourhood size (lbest, adaptive random)")};
         }
 
         /** \brief pagmo's pso and pso_gen index past the swarm (a crash, not an error) when the ring
@@ -189,7 +189,7 @@ namespace mhplan
             a.push_back(
                 {"gaco",
                  "extended ant colony optimization (Schlueter et al. 2009)",
-                 {integer("ker", 1, 10000, 30,
+                 {integer("ker", 2, 10000, 30,
                           "solutions kept in the archive (at most the population; pagmo's default is 63)"),
                   real("q", 0, 0.1, 1000000, 1, "convergence speed"),
                   real("oracle", 0, 1, 1000000000, 0, "oracle of the penalty method (0 = none)"),
