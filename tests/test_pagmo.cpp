@@ -181,6 +181,13 @@ TEST(Pagmo, BadParametersAreRefusedByNameAndPagmosCombinationsAtSetup)
         applyPlannerParameters(*pso, {{"neighb_type", "3"}});
         EXPECT_NO_THROW(ss->setup()) << name;
     }
+    // pagmo's sga refuses an odd population with the sbx crossover only in evolve(): refused at setup.
+    ob::PlannerPtr sga = registry.create("pagmo:sga", ss->getSpaceInformation(),
+                                         {{"crossover", "sbx"}, {"population_size", "31"}});
+    ss->setPlanner(sga);
+    EXPECT_THROW(ss->setup(), ompl::Exception);
+    applyPlannerParameters(*sga, {{"population_size", "32"}});
+    EXPECT_NO_THROW(ss->setup());
 }
 
 TEST(Pagmo, TooSmallAPopulationIsRaisedToTheAlgorithmsMinimum)

@@ -112,6 +112,15 @@ namespace mhplan
             return "";
         }
 
+        /** \brief pagmo's sga refuses an odd population with the sbx crossover only when it evolves. */
+        std::string sbxNeedsAnEvenPopulation(const std::vector<double> &v, unsigned int n)
+        {
+            if (u(v[5]) == 3 && n % 2 != 0)
+                return "parameter 'crossover' = 'sbx' needs an even population; population_size is " +
+                       std::to_string(n);
+            return "";
+        }
+
         std::vector<PagmoAlgorithm> build()
         {
             std::vector<PagmoAlgorithm> a;
@@ -327,6 +336,8 @@ namespace mhplan
             for (PagmoAlgorithm &x : a)
                 if (x.name == "pso" || x.name == "pso_gen")
                     x.check = ringFitsTheSwarm;
+                else if (x.name == "sga")
+                    x.check = sbxNeedsAnEvenPopulation;
             return a;
         }
     } // namespace
