@@ -161,6 +161,33 @@ TEST(Pagmo, BadParametersAreRefusedByNameAndPagmosCombinationsAtSetup)
         const std::string what = e.what();
         EXPECT_NE(what.find("pagmo:ihs: pagmo's ihs refuses its parameters"), std::string::npos) << what;
     }
+    // pagmo's pso would index past a swarm smaller than its ring neighbourhood (a crash): refused at setup.
+    for (const char *name : {"pagmo:pso", "pagmo:pso_gen"})
+    {
+        ob::PlannerPtr pso = registry.create(name, ss->getSpaceInformation(), {{"neighb_param", "100"}});
+        ss->setPlanner(pso);
+        try
+        {
+            ss->setup();
+            ADD_FAILURE() << name << ": a ring of 100 in a swarm of 30 accepted";
+        }
+        catch (const ompl::Exception &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("'neighb_param' (100) must be at most 2 N + 1 = 61"),
+                      std::string::npos)
+                << e.what();
+        }
+        // The other topologies take any neighbourhood size.
+        applyPlannerParameters(*pso, {{"neighb_type", "3"}});
+        EXPECT_NO_THROW(ss->setup()) << name;
+    }
+    // pagmo's sga refuses an odd population with the sbx crossover only in evolve(): refused at setup.
+    ob::PlannerPtr sga = registry.create("pagmo:sga", ss->getSpaceInformation(),
+                                         {{"crossover", "sbx"}, {"population_size", "31"}});
+    ss->setPlanner(sga);
+    EXPECT_THROW(ss->setup(), ompl::Exception);
+    applyPlannerParameters(*sga, {{"population_size", "32"}});
+    EXPECT_NO_THROW(ss->setup());
 }
 
 TEST(Pagmo, TooSmallAPopulationIsRaisedToTheAlgorithmsMinimum)

@@ -96,7 +96,29 @@ namespace mhplan
                             "1 canonical inertia, 2-4 shared random numbers, 5 constriction (Clerc), 6 FIPS"),
                     integer("neighb_type", 1, 4, 2,
                             "topology: 1 gbest, 2 lbest ring, 3 von Neumann, 4 adaptive random"),
-                    integer("neighb_param", 1, 10000, 4, "neighbourhood size (lbest, adaptive random)")};
+                    integer("neighb_param", 2, 10000, 4, "neighbourhood size (lbest, adaptive random)")};
+        }
+
+        /** \brief pagmo's pso and pso_gen index past the swarm (a crash, not an error) when the ring
+            (lbest) neighbourhood's half-width neighb_param / 2 exceeds the swarm: measured with N = 2, 3, 30,
+            neighb_param 2 N + 1 runs and 2 N + 2 crashes. */
+        std::string ringFitsTheSwarm(const std::vector<double> &v, unsigned int n)
+        {
+            if (u(v[5]) == 2 && u(v[6]) / 2 > n)
+                return "parameter 'neighb_param' (" + std::to_string(u(v[6])) +
+                       ") must be at most 2 N + 1 = " + std::to_string(2 * n + 1) +
+                       " for the population N = " + std::to_string(n) +
+                       " with the ring topology neighb_type = 2 (pagmo would index past the swarm)";
+            return "";
+        }
+
+        /** \brief pagmo's sga refuses an odd population with the sbx crossover only when it evolves. */
+        std::string sbxNeedsAnEvenPopulation(const std::vector<double> &v, unsigned int n)
+        {
+            if (u(v[5]) == 3 && n % 2 != 0)
+                return "parameter 'crossover' = 'sbx' needs an even population; population_size is " +
+                       std::to_string(n);
+            return "";
         }
 
         std::vector<PagmoAlgorithm> build()
@@ -176,7 +198,7 @@ namespace mhplan
             a.push_back(
                 {"gaco",
                  "extended ant colony optimization (Schlueter et al. 2009)",
-                 {integer("ker", 1, 10000, 30,
+                 {integer("ker", 2, 10000, 30,
                           "solutions kept in the archive (at most the population; pagmo's default is 63)"),
                   real("q", 0, 0.1, 1000000, 1, "convergence speed"),
                   real("oracle", 0, 1, 1000000000, 0, "oracle of the penalty method (0 = none)"),
@@ -311,6 +333,11 @@ namespace mhplan
                      return wrap(pagmo::xnes(1, v[0], v[1], v[2], v[3], kNoTolerance, kNoTolerance, true,
                                              v[4] != 0.0, r.seed));
                  }});
+            for (PagmoAlgorithm &x : a)
+                if (x.name == "pso" || x.name == "pso_gen")
+                    x.check = ringFitsTheSwarm;
+                else if (x.name == "sga")
+                    x.check = sbxNeedsAnEvenPopulation;
             return a;
         }
     } // namespace

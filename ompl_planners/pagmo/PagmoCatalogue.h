@@ -71,6 +71,9 @@ namespace mhplan
         std::function<unsigned int(const std::vector<double> &)> minimumPopulation;
         /** \brief Build the pagmo algorithm (throws pagmo's std::invalid_argument for values it refuses). */
         std::function<std::unique_ptr<PagmoAlgorithmHandle>(const PagmoRun &)> make;
+        /** \brief What pagmo does not check but needs, for the parameter values and the population size
+            (an empty string when they are fine; else why, naming the parameter). */
+        std::function<std::string(const std::vector<double> &, unsigned int)> check{};
     };
 
     /** \brief Every algorithm the bridge runs, in alphabetical order. */

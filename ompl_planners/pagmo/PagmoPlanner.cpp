@@ -7,6 +7,7 @@
 #include <pagmo/types.hpp>
 
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 
 #include <climits>
 #include <cmath>
@@ -164,6 +165,12 @@ namespace mhplan
         {
             refuseSetup("pagmo's " + algorithm_.name + " refuses its parameters: " + pagmoReason(e.what()));
         }
+        if (algorithm_.check)
+        {
+            const std::string why = algorithm_.check(values_, pagmoPopulationSize());
+            if (!why.empty())
+                refuseSetup(why);
+        }
     }
 
     void PagmoPlanner::clearPopulation()
@@ -222,6 +229,14 @@ namespace mhplan
         catch (const Interrupted &)
         {
             return false;
+        }
+        catch (const std::exception &e)
+        {
+            // What pagmo checks only when it evolves (setup() checks what is known of it beforehand).
+            const std::string text =
+                getName() + ": pagmo's " + algorithm_.name + " failed: " + pagmoReason(e.what());
+            OMPL_ERROR("%s", text.c_str());
+            throw ompl::Exception(text);
         }
     }
 
