@@ -115,8 +115,9 @@ namespace mhplan::bench::detail
         code 3), then the process exits without running destructors. */
     [[noreturn]] void finishRunChild(int fd, const std::function<void()> &body);
 
-    /** Seed OMPL's random number generators for the run process about to plan or simulate: every generator
-        the run uses is made after this call, so the run is determined by \e seed. The campaign process has
+    /** Seed OMPL's random number generators for the run about to plan or simulate (a run process runs an
+        experiment's runs in sequence, each beginning with this call): every generator the run uses is made
+        after this call, so the run is determined by \e seed. The campaign process has
         usually made generators already (parseCampaign builds each planner once to check its parameters), and
         OMPL 1.5.2's setSeed then logs that "random number generation already started" although it reseeds
         its seed generator all the same; that message is muted here. */

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench: one experiment process. It runs every planner (or every controller of a simulation) of
-   the campaign on its experiment, each run in its own child process (ChildProcess.h), reports every run to
+   the campaign on its experiment, the runs in sequence in a child process that is replaced when it dies or
+   hangs (ChildProcess.h; a crash costs only the run in flight), reports every run to
    the campaign process and writes the experiment's log (OMPL's format and writer) and its sidecars. */
 #ifndef MHPLAN_BENCH_EXPERIMENT_RUNS_H
 #define MHPLAN_BENCH_EXPERIMENT_RUNS_H
