@@ -424,7 +424,8 @@ namespace mhplan::bench
         std::vector<Experiment> planning, moving;
         for (const Experiment &e : experiments)
             (e.simulation == Experiment::kNoSimulation ? planning : moving).push_back(e);
+        // No simulation, no simulation database (an empty one would only be refused by `mhplan report`).
         return mergeInto(campaign.database, campaign, planning, statisticsTool) +
-               mergeInto(simulations, campaign, moving, statisticsTool);
+               (moving.empty() ? 0 : mergeInto(simulations, campaign, moving, statisticsTool));
     }
 } // namespace mhplan::bench
