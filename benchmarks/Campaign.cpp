@@ -141,6 +141,17 @@ namespace mhplan::bench
                     }
                 }
                 checkPlannerSpec(r, n[i], field, p, registry);
+                p.line = n[i].Mark().line + 1;
+                p.capabilities = registry.get(p.planner).capabilities;
+                for (const SpaceType s :
+                     {SpaceType::R2, SpaceType::SE2, SpaceType::Dubins, SpaceType::ReedsShepp})
+                {
+                    const unsigned flag = spaceFlag(s);
+                    const std::string why =
+                        registry.whyNotApplicable(p.planner, flag, spaceName(flag) + " worlds");
+                    if (!why.empty())
+                        p.refusals[flag] = why;
+                }
                 if (p.displayName.empty())
                     p.displayName = p.planner;
                 if (!plainName(p.displayName))
@@ -326,7 +337,7 @@ namespace mhplan::bench
         r.allowKeys(root, "",
                     {"campaign", "database", "simulation_database", "logs", "time_limit", "time_limit_kind",
                      "wall_limit", "memory_limit", "runs", "seed", "progress_interval", "planner_data",
-                     "collision", "worlds", "planners", "simulations"});
+                     "collision", "worlds", "planners", "simulations", "skip_inapplicable"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
@@ -369,6 +380,17 @@ namespace mhplan::bench
             catch (const YAML::Exception &)
             {
                 r.fail(root["planner_data"], "planner_data", "expected true or false");
+            }
+        }
+        if (root["skip_inapplicable"].IsDefined())
+        {
+            try
+            {
+                c.skipInapplicable = root["skip_inapplicable"].as<bool>();
+            }
+            catch (const YAML::Exception &)
+            {
+                r.fail(root["skip_inapplicable"], "skip_inapplicable", "expected true or false");
             }
         }
         if (root["collision"].IsDefined())
@@ -528,6 +550,22 @@ namespace mhplan::bench
             {
                 throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: " + e.what());
             }
+            // A planner that cannot run on the world's space: refused here, before anything runs, or skipped.
+            std::vector<std::size_t> skipped;
+            for (std::size_t pi = 0; pi < campaign.planners.size(); ++pi)
+            {
+                const PlannerSpec &p = campaign.planners[pi];
+                const auto refusal = p.refusals.find(spaceFlag(world.space));
+                if (refusal == p.refusals.end())
+                    continue;
+                if (!campaign.skipInapplicable)
+                    throw InputError(campaign.file + ":" + std::to_string(p.line) + ": planners[" +
+                                     std::to_string(pi) + "] (" + p.displayName + ") on worlds[" +
+                                     std::to_string(wi) + "] '" + world.name + "': " + refusal->second +
+                                     "; remove the pair, or add 'skip_inapplicable: true' to the campaign to "
+                                     "skip such pairs (benchmarks/README.md)");
+                skipped.push_back(pi);
+            }
             const CollisionModelPtr model =
                 makeCollisionModel(world, parseCollisionBackend(campaign.collision));
             std::vector<const Query *> queries;
@@ -575,6 +613,7 @@ namespace mhplan::bench
                 e.worldName = world.name;
                 e.query = q.name;
                 e.runs = campaign.runs;
+                e.skipped = skipped;
                 if (!names.insert(e.name).second)
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");

@@ -10,6 +10,7 @@
 #include "mhplan/base/World.h"
 #include "mhplan/bench/GeneratedWorlds.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -34,6 +35,13 @@ namespace mhplan::bench
         std::vector<std::string> progress;
         /** \brief Runs per experiment of this planner; 0: the campaign's \c runs (see runsOf()). */
         unsigned int runs{0};
+        /** \brief Line of its entry in the campaign file. */
+        int line{0};
+        /** \brief The state spaces the planner declares (cap:: flags of its registry entry). */
+        unsigned capabilities{0};
+        /** \brief For each world space flag the planner does not declare: why, in one sentence naming a
+            planner that runs there (PlannerRegistry::whyNotApplicable). */
+        std::map<unsigned, std::string> refusals{};
     };
 
     /** \brief A world of a campaign and the queries to run on it. */
@@ -140,6 +148,9 @@ namespace mhplan::bench
         std::string simulationDatabase;
         /** \brief Directory of the per-experiment .log files (default: the database path + ".logs"). */
         std::string logDir;
+        /** \brief Key skip_inapplicable: a planner that cannot run on a world's state space (its declared
+            capabilities) is skipped there (Experiment::skipped) instead of refusing the campaign. */
+        bool skipInapplicable{false};
     };
 
     /** \brief Read a campaign file; throws InputError naming the file, line and field on any problem.
@@ -198,6 +209,13 @@ namespace mhplan::bench
             when the campaign was enumerated: the experiment process checks the bytes it loads against it,
             and the merge checks the file again (a file edited while the campaign runs is never mixed in). */
         std::string inputHash;
+        /** \brief Indices in Campaign::planners of the planners not run here: they cannot run on the world's
+            state space (skip_inapplicable). */
+        std::vector<std::size_t> skipped;
+        bool skips(std::size_t planner) const
+        {
+            return std::find(skipped.begin(), skipped.end(), planner) != skipped.end();
+        }
     };
 
     /** \brief The query of planning experiment \e e on its \e world: a MovingAI problem's start and goal,
@@ -211,7 +229,8 @@ namespace mhplan::bench
         order: the planning experiments (worlds in order, then their queries), then one experiment per
         simulation entry ("SCENARIO-sim"). Relative world and scenario paths are tried relative to the
         campaign file first, then given to \e resolve. Throws InputError for a missing world, query or
-        scenario, a bad scenario file, or a duplicate experiment. */
+        scenario, a bad scenario file, a duplicate experiment, or a planner that cannot run on a world's state
+        space (naming the planner's line; with skip_inapplicable: Experiment::skipped instead). */
     std::vector<Experiment> enumerateExperiments(const Campaign &campaign, const WorldResolver &resolve);
 
     /** \brief The seed of run \e run of controller \e displayName in a simulation experiment (also the

@@ -635,7 +635,8 @@ namespace mhplan::bench
         std::vector<Experiment> planning, moving;
         for (const Experiment &e : experiments)
             (e.simulation == Experiment::kNoSimulation ? planning : moving).push_back(e);
+        // No simulation, no simulation database (an empty one would only be refused by `mhplan report`).
         return mergeInto(campaign.database, campaign, planning, statisticsTool, problems) +
-               mergeInto(simulations, campaign, moving, statisticsTool, problems);
+               (moving.empty() ? 0 : mergeInto(simulations, campaign, moving, statisticsTool, problems));
     }
 } // namespace mhplan::bench

@@ -315,6 +315,8 @@ namespace mhplan::bench::detail
         std::vector<RunSlot> order; // every planner's runs, in campaign order
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {
+            if (e.skips(pi))
+                continue; // cannot run on this world's space (skip_inapplicable): not run, not recorded
             const PlannerSpec &spec = c.planners[pi];
             PlannerRecord &rec = records[pi];
             const unsigned int runs = runsOf(c, spec);
@@ -476,6 +478,8 @@ namespace mhplan::bench::detail
         x.parameters["mhplan_version TEXT"] = version();
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {
+            if (e.skips(pi))
+                continue;
             ot::Benchmark::PlannerExperiment pe;
             pe.name = "geometric_" + c.planners[pi].displayName;
             pe.common = records[pi].common;
@@ -500,6 +504,8 @@ namespace mhplan::bench::detail
         std::vector<std::vector<std::string>> improvements;
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
         {
+            if (e.skips(pi))
+                continue;
             plannerNames.push_back("geometric_" + c.planners[pi].displayName);
             improvements.push_back(records[pi].improvements);
         }

@@ -240,14 +240,14 @@ namespace mhplan::bench
             slotBase[si] = slots;
             slots += campaign.simulations[si].controllers.size();
         }
-        std::size_t planningRuns = 0; // per planning experiment: every planner's own count
-        for (const auto &p : campaign.planners)
-            planningRuns += mhplan::bench::runsOf(campaign, p);
         const auto runsOf = [&](const Experiment &e)
         {
-            return e.simulation == Experiment::kNoSimulation
-                       ? planningRuns
-                       : campaign.simulations[e.simulation].controllers.size() * e.runs;
+            if (e.simulation != Experiment::kNoSimulation)
+                return campaign.simulations[e.simulation].controllers.size() * e.runs;
+            std::size_t planningRuns = 0; // every planner's own count, but the skipped ones
+            for (std::size_t p = 0; p < campaign.planners.size(); ++p)
+                planningRuns += e.skips(p) ? 0 : mhplan::bench::runsOf(campaign, campaign.planners[p]);
+            return planningRuns;
         };
 
         // Before deciding what to run: a bench running this campaign now is waited for.
@@ -268,6 +268,20 @@ namespace mhplan::bench
         if (msg && summary.skipped > 0)
             *msg << "mhplan bench: " << summary.skipped << " of " << mine.size()
                  << " experiments already complete (logs in " << campaign.logDir << "), skipping them\n";
+        // skip_inapplicable: what is not run, said once per planner.
+        std::map<std::size_t, std::vector<std::string>> notRun;
+        for (const auto &e : mine)
+            for (const std::size_t p : e.skipped)
+                notRun[p].push_back(e.name);
+        if (msg)
+            for (const auto &kv : notRun)
+            {
+                *msg << "mhplan bench: not run (cannot run on the world's state space, skip_inapplicable): "
+                     << campaign.planners[kv.first].displayName << " on";
+                for (const std::string &name : kv.second)
+                    *msg << " " << name;
+                *msg << "\n";
+            }
 
         // Where the campaign writes, checked before any run starts.
         if (options.run && !todo.empty())
@@ -298,7 +312,7 @@ namespace mhplan::bench
             {
                 if (e->simulation == Experiment::kNoSimulation)
                     for (std::size_t p = 0; p < campaign.planners.size(); ++p)
-                        slotRuns[p] += e->runs;
+                        slotRuns[p] += e->skips(p) ? 0 : e->runs;
                 else
                     for (std::size_t ci = 0; ci < campaign.simulations[e->simulation].controllers.size();
                          ++ci)

@@ -198,7 +198,7 @@ int main(int argc, char **argv)
     for (const std::string &name : registry.names())
     {
         const PlannerEntry &e = registry.get(name);
-        if (e.family == "population" && e.anyDimension)
+        if (e.origin == "mhplan" && e.runsOn(cap::SE2)) // the population planners that run off the plane
             planners.push_back(name);
     }
     planners.push_back("RRTstar");

@@ -27,10 +27,6 @@ namespace mhplan
             max_iterations = 0; see PopulationPlanner::setStagnationRestart). */
         constexpr unsigned int kAnytimeRestart = 30;
 
-        // PlannerEntry::improved and PlannerEntry::anyDimension, named.
-        constexpr bool kFaithful = false, kImproved = true;
-        constexpr bool kPlanar = false, kAnyDimension = true;
-
         /** \brief Improved variant (not in any paper): a population planner named \e name with the [GMS]
             repair, simplification and node improvement on every individual after each iteration, \e
             waypoints waypoints, polyline decoding when \e polyline, the fitness \c auto, anytime restarts. */
@@ -77,70 +73,73 @@ namespace mhplan
 
     void registerMhplanPlanners(PlannerRegistry &r)
     {
-        // One line each.
+        // One line each: name, origin, description, allocator, capabilities (cap::,
+        // mhplan/base/PlannerRegistry.h).
         r.add({"AStar", "mhplan",
                "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
-               allocatorFor<AStar>(), "lattice", kFaithful, kPlanar});
+               allocatorFor<AStar>(), cap::Planar | cap::Deterministic});
         r.add({"ThetaStar", "mhplan", "Theta*, any-angle A* on the same lattice (Nash et al. 2007)",
-               allocatorFor<ThetaStar>(), "lattice", kFaithful, kPlanar});
+               allocatorFor<ThetaStar>(), cap::Planar | cap::Deterministic});
         r.add({"BFO", "mhplan", "Bacterial foraging optimization, online APF walk (Passino 2002; [BFO])",
-               allocatorFor<BacterialWalk>(), "walk", kFaithful, kPlanar});
+               allocatorFor<BacterialWalk>(), cap::Planar | cap::NeedsClearance});
         r.add({"ATBFO", "mhplan", "Adaptive-tumble bacterial foraging, online APF walk (Abbas & Ali 2016)",
                [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
                { return std::make_shared<BacterialWalk>(si, true); },
-               "walk", kFaithful, kPlanar});
+               cap::Planar | cap::NeedsClearance});
         r.add({"BFO-GLOBAL", "mhplan",
                "BFO searching whole paths (waypoint vectors, the population planners' fitness), improved "
                "variant (not in the paper: [BFO] walks online)",
-               allocatorFor<BacterialForaging>(), "population", kImproved, kAnyDimension});
+               allocatorFor<BacterialForaging>(), cap::AllSpaces | cap::Anytime | cap::Improved});
         r.add({"ATBFO-GLOBAL", "mhplan",
                "ATBFO searching whole paths (waypoint vectors), improved variant (not in the paper: [BFO] "
                "walks "
                "online)",
                [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
                { return std::make_shared<BacterialForaging>(si, true); },
-               "population", kImproved, kAnyDimension});
+               cap::AllSpaces | cap::Anytime | cap::Improved});
         r.add({"APF", "mhplan", "Artificial potential field descent (Khatib 1986; [BFO] eqs 3-6)",
-               allocatorFor<ArtificialPotentialField>(), "walk", kFaithful, kPlanar});
+               allocatorFor<ArtificialPotentialField>(),
+               cap::Planar | cap::NeedsClearance | cap::Deterministic});
         r.add({"SMA", "mhplan",
                "Slime mould algorithm as [LRSMA] compares it (Li et al. 2020; [LRSMA] 3, 5.2): spline, "
                "fitness S",
-               allocatorFor<SlimeMould>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<SlimeMould>(), cap::AllSpaces | cap::Anytime});
         r.add({"LRSMA", "mhplan", "Levy-flight-rotation slime mould algorithm (Zheng et al. 2023)",
-               allocatorFor<LRSMA>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<LRSMA>(), cap::AllSpaces | cap::Anytime});
         r.add({"PSO", "mhplan",
                "Particle swarm optimization as [LRSMA] compares it (Kennedy & Eberhart 1995; c1 = c2 = 0.4, "
                "w = 1): spline, fitness S",
-               allocatorFor<ParticleSwarm>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<ParticleSwarm>(), cap::AllSpaces | cap::Anytime});
         r.add({"WOA", "mhplan",
                "Whale optimization algorithm as [LRSMA] compares it (Mirjalili & Lewis 2016; a from 2 to 0): "
                "spline, fitness S",
-               allocatorFor<Whale>(), "population", kFaithful, kPlanar});
+               allocatorFor<Whale>(), cap::Planar | cap::Anytime});
         r.add({"GWO", "mhplan",
                "Grey wolf optimizer as [LRSMA] compares it (Mirjalili et al. 2014; a from 2 to 0): spline, "
                "fitness S",
-               allocatorFor<GreyWolf>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<GreyWolf>(), cap::AllSpaces | cap::Anytime});
         r.add({"MGO", "mhplan", "Mountain gazelle optimizer, the original (Abdollahzadeh et al. 2022)",
-               allocatorFor<MountainGazelle>(), "population", kFaithful, kAnyDimension});
+               allocatorFor<MountainGazelle>(), cap::AllSpaces | cap::Anytime});
         r.add({"SMA-GMS", "mhplan",
                "Slime mould algorithm as [GMS] runs it: the six [GMS] operators, maximised [GMS] fitness",
-               gmsFaithful<SlimeMould>("SMA-GMS"), "population", kFaithful, kPlanar});
+               gmsFaithful<SlimeMould>("SMA-GMS"), cap::Planar | cap::Anytime});
         r.add({"MGO-GMS", "mhplan",
                "Mountain gazelle optimizer as [GMS] runs it: the six [GMS] operators, [GMS] fitness",
-               gmsFaithful<MountainGazelle>("MGO-GMS"), "population", kFaithful, kPlanar});
+               gmsFaithful<MountainGazelle>("MGO-GMS"), cap::Planar | cap::Anytime});
         r.add({"SMA-OPS", "mhplan",
                "SMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
-               operatorVariant<SlimeMould>("SMA-OPS", 3, true), "population", kImproved, kPlanar});
+               operatorVariant<SlimeMould>("SMA-OPS", 3, true), cap::Planar | cap::Anytime | cap::Improved});
         r.add(
             {"LRSMA-OPS", "mhplan",
              "LRSMA, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual, "
              "5 waypoints",
-             operatorVariant<LRSMA>("LRSMA-OPS", 5, false), "population", kImproved, kPlanar});
+             operatorVariant<LRSMA>("LRSMA-OPS", 5, false), cap::Planar | cap::Anytime | cap::Improved});
         r.add({"MGO-OPS", "mhplan",
                "MGO, improved variant (not in the paper): [GMS] repair/simplify/improve on every individual",
-               operatorVariant<MountainGazelle>("MGO-OPS", 3, true), "population", kImproved, kPlanar});
+               operatorVariant<MountainGazelle>("MGO-OPS", 3, true),
+               cap::Planar | cap::Anytime | cap::Improved});
         r.add({"GA", "mhplan", "Genetic algorithm of [GMS] with its six operators and maximised fitness",
-               allocatorFor<Genetic>(), "population", kFaithful, kPlanar});
+               allocatorFor<Genetic>(), cap::Planar | cap::Anytime});
         r.add({"GA-WALK", "mhplan",
                "GA, improved variant (not in the paper): initial and replacement individuals are random "
                "collision-free lattice walks",
@@ -151,25 +150,25 @@ namespace mhplan
                    p->setStagnationRestart(kAnytimeRestart);
                    return p;
                },
-               "population", kImproved, kPlanar});
+               cap::Planar | cap::Anytime | cap::Improved});
         r.add({"GA-MEM", "mhplan",
                "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
                "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
-               allocatorFor<MemeticGenetic>(), "memetic", kImproved, kPlanar});
+               allocatorFor<MemeticGenetic>(), cap::Planar | cap::Anytime | cap::Improved});
         r.add(
             {"SMA-MEM", "mhplan",
              "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
              "along the best path, feasible decoding, local search, restarts",
-             allocatorFor<MemeticSlimeMould>(), "memetic", kImproved, kPlanar});
+             allocatorFor<MemeticSlimeMould>(), cap::Planar | cap::Anytime | cap::Improved});
         r.add({"LRSMA-MEM", "mhplan",
                "LRSMA, improved memetic variant (not in the paper): SMA-MEM with LRSMA's Levy flight and "
                "rotation perturbation on station offsets",
-               allocatorFor<MemeticLRSMA>(), "memetic", kImproved, kPlanar});
+               allocatorFor<MemeticLRSMA>(), cap::Planar | cap::Anytime | cap::Improved});
         r.add(
             {"MGO-MEM", "mhplan",
              "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
              "stations along the best path, feasible decoding, local search, restarts",
-             allocatorFor<MemeticGazelle>(), "memetic", kImproved, kPlanar});
+             allocatorFor<MemeticGazelle>(), cap::Planar | cap::Anytime | cap::Improved});
         // pagmo2's single-objective, derivative-free algorithms, one planner each ("pagmo:de", ...; origin
         // "pagmo"; docs/algorithms.md 11).
         registerPagmoPlanners(r);

@@ -94,7 +94,7 @@ namespace mhplan::contract
                 if (fromOmplPlanners(builtin.get(name)))
                     r.add(builtin.get(name));
             r.add({"StraightLineRestarts", "mhplan", "test planner: straight line, then random restarts",
-                   allocatorFor<StraightLineRestarts>(), "population", false, true});
+                   allocatorFor<StraightLineRestarts>(), cap::AllSpaces | cap::Anytime});
             return r;
         }();
         return registry;

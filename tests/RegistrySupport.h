@@ -1,12 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* Test support: the planner lists of the tests, drawn from the built-in registry by family tag, so that a
+/* Test support: the planner lists of the tests, drawn from the built-in registry by declared
+   capabilities (PlannerEntry::capabilities) and by the planner's class (familyOf), so that a
    registered planner is tested because it is registered (no hand-written lists to keep in step). */
 #ifndef MHPLAN_TESTS_REGISTRY_SUPPORT_H
 #define MHPLAN_TESTS_REGISTRY_SUPPORT_H
 
+#include "mhplan/planners/common/PopulationPlanner.h"
+#include "mhplan/planners/field/ArtificialPotentialField.h"
+#include "mhplan/planners/field/BacterialWalk.h"
+#include "mhplan/planners/lattice/LatticePlanner.h"
+#include "mhplan/planners/memetic/MemeticPlanner.h"
 #include "mhplan/registry/Registry.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+
 #include <functional>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,25 +38,53 @@ namespace mhplan::test
         return out;
     }
 
-    /** \brief Faithful planners of family \e family. */
+    /** \brief The family a built-in planner's class belongs to, by a dynamic_cast on the allocated planner
+        (on a plane, nothing solved): "population" (a PopulationPlanner: fixed waypoint encoding), "memetic"
+        (variable-length feasible paths), "lattice" (grid searches), "walk" (robot walks on a potential
+        field), "" for OMPL's planners and a name the registry does not know (never throws). */
+    inline std::string familyOf(const std::string &name)
+    {
+        static std::map<std::string, std::string> cache;
+        static std::mutex mutex;
+        const std::lock_guard<std::mutex> lock(mutex);
+        const auto it = cache.find(name);
+        if (it != cache.end())
+            return it->second;
+        const PlannerRegistry &registry = builtinPlanners();
+        std::string family;
+        if (registry.has(name))
+        {
+            auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+            space->setBounds(0.0, 1.0);
+            auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+            const ompl::base::PlannerPtr p = registry.get(name).allocate(si);
+            if (dynamic_cast<const PopulationPlanner *>(p.get()) != nullptr)
+                family = "population";
+            else if (dynamic_cast<const MemeticPlanner *>(p.get()) != nullptr)
+                family = "memetic";
+            else if (dynamic_cast<const LatticePlanner *>(p.get()) != nullptr)
+                family = "lattice";
+            else if (dynamic_cast<const ArtificialPotentialField *>(p.get()) != nullptr ||
+                     dynamic_cast<const BacterialWalk *>(p.get()) != nullptr)
+                family = "walk";
+        }
+        cache[name] = family;
+        return family;
+    }
+
+    /** \brief Faithful planners (no cap::Improved) of family \e family (familyOf). */
     inline std::vector<std::string> faithful(const std::string &family)
     {
-        return mhplanPlanners([&](const PlannerEntry &e) { return e.family == family && !e.improved; },
+        return mhplanPlanners([&](const PlannerEntry &e)
+                              { return familyOf(e.name) == family && !e.has(cap::Improved); },
                               "a faithful '" + family + "' planner");
     }
 
-    /** \brief Every planner of family \e family. */
+    /** \brief Every planner of family \e family (familyOf). */
     inline std::vector<std::string> ofFamily(const std::string &family)
     {
-        return mhplanPlanners([&](const PlannerEntry &e) { return e.family == family; },
+        return mhplanPlanners([&](const PlannerEntry &e) { return familyOf(e.name) == family; },
                               "of family '" + family + "'");
-    }
-
-    /** \brief The entry's family, "" for a planner the registry does not know (never throws). */
-    inline std::string familyOf(const std::string &name)
-    {
-        const PlannerRegistry &registry = builtinPlanners();
-        return registry.has(name) ? registry.get(name).family : std::string();
     }
 } // namespace mhplan::test
 

@@ -459,7 +459,7 @@ TEST(MetaheuristicQuality, EveryExpectationNamesARegisteredFaithfulPopulationPla
     for (const auto &kv : expectations())
     {
         ASSERT_TRUE(builtinPlanners().has(kv.first)) << kv.first;
-        EXPECT_EQ(builtinPlanners().get(kv.first).family, "population") << kv.first;
-        EXPECT_FALSE(builtinPlanners().get(kv.first).improved) << kv.first;
+        EXPECT_EQ(test::familyOf(kv.first), "population") << kv.first;
+        EXPECT_FALSE(builtinPlanners().get(kv.first).has(cap::Improved)) << kv.first;
     }
 }

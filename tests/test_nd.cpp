@@ -198,7 +198,8 @@ TEST_P(NdPlanner, FindsAValidPathAroundTheHypersphere)
 
 INSTANTIATE_TEST_SUITE_P(Planners, NdPlanner,
                          ::testing::Combine(::testing::ValuesIn(test::mhplanPlanners(
-                                                [](const PlannerEntry &e) { return e.anyDimension; }, "N-D")),
+                                                [](const PlannerEntry &e) { return e.runsOn(cap::Rk); },
+                                                "N-D")),
                                             ::testing::Values(3u, 6u), ::testing::Bool()),
                          [](const auto &info)
                          {
@@ -360,10 +361,10 @@ TEST_P(NdRefusal, SE2StateSpaceIsRefusedAtSetup)
     start->setXY(0.1, 0.1);
     goal->setXY(0.9, 0.9);
     ss->setStartAndGoalStates(start, goal);
-    // The planners that support state spaces beyond R^k (the registry's anyDimension, docs/spaces.md)
+    // The planners that declare SE(2) (the registry's capabilities, docs/spaces.md)
     // accept SE(2) with the polyline decoding (tests/test_spaces_planners.cpp runs them there); the
     // planar ones refuse it, naming themselves and the space.
-    if (builtinPlanners().get(GetParam()).anyDimension)
+    if (builtinPlanners().get(GetParam()).runsOn(cap::SE2))
     {
         ob::PlannerPtr p = builtinPlanners().create(GetParam(), ss->getSpaceInformation(),
                                                     {{"decoding", "polyline"}, {"max_iterations", "2"}});
@@ -403,11 +404,14 @@ TEST(NdRefusal, GeneticAlgorithmIsPlanarOnly)
 
 TEST(NdRefusal, EveryPlanarPopulationOrMemeticPlannerRefusesR3ByName)
 {
-    // What the registry's anyDimension = false promises: R^3 is refused at setup, naming the planner and
+    // What a registry entry without cap::Rk promises: R^3 is refused at setup, naming the planner and
     // the dimension.
     const std::vector<std::string> planar = test::mhplanPlanners(
         [](const PlannerEntry &e)
-        { return !e.anyDimension && (e.family == "population" || e.family == "memetic"); },
+        {
+            return !e.runsOn(cap::Rk) &&
+                   (test::familyOf(e.name) == "population" || test::familyOf(e.name) == "memetic");
+        },
         "planar");
     for (const std::string &name : planar)
     {

@@ -175,7 +175,7 @@ TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
             // initial and new individuals; simplification, revision and replacement every iteration; the
             // [GMS] fitness; faithful, not an improved variant.
             ++faithfulGms;
-            EXPECT_FALSE(entry.improved) << name;
+            EXPECT_FALSE(entry.has(cap::Improved)) << name;
             EXPECT_EQ(p->params()["gms_initial"].getValue(), "1") << name;
             EXPECT_EQ(p->params()["gms_revise"].getValue(), "1") << name;
             EXPECT_EQ(p->params()["gms_simplify"].getValue(), "1") << name;
@@ -190,7 +190,7 @@ TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
         if (ops)
         {
             ++improved;
-            EXPECT_TRUE(entry.improved) << name;
+            EXPECT_TRUE(entry.has(cap::Improved)) << name;
             EXPECT_EQ(p->params()["gms_repair"].getValue(), "1");
             EXPECT_EQ(p->params()["gms_simplify"].getValue(), "1");
             EXPECT_EQ(p->params()["gms_improve"].getValue(), "1");

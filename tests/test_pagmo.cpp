@@ -9,6 +9,7 @@
 #include "mhplan/planners/population/GreyWolf.h"
 #include "mhplan/planners/population/ParticleSwarm.h"
 #include "mhplan/registry/Registry.h"
+#include "RegistrySupport.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>
@@ -87,7 +88,8 @@ TEST(Pagmo, EveryCataloguedAlgorithmIsRegisteredWithItsParameters)
         ASSERT_TRUE(registry.has(name)) << name;
         const PlannerEntry &e = registry.get(name);
         EXPECT_EQ(e.origin, "pagmo");
-        EXPECT_EQ(e.family, "population");
+        EXPECT_EQ(test::familyOf(name), "population");
+        EXPECT_TRUE(e.runsOn(cap::SE2)) << name;
         const ob::PlannerPtr p = e.allocate(ss->getSpaceInformation());
         EXPECT_EQ(p->getName(), name);
         for (const PagmoParameter &param : a.parameters)

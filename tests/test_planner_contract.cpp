@@ -487,16 +487,17 @@ class PlannerContractSE2 : public ::testing::TestWithParam<std::string>
 
 TEST_P(PlannerContractSE2, SupportedPlannersKeepTheContractTheOthersRefuseAtSetup)
 {
-    // The registry's anyDimension tag says which planners support state spaces beyond the plane
+    // The registry's capabilities say which planners support state spaces beyond the plane
     // (docs/spaces.md): they keep the contract on an SE(2) stick problem and a Dubins car problem (no
-    // world file; the test's own geometry), every other planner refuses both at setup(), naming itself.
+    // world file; the test's own geometry) with their default parameters (SMA's and LRSMA's default
+    // decoding "auto" among them), every other planner refuses both at setup(), naming itself.
     const PlannerEntry &entry = contractRegistry().get(GetParam());
     for (const bool dubins : {false, true})
     {
         SCOPED_TRACE(dubins ? "Dubins" : "SE(2)");
         og::SimpleSetupPtr ss = dubins ? test::carProblem(false) : test::blockProblem();
         ob::PlannerPtr p = entry.allocate(ss->getSpaceInformation());
-        if (!entry.anyDimension)
+        if (!entry.runsOn(dubins ? cap::Dubins : cap::SE2))
         {
             try
             {
@@ -508,17 +509,14 @@ TEST_P(PlannerContractSE2, SupportedPlannersKeepTheContractTheOthersRefuseAtSetu
             {
                 EXPECT_NE(std::string(e.what()).find(GetParam() + ": "), std::string::npos) << e.what();
                 // (APF, online BFO and the lattice searches still report isSetup() after refusing.)
-                if (entry.family == "population" || entry.family == "memetic")
+                if (test::familyOf(GetParam()) == "population" || test::familyOf(GetParam()) == "memetic")
                 {
                     EXPECT_FALSE(p->isSetup());
                 }
             }
             continue;
         }
-        std::map<std::string, std::string> params{{"seed", "11"}, {"max_iterations", "10"}};
-        if (p->params().hasParam("decoding"))
-            params["decoding"] = "polyline"; // the spline decoding is R^k only
-        applyPlannerParameters(*p, params);
+        applyPlannerParameters(*p, {{"seed", "11"}, {"max_iterations", "10"}});
         ss->setPlanner(p);
         ss->setup();
         std::vector<double> costs;
@@ -584,17 +582,18 @@ TEST(PlannerContractRegistry, HoldsEveryBuiltinMhplanPlannerAndTheTestsOwn)
 
 TEST(PlannerRegistryTags, EveryMhplanPlannerHasAKnownFamily)
 {
-    // The tests classify a planner by its family (population, memetic, lattice, walk): a planner without
-    // one, or with a misspelt one, would silently miss the checks of its kind.
+    // The tests classify a planner by its class's family (population, memetic, lattice, walk;
+    // test::familyOf): a planner of none of them would silently miss the checks of its kind.
     const std::set<std::string> families{"population", "memetic", "lattice", "walk"};
     std::set<std::string> seen;
     for (const std::string &name : mhplanPlanners())
     {
         const PlannerEntry &e = builtinPlanners().get(name);
-        EXPECT_EQ(families.count(e.family), 1u) << name << " has family '" << e.family << "'";
-        seen.insert(e.family);
+        const std::string family = test::familyOf(name);
+        EXPECT_EQ(families.count(family), 1u) << name << " has family '" << family << "'";
+        seen.insert(family);
         // An improved variant says so in its description; a faithful planner does not.
-        EXPECT_EQ(e.description.find("improved") != std::string::npos, e.improved) << name;
+        EXPECT_EQ(e.description.find("improved") != std::string::npos, e.has(cap::Improved)) << name;
     }
     EXPECT_EQ(seen, families);
 }

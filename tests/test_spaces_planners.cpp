@@ -39,10 +39,10 @@ namespace og = ompl::geometric;
 namespace
 {
     /** \brief The registered planners that solve problems on any supported state space (the registry's
-        anyDimension tag, docs/spaces.md; the global BFO among them). */
+        capabilities declare SE(2), docs/spaces.md; the global BFO among them). */
     std::vector<std::string> spacePlanners()
     {
-        return test::mhplanPlanners([](const PlannerEntry &e) { return e.anyDimension; }, "any-space");
+        return test::mhplanPlanners([](const PlannerEntry &e) { return e.runsOn(cap::SE2); }, "any-space");
     }
 
     /** \brief Planner \e name on \e ss: polyline decoding (spline is R^k only), seed, iteration budget (and
@@ -486,7 +486,7 @@ TEST(SpacesSE3, CompoundOfR3AndSO3IsSolvedByTheAnySpacePlanners)
         return std::hypot(se3->getX() - 5.0, se3->getY() - 5.0, se3->getZ() - 5.0) >= 3.0;
     };
     for (const std::string &planner :
-         test::mhplanPlanners([](const PlannerEntry &e) { return e.anyDimension; }, "any-space"))
+         test::mhplanPlanners([](const PlannerEntry &e) { return e.runsOn(cap::SE3); }, "SE(3)"))
     {
         auto space = std::make_shared<ob::SE3StateSpace>();
         ob::RealVectorBounds b(3);

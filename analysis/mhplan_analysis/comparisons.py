@@ -13,28 +13,49 @@ from . import db as dbmod
 from . import pairwise, profiles, quality
 
 
-def run_gaps(database, exp, planner, optimum):
+def _valid_exact(database, run):
+    """True for an exact run whose path passed the independent check (collision_free not 0)."""
+    return run.outcome == "exact" and dbmod.run_value(run, "collision_free") != 0
+
+
+def best_found(database, exp):
+    """The best cost any planner found on the experiment: the shortest exact, collision-free path of the
+    campaign; None when no run found one. The reference of the gaps where there is no exact optimum."""
+    lengths = [quality._length(database, r) for p in database.planners_of(exp.id) for r in database.runs_of(exp.id, p) if _valid_exact(database, r)]
+    lengths = [l for l in lengths if l is not None]
+    return min(lengths) if lengths else None
+
+
+def run_gaps(database, exp, planner, optimum, best=None):
     """Per run of \\e planner: its gap in % when it found an exact path, else +inf (a failed run is worse
-    than any path)."""
+    than any path). Without an exact \\e optimum the gap is to \\e best (best_found: the cost relative to
+    the best found; a path that is not collision-free counts +inf there)."""
     out = []
     gap_col = "optimality_gap" if "optimality_gap" in database.run_columns else None
     for r in database.runs_of(exp.id, planner):
         g = None
         if r.outcome == "exact":
-            if gap_col:
-                g = dbmod.run_value(r, gap_col)
-            elif optimum:
+            if optimum:
+                g = dbmod.run_value(r, gap_col) if gap_col else None
+                if g is None:
+                    length = quality._length(database, r)
+                    g = None if length is None else 100.0 * (length - optimum) / optimum
+            elif best and _valid_exact(database, r):
                 length = quality._length(database, r)
-                g = None if length is None else 100.0 * (length - optimum) / optimum
+                g = None if length is None else 100.0 * (length - best) / best
         out.append(math.inf if g is None else g)
     return out
 
 
 def samples(database, exp, optimum):
     """{"gap": planner -> run gaps, "t1": planner -> censored times to within 1 %} (t1 only with an
-    optimum)."""
+    optimum). Without an exact optimum "gap" is the cost relative to the best found (best_found); there is
+    then no "gap" at all when no run found a path."""
     planners = database.planners_of(exp.id)
-    out = {"gap": {p: run_gaps(database, exp, p, optimum) for p in planners}}
+    best = None if optimum else best_found(database, exp)
+    if not optimum and not best:
+        return {}
+    out = {"gap": {p: run_gaps(database, exp, p, optimum, best) for p in planners}}
     if optimum:
         out["t1"] = {p: quality.censored_times(database, database.runs_of(exp.id, p), optimum, 0.01) for p in planners}
     return out
@@ -67,7 +88,8 @@ def problem_section(database, exp, optimum):
     """HTML for one problem: the pairwise matrices on the gap and on the time to within 1 %."""
     s = samples(database, exp, optimum)
     out = []
-    for key, label in (("gap", "optimality gap (a run without an exact path counts +&infin;)"), ("t1", "time to within 1 % of the optimum (never: +&infin;)")):
+    gap_label = "optimality gap (a run without an exact path counts +&infin;)" if optimum else "cost relative to the best found, in % of the best exact collision-free path any planner found (no exact optimum; a run without such a path counts +&infin;)"
+    for key, label in (("gap", gap_label), ("t1", "time to within 1 % of the optimum (never: +&infin;)")):
         if key not in s:
             continue
         table = matrix_html(s[key])

@@ -514,6 +514,7 @@ def write_report(database_path, outdir, world_dir=None):
 
     if planning:
         parts.append("<h2>Ranking per problem</h2>")
+    campaign_planners = sorted({p for e in planning for p in database.planners_of(e.id)})
     for exp in planning:
         rows = sorted(per_exp_tables[exp.id], key=lambda r: (-r["counts"]["exact"] / max(r["runs"], 1), r["median_gap"] if r["median_gap"] is not None else math.inf))
         opt = _optimum(exp)
@@ -523,6 +524,11 @@ def write_report(database_path, outdir, world_dir=None):
         else:
             reference = _fmt(opt, 4) if opt else "not recorded (no gaps)"
         parts.append("<h3>%s</h3><p>exact optimum: %s</p>" % (html.escape(exp.name), reference))
+        # A campaign with skip_inapplicable: the planners of the campaign not run on this problem.
+        not_run = [p for p in campaign_planners if p not in database.planners_of(exp.id)]
+        if not_run:
+            parts.append("<p class='skipped'>Not run here (the planner cannot run on this world's state space; "
+                         "skipped by the campaign's skip_inapplicable, not a failure): %s.</p>" % ", ".join(html.escape(p) for p in not_run))
         parts.append(
             _table(
                 ["planner", "success rate", "median gap to best found" if best else "median gap", "median time to within 1% [s] [95% CI] (reached/runs)", "runs"],

@@ -66,8 +66,9 @@ namespace mhplan
         declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
                                     &PopulationPlanner::getWaypoints);
         declareChoice(params(), this, "decoding", &PopulationPlanner::setDecoding,
-                      &PopulationPlanner::getDecoding, "polyline,spline",
-                      "how a candidate becomes a path: straight segments between waypoints, or a spline");
+                      &PopulationPlanner::getDecoding, "polyline,spline,auto",
+                      "how a candidate becomes a path: straight segments between waypoints, a spline, or "
+                      "auto (the spline in R^k, the space's interpolation on other spaces)");
         declareRanged<unsigned int>(params(), this, kSplineSamples, &PopulationPlanner::setSplineSamples,
                                     &PopulationPlanner::getSplineSamples);
         declareChoice(params(), this, "fitness", &PopulationPlanner::setFitness,
@@ -149,10 +150,12 @@ namespace mhplan
 
     void PopulationPlanner::setDecoding(const std::string &decoding)
     {
-        const PathDecoding d = parsePathDecoding(decoding);
-        if (d != decoding_)
+        const bool autoDecoding = decoding == "auto";
+        const PathDecoding d = autoDecoding ? PathDecoding::Spline : parsePathDecoding(decoding);
+        if (d != decoding_ || autoDecoding != decodingAuto_)
             invalidate();
         decoding_ = d;
+        decodingAuto_ = autoDecoding;
     }
 
     void PopulationPlanner::setSplineSamples(unsigned int n)

@@ -31,6 +31,7 @@ namespace mhplan
                                          const PopulationDefaults &defaults)
         : ob::Planner(si, name), populationSize_(defaults.populationSize), iterations_(defaults.iterations),
           waypoints_(defaults.waypoints), decoding_(defaults.decoding),
+          decodingAuto_(defaults.decoding == PathDecoding::Spline),
           bestCostValue_(std::numeric_limits<double>::infinity())
     {
         if (const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get()))
@@ -131,11 +132,11 @@ namespace mhplan
             refuseSetup("cannot plan on the state space '" + ss->getName() + "': " + why +
                         " (docs/spaces.md)");
         const std::string on = " on the state space '" + ss->getName() + "' (not a RealVectorStateSpace)";
-        if (decoding_ == PathDecoding::Spline)
+        if (decoding_ == PathDecoding::Spline && !decodingAuto_)
             refuseSetup(
                 "parameter 'decoding' = 'spline' splines each coordinate in R^k; it is not supported" + on +
                 ", whose waypoints are joined by the space's own interpolation: set "
-                "decoding=polyline (docs/spaces.md)");
+                "decoding=polyline or auto (docs/spaces.md)");
         if (fitnessName_ == "gms")
             refuseSetup("parameter 'fitness' = 'gms' (the [GMS] f1/f2: turning angles and clearances of "
                         "straight segments) is not supported" +

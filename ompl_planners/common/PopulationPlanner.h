@@ -30,6 +30,8 @@ namespace mhplan
         /** \brief Length T of the coefficient schedules (the papers' iteration budget). */
         unsigned int iterations{30};
         unsigned int waypoints{3};
+        /** \brief Spline makes the default "auto": the spline in R^k, the space's interpolation on other
+           spaces (docs/spaces.md). */
         PathDecoding decoding{PathDecoding::Polyline};
     };
 
@@ -135,9 +137,10 @@ namespace mhplan
         /** \brief Number m of intermediate waypoints (1..100). */
         void setWaypoints(unsigned int m);
         unsigned int getWaypoints() const { return waypoints_; }
-        /** \brief "polyline" or "spline". */
+        /** \brief "polyline", "spline" or "auto" (spline in R^k; on other spaces waypoint states joined by
+           the space's interpolation, docs/spaces.md). */
         void setDecoding(const std::string &decoding);
-        std::string getDecoding() const { return toString(decoding_); }
+        std::string getDecoding() const { return decodingAuto_ ? "auto" : toString(decoding_); }
         /** \brief Number n of interpolation points (2..100000). */
         void setSplineSamples(unsigned int n);
         unsigned int getSplineSamples() const { return splineSamples_; }
@@ -356,6 +359,8 @@ namespace mhplan
         unsigned int maxIterations_{0};
         unsigned int waypoints_;
         PathDecoding decoding_;
+        /** \brief decoding = auto: decoding_ is Spline, used in R^k only. */
+        bool decodingAuto_;
         unsigned int splineSamples_{100};
         std::string fitnessName_{"auto"};
         FitnessWeights weights_;

@@ -247,7 +247,7 @@ namespace mhplan
                       "pagmo2's " + algorithm.description + " on mhplan's waypoint encoding and fitness",
                       [&algorithm](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
                       { return std::make_shared<PagmoPlanner>(si, algorithm); },
-                      "population", false, true});
+                      cap::AllSpaces | cap::Anytime});
     }
 
     void registerPagmoPlanners(PlannerRegistry &registry)

@@ -68,7 +68,7 @@ namespace mhplan
         std::unique_ptr<State> state_;
     };
 
-    /** \brief Register "pagmo:<algorithm>" in \e registry (family "population", origin "pagmo"); throws
+    /** \brief Register "pagmo:<algorithm>" in \e registry (origin "pagmo", capabilities cap::AllSpaces | cap::Anytime); throws
         std::invalid_argument for an unknown algorithm (listing those that exist) or one that cannot plan
         (gradients, constraints, several objectives). */
     void registerPagmoPlanner(PlannerRegistry &registry, const std::string &algorithm);

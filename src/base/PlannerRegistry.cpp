@@ -3,6 +3,12 @@
 
 #include "mhplan/base/World.h"
 
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/base/spaces/SE3StateSpace.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -57,6 +63,70 @@ namespace mhplan
         }
     } // namespace
 
+    unsigned spaceFlag(const ob::StateSpace &space)
+    {
+        // Subclasses first: the Dubins and Reeds-Shepp spaces are SE2StateSpaces.
+        if (const auto *rv = dynamic_cast<const ob::RealVectorStateSpace *>(&space))
+            return rv->getDimension() == 2 ? cap::R2 : cap::Rk;
+        if (dynamic_cast<const ob::DubinsStateSpace *>(&space) != nullptr)
+            return cap::Dubins;
+        if (dynamic_cast<const ob::ReedsSheppStateSpace *>(&space) != nullptr)
+            return cap::ReedsShepp;
+        if (dynamic_cast<const ob::SE2StateSpace *>(&space) != nullptr)
+            return cap::SE2;
+        if (dynamic_cast<const ob::SE3StateSpace *>(&space) != nullptr)
+            return cap::SE3;
+        return cap::OtherSpace;
+    }
+
+    unsigned spaceFlag(SpaceType space)
+    {
+        switch (space)
+        {
+        case SpaceType::R2:
+            return cap::R2;
+        case SpaceType::SE2:
+            return cap::SE2;
+        case SpaceType::Dubins:
+            return cap::Dubins;
+        case SpaceType::ReedsShepp:
+            return cap::ReedsShepp;
+        }
+        return cap::OtherSpace;
+    }
+
+    std::string spaceName(unsigned flag)
+    {
+        switch (flag)
+        {
+        case cap::R2:
+            return "R^2";
+        case cap::Rk:
+            return "R^k";
+        case cap::SE2:
+            return "SE(2)";
+        case cap::Dubins:
+            return "Dubins";
+        case cap::ReedsShepp:
+            return "Reeds-Shepp";
+        case cap::SE3:
+            return "SE(3)";
+        case cap::OtherSpace:
+            return "other spaces";
+        default:
+            return "?";
+        }
+    }
+
+    std::string spaceList(unsigned capabilities)
+    {
+        std::string out;
+        for (unsigned flag = 1; flag <= cap::OtherSpace; flag <<= 1)
+            if ((capabilities & flag) != 0)
+                out += (out.empty() ? "" : ", ") + spaceName(flag);
+        return out.empty() ? "no state space" : out;
+    }
+
     void PlannerRegistry::add(PlannerEntry entry)
     {
         if (entry.name.empty() || !entry.allocate)
@@ -92,6 +162,61 @@ namespace mhplan
         ob::PlannerPtr planner = get(name).allocate(si);
         applyPlannerParameters(*planner, params);
         return planner;
+    }
+
+    std::string PlannerRegistry::whyNotApplicable(const std::string &name, unsigned space,
+                                                  const std::string &spaceLabel, bool clearance) const
+    {
+        const PlannerEntry &entry = get(name);
+        const bool spaceOk = entry.runsOn(space);
+        const bool clearanceOk = clearance || !entry.has(cap::NeedsClearance);
+        if (spaceOk && clearanceOk)
+            return "";
+        // A planner that does run there with its defaults: of the same origin if one does, faithful before
+        // improved, then by name (the registry's order).
+        const auto fits = [&](const PlannerEntry &e)
+        { return e.runsOn(space) && (clearance || !e.has(cap::NeedsClearance)); };
+        const PlannerEntry *alternative = nullptr;
+        int bestRank = 4;
+        for (const auto &kv : entries_)
+        {
+            const PlannerEntry &e = kv.second;
+            if (!fits(e))
+                continue;
+            const int rank = (e.origin == entry.origin ? 0 : 2) + (e.improved() ? 1 : 0);
+            if (rank < bestRank)
+            {
+                bestRank = rank;
+                alternative = &e;
+            }
+        }
+        std::string why = name + " cannot run on " + spaceLabel + ": ";
+        why += spaceOk ? "it needs a state validity checker that computes clearance"
+                       : "it plans on " + spaceList(entry.capabilities) + " only";
+        if (alternative != nullptr)
+            why += "; " + alternative->name + " runs there";
+        return why;
+    }
+
+    std::string PlannerRegistry::whyNotApplicable(const std::string &name, const ob::StateSpace &space,
+                                                  bool clearance) const
+    {
+        const unsigned flag = spaceFlag(space);
+        std::string label = "the " + spaceName(flag) + " state space";
+        if (flag == cap::Rk)
+            label = "the R^" + std::to_string(space.getDimension()) + " state space";
+        if (flag == cap::OtherSpace)
+            label = "the state space '" + space.getName() + "'";
+        return whyNotApplicable(name, flag, label, clearance);
+    }
+
+    std::string PlannerRegistry::whyNotApplicable(const std::string &name,
+                                                  const ob::SpaceInformation &si) const
+    {
+        const ob::StateValidityCheckerPtr &checker = si.getStateValidityChecker();
+        const bool clearance =
+            checker && checker->getSpecs().clearanceComputationType != ob::StateValidityCheckerSpecs::NONE;
+        return whyNotApplicable(name, *si.getStateSpace(), clearance);
     }
 
     std::string checkAgainstRange(const std::string &value, const std::string &range)
@@ -146,6 +271,11 @@ namespace mhplan
                 kv.second == ps[kv.first].getValue() ? std::string() : checkAgainstRange(kv.second, range);
             if (problem.empty() && notFinite(kv.second))
                 problem = "a finite number";
+            double number = 0.0;
+            const bool numeric = range.find(':') != std::string::npos;
+            if (!problem.empty() && numeric && !parseDouble(kv.second, number) && !notFinite(kv.second))
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
+                                 kv.second + "' is not a number; expected " + problem);
             if (!problem.empty())
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
                                  kv.second + "' is out of range; expected " + problem);

@@ -4,6 +4,8 @@
 #ifndef MHPLAN_PLANNER_REGISTRY_H
 #define MHPLAN_PLANNER_REGISTRY_H
 
+#include "mhplan/base/World.h"
+
 #include <ompl/base/Planner.h>
 
 #include <functional>
@@ -15,6 +17,54 @@ namespace mhplan
 {
     using PlannerAllocator = std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &)>;
 
+    /** \brief What a planner declares it can do (PlannerEntry::capabilities; docs/spaces.md "Which planner
+        runs where"): flags combined with |, e.g. cap::Planar | cap::Anytime | cap::Improved. The state-space
+        flags name the spaces whose problems the planner's setup() accepts with its default parameters; the
+        tests check every declaration against the planner's behaviour (tests/test_capabilities.cpp). */
+    namespace cap
+    {
+        // The state spaces (a problem's space is exactly one of these; spaceFlag()).
+        constexpr unsigned R2 = 1u << 0;         ///< ompl::base::RealVectorStateSpace of dimension 2
+        constexpr unsigned Rk = 1u << 1;         ///< RealVectorStateSpace of any other dimension k >= 1
+        constexpr unsigned SE2 = 1u << 2;        ///< SE2StateSpace (a rigid body in the plane)
+        constexpr unsigned Dubins = 1u << 3;     ///< DubinsStateSpace (forward-only car)
+        constexpr unsigned ReedsShepp = 1u << 4; ///< ReedsSheppStateSpace (car that reverses)
+        constexpr unsigned SE3 = 1u << 5;        ///< SE3StateSpace (a rigid body in space)
+        /** \brief Any other space (SO(2), SO(3), users' compounds): the planner tries, its setup() decides.
+         */
+        constexpr unsigned OtherSpace = 1u << 6;
+        constexpr unsigned Planar = R2;
+        constexpr unsigned AllSpaces = R2 | Rk | SE2 | Dubins | ReedsShepp | SE3 | OtherSpace;
+        constexpr unsigned SpaceMask = AllSpaces;
+
+        // Properties.
+        /** \brief Needs a state validity checker that computes clearance (clearanceComputationType != NONE).
+         */
+        constexpr unsigned NeedsClearance = 1u << 8;
+        /** \brief With its default parameters it keeps improving its solution until the termination
+            condition holds (reporting each improvement); without it, it returns once it has a solution. */
+        constexpr unsigned Anytime = 1u << 9;
+        /** \brief Draws no random numbers: the same problem gives the same path whatever the seed. */
+        constexpr unsigned Deterministic = 1u << 10;
+        /** \brief An improved variant (not in the paper, docs/variants.md); without it the planner is
+            faithful to its publication. */
+        constexpr unsigned Improved = 1u << 11;
+    } // namespace cap
+
+    /** \brief The cap:: flag of a state space: cap::R2, cap::Rk, cap::SE2, cap::Dubins, cap::ReedsShepp,
+        cap::SE3, else cap::OtherSpace. */
+    unsigned spaceFlag(const ompl::base::StateSpace &space);
+
+    /** \brief The cap:: flag of a world's configuration space (r2 -> cap::R2, se2 -> cap::SE2, ...). */
+    unsigned spaceFlag(SpaceType space);
+
+    /** \brief The readable name of one space flag ("R^2", "R^k", "SE(2)", "Dubins", "Reeds-Shepp", "SE(3)",
+        "other spaces"). */
+    std::string spaceName(unsigned flag);
+
+    /** \brief The spaces among \e capabilities, comma-separated ("R^2, R^k, SE(2), ..."). */
+    std::string spaceList(unsigned capabilities);
+
     /** \brief One registry entry. */
     struct PlannerEntry
     {
@@ -23,16 +73,14 @@ namespace mhplan
         std::string origin;
         std::string description;
         PlannerAllocator allocate;
-        /** \brief The family the tests classify the planner by: "population" (a PopulationPlanner: fixed
-            waypoint encoding), "memetic" (variable-length feasible paths), "lattice" (grid searches),
-            "walk" (robot walks on a potential field); empty for OMPL's planners. */
-        std::string family{};
-        /** \brief True for an improved variant (not in the paper); false for a faithful planner. */
-        bool improved{false};
-        /** \brief True when the planner solves problems in any R^k (k >= 1) and on the other state spaces
-            docs/spaces.md lists (SE(2), Dubins, Reeds-Shepp, SE(3), compounds); false when it is planar only
-            (it refuses other spaces at setup()). */
-        bool anyDimension{false};
+        /** \brief What the planner declares (cap:: flags combined with |). */
+        unsigned capabilities{cap::AllSpaces};
+
+        /** \brief True when every flag of \e flags is declared. */
+        bool has(unsigned flags) const { return (capabilities & flags) == flags; }
+        /** \brief True when the planner declares the space flag \e space (spaceFlag()). */
+        bool runsOn(unsigned space) const { return (capabilities & space) != 0; }
+        bool improved() const { return has(cap::Improved); }
     };
 
     /** \brief The allocator of planner type \e P constructed as P(si). */
@@ -60,6 +108,20 @@ namespace mhplan
         /** \brief Allocate planner \e name on \e si and apply \e params (applyPlannerParameters). */
         ompl::base::PlannerPtr create(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                       const std::map<std::string, std::string> &params = {}) const;
+
+        /** \brief Empty when planner \e name declares the state space \e space (and, when \e clearance is
+            false, does not need a checker that computes clearance); else one sentence saying why it cannot
+           run there and naming a registered planner that does run there with its default parameters. Throws
+            InputError for an unknown name. */
+        std::string whyNotApplicable(const std::string &name, const ompl::base::StateSpace &space,
+                                     bool clearance = true) const;
+        /** \brief whyNotApplicable() for the problem of \e si (its space and its validity checker's
+         * clearance). */
+        std::string whyNotApplicable(const std::string &name, const ompl::base::SpaceInformation &si) const;
+        /** \brief whyNotApplicable() for space flag \e space (cap::R2, ...); \e spaceLabel names it in the
+            sentence (e.g. "the SE(2) world 'se2_narrow_passage'"). */
+        std::string whyNotApplicable(const std::string &name, unsigned space, const std::string &spaceLabel,
+                                     bool clearance = true) const;
 
       private:
         std::map<std::string, PlannerEntry> entries_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* mhplan compare: every planner on every world's first query; a table (or JSON) of success, lengths, the
-   optimum, the gap and time. */
+/* mhplan compare: every planner on every world's first query (or --query); a table (or JSON) of success,
+   lengths, the optimum, the gap and time; "n/a" where a planner's declared capabilities exclude the world's
+   space (PlannerRegistry::whyNotApplicable). */
 #include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/cli/Commands.h"
@@ -55,14 +56,17 @@ namespace mhplan::cli
     {
         static const CommandDoc doc{
             "compare [WORLD...] [options]",
-            "plan the first query of every shipped world (or of the given ones) with each planner; print a "
-            "table of success, lengths, optimum, gap and time",
+            "plan the first query (or --query) of every shipped world (or of the given ones) with each "
+            "planner; print a table of success, lengths, optimum, gap and time",
             "A run counts as exact when the planner reports an exact solution whose path passes the exact "
-            "segment check. Lengths and the gap are over exact runs; the gap is that of the median length.",
+            "segment check. Lengths and the gap are over exact runs; the gap is that of the median length. "
+            "A planner that cannot run on a world's state space (it declares other spaces, see `mhplan "
+            "planners`) is not run there: its row says n/a, and the reasons follow the table.",
             {{"WORLD", "world files or names of shipped worlds (default: every shipped world)"}},
             {{"--planners", "A,B,...",
               "comma-separated planners (default: RRTstar, InformedRRTstar, PRMstar, BITstar and every "
               "mhplan planner)"},
+             {"--query", "NAME", "the named query of each world (default: each world's first query)"},
              {"--time", "S", "time limit per run in seconds, 0.001..1000000 (default 1)"},
              {"--runs", "N", "runs per world and planner, 1..1000 (default 1)"},
              options::seed(),
@@ -74,7 +78,7 @@ namespace mhplan::cli
 
     int cmdCompare(const Argv &argv)
     {
-        const Args args("compare", argv, {{"planners", "time", "runs", "seed"}, {}, {"json"}});
+        const Args args("compare", argv, {{"planners", "time", "runs", "seed", "query"}, {}, {"json"}});
         const std::uint_fast32_t seed = seedFromArgs(args);
         const double timeLimit = args.timeLimit(1.0);
         const long long runs = args.integer("runs", 1);
@@ -113,10 +117,11 @@ namespace mhplan::cli
                       << "median len" << std::setw(12) << "optimum" << std::setw(12) << "median gap"
                       << std::setw(11) << "time [s]"
                       << "\n";
+        std::vector<std::string> reasons; // why the n/a rows are n/a, once per planner
         for (const auto &file : files)
         {
             const World world = loadWorld(file);
-            const Query &query = world.queryOrDefault("");
+            const Query &query = world.queryOrDefault(args.get("query"));
             const CollisionModelPtr model = makeCollisionModel(world);
             const OptimumOrReason optimum = optimumOrReason(world, query);
             std::ostringstream optText;
@@ -127,6 +132,33 @@ namespace mhplan::cli
                 optText << "-";
             for (const auto &name : planners)
             {
+                const std::string why = builtinPlanners().whyNotApplicable(
+                    name, spaceFlag(world.space),
+                    "the " + spaceName(spaceFlag(world.space)) + " world '" + world.name + "'");
+                if (!why.empty())
+                {
+                    if (json)
+                    {
+                        out.beginObject().field("world", world.name).field("file", file);
+                        out.key("query");
+                        writeQuery(out, query);
+                        out.field("planner", name)
+                            .field("applicable", false)
+                            .field("reason", why)
+                            .endObject();
+                        continue;
+                    }
+                    const std::string note =
+                        name + " plans on " + spaceList(builtinPlanners().get(name).capabilities) + " only";
+                    if (std::find(reasons.begin(), reasons.end(), note) == reasons.end())
+                        reasons.push_back(note);
+                    std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name
+                              << std::right << std::setw(7) << "n/a" << std::setw(12) << "-" << std::setw(12)
+                              << "-" << std::setw(12) << optText.str() << std::setw(12) << "-"
+                              << std::setw(11) << "-"
+                              << "\n";
+                    continue;
+                }
                 std::vector<double> lengths;
                 double totalTime = 0.0;
                 int exact = 0;
@@ -169,7 +201,10 @@ namespace mhplan::cli
                     out.beginObject().field("world", world.name).field("file", file);
                     out.key("query");
                     writeQuery(out, query);
-                    out.field("planner", name).field("runs", runs).field("exact", exact);
+                    out.field("planner", name)
+                        .field("applicable", true)
+                        .field("runs", runs)
+                        .field("exact", exact);
                     out.key("optimum");
                     optimum.result.found ? out.value(optimum.result.length) : out.null();
                     out.key("best_length");
@@ -211,6 +246,14 @@ namespace mhplan::cli
         }
         if (json)
             out.endArray().endObject().finish();
+        else if (!reasons.empty())
+        {
+            std::cout
+                << "\nn/a: not run, the planner cannot run on the world's state space (`mhplan planners` "
+                   "lists each planner's spaces):\n";
+            for (const std::string &why : reasons)
+                std::cout << "  " << why << "\n";
+        }
         return 0;
     }
 } // namespace mhplan::cli

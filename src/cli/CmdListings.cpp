@@ -99,9 +99,15 @@ namespace mhplan::cli
                     .field("name", name)
                     .field("origin", e.origin)
                     .field("description", e.description)
-                    .field("family", e.family)
-                    .field("improved", e.improved)
-                    .field("any_dimension", e.anyDimension);
+                    .field("improved", e.has(cap::Improved))
+                    .field("needs_clearance", e.has(cap::NeedsClearance))
+                    .field("anytime", e.has(cap::Anytime))
+                    .field("deterministic", e.has(cap::Deterministic));
+                out.key("spaces").beginArray();
+                for (unsigned flag = 1; flag <= cap::OtherSpace; flag <<= 1)
+                    if (e.runsOn(flag))
+                        out.value(spaceName(flag));
+                out.endArray();
                 out.key("parameters").beginArray();
                 for (const ParameterRow &p : plannerParameters(e))
                     out.beginObject()
@@ -115,11 +121,28 @@ namespace mhplan::cli
             out.endArray().endObject().finish();
             return 0;
         }
+        bool schedules = false; // a listed planner has both 'iterations' and 'max_iterations'
         for (const auto &name : names)
         {
             const PlannerEntry &e = reg.get(name);
             std::cout << name << " [" << e.origin << "] " << e.description << "\n";
-            for (const ParameterRow &p : plannerParameters(e))
+            // What the planner declares (PlannerEntry::capabilities).
+            std::cout << "    runs on: " << spaceList(e.capabilities & ~cap::OtherSpace)
+                      << (e.runsOn(cap::OtherSpace) ? " (and tries other spaces)" : " only") << "; "
+                      << (e.has(cap::Anytime) ? "anytime" : "stops at its first solution")
+                      << (e.has(cap::Deterministic) ? ", deterministic" : "")
+                      << (e.has(cap::NeedsClearance) ? ", needs a checker that computes clearance" : "")
+                      << (e.has(cap::Improved)   ? ", improved variant"
+                          : e.origin == "mhplan" ? ", faithful"
+                                                 : "")
+                      << "\n";
+            const std::vector<ParameterRow> rows = plannerParameters(e);
+            const auto hasRow = [&](const char *n) {
+                return std::any_of(rows.begin(), rows.end(),
+                                   [&](const ParameterRow &r) { return r.name == n; });
+            };
+            schedules = schedules || (hasRow("iterations") && hasRow("max_iterations"));
+            for (const ParameterRow &p : rows)
             {
                 std::cout << "    " << std::left << std::setw(28) << p.name << " default " << std::setw(12)
                           << p.value << " range ";
@@ -130,7 +153,8 @@ namespace mhplan::cli
                 std::cout << "\n";
             }
         }
-        std::cout << "\n" << kIterationsNote << "\n";
+        if (schedules)
+            std::cout << "\n" << kIterationsNote << "\n";
         return 0;
     }
 

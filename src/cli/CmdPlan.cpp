@@ -73,6 +73,12 @@ namespace mhplan::cli
             parseKeyValue(kv, params);
         const bool json = args.has("json");
 
+        // Known before anything runs: the planner's declared spaces (one message, naming one that runs).
+        const std::string notApplicable = builtinPlanners().whyNotApplicable(
+            plannerName, spaceFlag(world.space),
+            "the " + spaceName(spaceFlag(world.space)) + " world '" + world.name + "'");
+        if (!notApplicable.empty())
+            throw InputError(notApplicable);
         const CollisionModelPtr model =
             makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
         og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);

@@ -137,14 +137,7 @@ namespace mhplan::cli
         Simulation sim(scenario, controller, static_cast<std::uint32_t>(seed));
         const SimulationResult r = sim.run();
 
-        printSimulationReport(std::cout, r);
-        if (!r.counters.empty())
-        {
-            std::cout << "counters:  ";
-            for (const auto &kv : r.counters)
-                std::cout << " " << kv.first << "=" << std::setprecision(10) << kv.second;
-            std::cout << "\n";
-        }
+        printSimulationReport(std::cout, r); // its last line: the controller's counters
 
         if (args.has("csv"))
         {

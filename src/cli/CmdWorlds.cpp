@@ -51,7 +51,8 @@ namespace mhplan::cli
              {"--density", "D", "share of blocked cells of a random grid (default 0.25)"},
              {"--name", "NAME", "the world's name (default: from kind and seed)"},
              {"--output", "FILE",
-              "write FILE.yaml (any world) or FILE.map (a grid world, MovingAI format) instead of stdout"}},
+              "write FILE.yaml (any world) or FILE.map (a grid world, MovingAI format) instead of stdout; "
+              "a name without an extension gets .yaml"}},
             {"generate circles --count 40 --seed 3 --output circles40.yaml",
              "generate maze --width 10 --height 10 --output maze.map"}};
         return doc;
@@ -65,6 +66,21 @@ namespace mhplan::cli
                          {},
                          {}});
         checkOutputFile(args, "output");
+        // A file the other commands read: FILE.yaml / .yml / .map; a name without an extension gets .yaml.
+        std::string out = args.get("output");
+        if (args.has("output"))
+        {
+            const std::string base = out.substr(out.find_last_of('/') + 1);
+            const auto dot = base.find_last_of('.');
+            const std::string ext = dot == std::string::npos ? "" : base.substr(dot + 1);
+            if (base.empty() || base == "." || base == "..")
+                throw InputError("mhplan generate: --output '" + out + "' names no file");
+            if (dot == std::string::npos || dot == 0)
+                out += ".yaml";
+            else if (ext != "yaml" && ext != "yml" && ext != "map")
+                throw InputError("mhplan generate: --output '" + out + "': the extension '." + ext +
+                                 "' is not a world file; use .yaml (any world) or .map (a grid world)");
+        }
         if (args.positional().size() != 1)
             throw InputError("mhplan generate: expected one kind: circles, rectangles, maze or grid");
         const std::string kind = args.positional()[0];
@@ -106,7 +122,6 @@ namespace mhplan::cli
                              "'; accepted: circles, rectangles, maze, grid");
         if (args.has("name"))
             world.name = args.get("name");
-        const std::string out = args.get("output");
         const bool asMap = out.size() > 4 && out.substr(out.size() - 4) == ".map";
         if (asMap && !world.isGrid())
             throw InputError("mhplan generate: a .map output needs a grid world (maze or grid)");
@@ -145,6 +160,7 @@ namespace mhplan::cli
         std::cout << std::left << std::setw(22) << "name" << std::setw(9) << "type" << std::setw(11)
                   << "obstacles" << std::setw(8) << "radius" << std::setw(16) << "bounds"
                   << "queries / source\n";
+        bool polygonRobot = false;
         for (std::size_t i = 0; i < worlds.size(); ++i)
         {
             const World &w = worlds[i];
@@ -153,8 +169,17 @@ namespace mhplan::cli
             std::string queries;
             for (const auto &q : w.queries)
                 queries += (queries.empty() ? "" : ",") + q.name;
+            // A polygon robot's radius: its reach (the largest distance of a vertex from its reference
+            // point).
+            std::ostringstream radius;
+            radius << (w.robotPolygon.empty() ? w.robotRadius : w.robotReach());
+            if (!w.robotPolygon.empty())
+            {
+                radius << "*";
+                polygonRobot = true;
+            }
             std::cout << std::left << std::setw(22) << w.name << std::setw(9) << w.type() << std::setw(11)
-                      << w.obstacleCount() << std::setw(8) << w.robotRadius << std::setw(16) << bounds.str()
+                      << w.obstacleCount() << std::setw(8) << radius.str() << std::setw(16) << bounds.str()
                       << (queries.empty() ? "-" : queries) << " / "
                       << (w.source.empty() ? files[i] : w.source);
             if (w.isRigid())
@@ -168,6 +193,9 @@ namespace mhplan::cli
             }
             std::cout << "\n";
         }
+        if (polygonRobot)
+            std::cout << "\n* a polygon robot: its reach, the largest distance of a vertex from the robot's "
+                         "reference point\n";
         return 0;
     }
 } // namespace mhplan::cli

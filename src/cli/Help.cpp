@@ -78,7 +78,9 @@ namespace mhplan::cli
             return {
                 "--seed", "N",
                 "seed of OMPL's random number generator, 1..4294967295 (default: from the clock; the seed "
-                "in use is printed, and giving it reproduces the run)"};
+                "in use is printed). Giving it again reproduces a run bounded by iterations "
+                "(max_iterations); a run bounded by time ends wherever the clock stops it, so its path "
+                "may differ"};
         }
         OptionDoc query()
         {

@@ -63,6 +63,49 @@ namespace
             out << "  " << std::left << std::setw(21) << kv.first << kv.second << "\n";
     }
 
+    /** OMPL's messages as the program prints them: warnings and errors on stderr, information on stdout,
+        without OMPL's source file and line. An error is held back until the next message or the end of the
+        run: a planner that refuses the problem logs its reason and throws it, and main() prints it once. */
+    class CliOutputHandler : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+        {
+            flush();
+            switch (level)
+            {
+            case ompl::msg::LOG_ERROR:
+                pending_ = text;
+                return;
+            case ompl::msg::LOG_WARN:
+                std::cerr << "Warning: " << text << std::endl;
+                return;
+            case ompl::msg::LOG_INFO:
+                std::cout << "Info:    " << text << std::endl;
+                return;
+            default:
+                std::cout << "Debug:   " << text << std::endl;
+                return;
+            }
+        }
+        /** Print the held error, if any. */
+        void flush()
+        {
+            if (!pending_.empty())
+                std::cerr << "Error:   " << pending_ << std::endl;
+            pending_.clear();
+        }
+        /** Forget the held error when it is \e text (main() prints it itself). */
+        void drop(const std::string &text)
+        {
+            if (pending_ == text)
+                pending_.clear();
+        }
+
+      private:
+        std::string pending_;
+    };
+
     /** `--help` or `-h` anywhere after the subcommand asks for its help (before any other check). */
     bool asksForHelp(int argc, char **argv)
     {
@@ -83,6 +126,11 @@ int main(int argc, char **argv)
     }
     const bool helpCommand = std::strcmp(argv[1], "help") == 0;
     const std::string name = helpCommand ? argv[2] : argv[1];
+    if ((name == "version" || name == "--version") && (helpCommand || asksForHelp(argc, argv)))
+    {
+        std::cout << "usage: mhplan version\n\nprint mhplan's and OMPL's versions\n";
+        return 0;
+    }
     if (name == "version" || name == "--version")
     {
         std::cout << "mhplan " << mhplan::version() << " (OMPL " << mhplan::omplVersion() << ")\n";
@@ -102,6 +150,13 @@ int main(int argc, char **argv)
     }
     // OMPL's informational chatter goes to stderr-level only when asked.
     ompl::msg::setLogLevel(std::getenv("MHPLAN_VERBOSE") ? ompl::msg::LOG_DEBUG : ompl::msg::LOG_WARN);
+    static CliOutputHandler handler; // outlives every thread that may log
+    ompl::msg::useOutputHandler(&handler);
+    // Print a held error before leaving, whatever the way out.
+    struct FlushAtExit
+    {
+        ~FlushAtExit() { handler.flush(); }
+    } flushAtExit;
     try
     {
         const int rc = it->second.run(mhplan::cli::Argv(argv + 2, argv + argc));
@@ -131,7 +186,9 @@ int main(int argc, char **argv)
     catch (const ompl::Exception &e)
     {
         // A planner refusing the problem at setup() (docs/conventions.md): the message names the planner
-        // and what it needs; OMPL has already logged it. A problem the user can change, not a defect.
+        // and what it needs; printed once (OMPL's log of it is dropped). A problem the user can change, not
+        // a defect.
+        handler.drop(e.what());
         std::cerr << "mhplan " << name << ": error: " << e.what() << "\n";
         return 1;
     }

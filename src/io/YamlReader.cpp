@@ -3,14 +3,63 @@
 
 #include "mhplan/base/World.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace mhplan
 {
+    namespace
+    {
+        /** \brief The 1-based line of the innermost '{' or '[' (\e open) still unclosed at byte \e end of
+            \e text (brackets in quotes and comments ignored); -1 when there is none. */
+        int unclosedFlowLine(const std::string &text, int end, char open)
+        {
+            std::vector<std::pair<char, int>> stack; // bracket, line
+            int line = 1;
+            char quote = 0;
+            bool comment = false;
+            const std::size_t stop = end < 0 ? text.size() : std::min(text.size(), std::size_t(end));
+            for (std::size_t i = 0; i < stop; ++i)
+            {
+                const char c = text[i];
+                if (c == '\n')
+                {
+                    ++line;
+                    comment = false;
+                    continue;
+                }
+                if (comment)
+                    continue;
+                if (quote != 0)
+                {
+                    if (c == quote)
+                        quote = 0;
+                    continue;
+                }
+                const char before = i == 0 ? '\n' : text[i - 1];
+                if ((c == '"' || c == '\'') && std::strchr(" \t\n,[{:", before) != nullptr)
+                    quote = c; // a quoted scalar starts (an apostrophe inside a word does not)
+                else if (c == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1]))))
+                    comment = true;
+                else if (c == '{' || c == '[')
+                    stack.emplace_back(c, line);
+                else if ((c == '}' || c == ']') && !stack.empty())
+                    stack.pop_back();
+            }
+            for (auto it = stack.rbegin(); it != stack.rend(); ++it)
+                if (it->first == open)
+                    return it->second;
+            return -1;
+        }
+    } // namespace
+
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
                                const std::string &help)
     {
@@ -38,8 +87,20 @@ namespace mhplan
         catch (const YAML::ParserException &e)
         {
             std::ostringstream msg;
-            msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
-                << ": malformed YAML: " << e.msg;
+            // An unclosed '{' or '[' is noticed only at the next token, often on a later line: name the
+            // line where it was opened.
+            const bool mapFlow = e.msg.find("end of map flow") != std::string::npos;
+            const bool seqFlow = e.msg.find("end of sequence flow") != std::string::npos;
+            const int opened =
+                mapFlow || seqFlow ? unclosedFlowLine(text, e.mark.pos, mapFlow ? '{' : '[') : -1;
+            if (opened > 0)
+                msg << fileName << ":" << opened << ": malformed YAML: '" << (mapFlow ? '{' : '[')
+                    << "' opened on this line is not closed by '" << (mapFlow ? '}' : ']')
+                    << "' (the parser stopped at line " << e.mark.line + 1 << ", column " << e.mark.column + 1
+                    << ": " << e.msg << ")";
+            else
+                msg << fileName << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                    << ": malformed YAML: " << e.msg;
             throw InputError(msg.str());
         }
         if (!root.IsMap())

@@ -53,37 +53,46 @@ namespace mhplan
 {
     void registerOmplPlanners(PlannerRegistry &r)
     {
-        // OMPL's geometric planners that make sense in 2D.
-        r.add({"RRT", "ompl", "Rapidly-exploring random tree (LaValle 1998)", allocatorFor<og::RRT>()});
+        // OMPL's geometric planners: name, origin, description, allocator, capabilities (cap::, checked by
+        // tests/test_capabilities.cpp).
+        r.add({"RRT", "ompl", "Rapidly-exploring random tree (LaValle 1998)", allocatorFor<og::RRT>(),
+               cap::AllSpaces});
         r.add({"RRTConnect", "ompl", "Bidirectional RRT (Kuffner & LaValle 2000)",
-               allocatorFor<og::RRTConnect>()});
+               allocatorFor<og::RRTConnect>(), cap::AllSpaces});
         r.add({"RRTstar", "ompl", "Asymptotically optimal RRT* (Karaman & Frazzoli 2011)",
-               allocatorFor<og::RRTstar>()});
+               allocatorFor<og::RRTstar>(), cap::AllSpaces | cap::Anytime});
         r.add({"InformedRRTstar", "ompl", "Informed RRT* (Gammell et al. 2014)",
-               allocatorFor<og::InformedRRTstar>()});
+               allocatorFor<og::InformedRRTstar>(), cap::AllSpaces | cap::Anytime});
         r.add({"SORRTstar", "ompl", "Sorted informed RRT* (Gammell et al. 2018)",
-               allocatorFor<og::SORRTstar>()});
-        r.add({"PRM", "ompl", "Probabilistic roadmap (Kavraki et al. 1996)", allocatorFor<og::PRM>()});
+               allocatorFor<og::SORRTstar>(), cap::AllSpaces | cap::Anytime});
+        r.add({"PRM", "ompl", "Probabilistic roadmap (Kavraki et al. 1996)", allocatorFor<og::PRM>(),
+               cap::AllSpaces | cap::Anytime});
         r.add({"PRMstar", "ompl", "Asymptotically optimal PRM* (Karaman & Frazzoli 2011)",
-               allocatorFor<og::PRMstar>()});
-        r.add({"LazyPRMstar", "ompl", "Lazy PRM* (Bohlin & Kavraki 2000)", allocatorFor<og::LazyPRMstar>()});
+               allocatorFor<og::PRMstar>(), cap::AllSpaces | cap::Anytime});
+        r.add({"LazyPRMstar", "ompl", "Lazy PRM* (Bohlin & Kavraki 2000)", allocatorFor<og::LazyPRMstar>(),
+               cap::AllSpaces | cap::Anytime});
         r.add({"BITstar", "ompl", "Batch informed trees, k-nearest (Gammell et al. 2015)",
                [](const ob::SpaceInformationPtr &si) -> ob::PlannerPtr
-               { return std::make_shared<NamedBITstar>(si); }});
-        r.add({"ABITstar", "ompl", "Advanced BIT* (Strub & Gammell 2020)", allocatorFor<og::ABITstar>()});
+               { return std::make_shared<NamedBITstar>(si); },
+               cap::AllSpaces | cap::Anytime});
+        r.add({"ABITstar", "ompl", "Advanced BIT* (Strub & Gammell 2020)", allocatorFor<og::ABITstar>(),
+               cap::AllSpaces | cap::Anytime});
         r.add({"AITstar", "ompl", "Adaptively informed trees (Strub & Gammell 2020)",
-               allocatorFor<og::AITstar>()});
-        r.add({"FMTstar", "ompl", "Fast marching tree (Janson et al. 2015)", allocatorFor<og::FMT>()});
-        r.add({"BFMTstar", "ompl", "Bidirectional FMT* (Starek et al. 2015)", allocatorFor<og::BFMT>()});
+               allocatorFor<og::AITstar>(), cap::AllSpaces | cap::Anytime});
+        r.add({"FMTstar", "ompl", "Fast marching tree (Janson et al. 2015)", allocatorFor<og::FMT>(),
+               cap::AllSpaces});
+        r.add({"BFMTstar", "ompl", "Bidirectional FMT* (Starek et al. 2015)", allocatorFor<og::BFMT>(),
+               cap::AllSpaces});
         r.add({"KPIECE1", "ompl",
                "Kinodynamic planning by interior-exterior cell exploration (Sucan & Kavraki)",
-               allocatorFor<og::KPIECE1>()});
-        r.add({"EST", "ompl", "Expansive space trees (Hsu et al. 1997)", allocatorFor<og::EST>()});
+               allocatorFor<og::KPIECE1>(), cap::AllSpaces});
+        r.add({"EST", "ompl", "Expansive space trees (Hsu et al. 1997)", allocatorFor<og::EST>(),
+               cap::AllSpaces});
         r.add({"SBL", "ompl", "Single-query bidirectional lazy planner (Sanchez & Latombe 2003)",
-               allocatorFor<og::SBL>()});
+               allocatorFor<og::SBL>(), cap::AllSpaces});
         r.add({"STRIDE", "ompl",
                "Search tree with resolution independent density estimation (Gipson et al. 2013)",
-               allocatorFor<og::STRIDE>()});
+               allocatorFor<og::STRIDE>(), cap::AllSpaces});
     }
 
     void registerBuiltinPlanners(PlannerRegistry &r)

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* The program off the plane (issue "The suite off the plane"): what a planner cannot run on is an answer
+   known before anything runs (compare's n/a, plan's one refusal naming a planner that runs there), SMA's and
+   LRSMA's default decoding on SE(2), the planners' spaces in `mhplan planners`, and the small things a new
+   user met (generate's file name, sim's counters, --set's "not a number", version --help, --seed's help,
+   compare --query, the line of a missing '}', a polygon robot's radius in `mhplan worlds`). */
+#include "CliSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using mhplan::test::contains;
+using mhplan::test::runCli;
+
+namespace
+{
+    std::size_t count(const std::string &hay, const std::string &needle)
+    {
+        std::size_t n = 0;
+        for (auto at = hay.find(needle); at != std::string::npos; at = hay.find(needle, at + needle.size()))
+            ++n;
+        return n;
+    }
+
+    std::string tempDir(const std::string &name)
+    {
+        const fs::path dir = fs::path(testing::TempDir()) / ("mhplan_offplane_" + name);
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        return dir.string();
+    }
+
+    void write(const std::string &path, const std::string &text)
+    {
+        std::ofstream(path) << text;
+    }
+} // namespace
+
+TEST(CliOffPlane, CompareSaysNotApplicableInsteadOfStopping)
+{
+    // An R^2-only planner on car and SE(2) worlds: n/a rows, the reason once per planner, the whole table.
+    const auto r = runCli("compare bfo_case1 dubins_circles se2_narrow_passage --planners APF,GA-MEM,RRT "
+                          "--time 0.01 --seed 1");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(count(r.out, " n/a "), 4u) << r.out; // APF and GA-MEM on the two non-planar worlds
+    EXPECT_TRUE(contains(r.out, "APF plans on R^2 only")) << r.out;
+    EXPECT_TRUE(contains(r.out, "GA-MEM plans on R^2 only")) << r.out;
+    for (const char *world : {"bfo_case1", "dubins_circles", "se2_narrow_passage"})
+        EXPECT_EQ(count(r.out, std::string("\n") + world + " "), 3u) << world << "\n" << r.out;
+    EXPECT_FALSE(contains(r.out, "error")) << r.out;
+}
+
+TEST(CliOffPlane, CompareJsonMarksTheInapplicablePairsAndTakesAQuery)
+{
+    const auto r = mhplan::test::runCliStdout(
+        "compare dubins_circles --planners GA-MEM,RRT --time 0.01 --seed 1 --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(mhplan::test::pyJson(r.out, "[(x['planner'], x['applicable']) for x in d['results']]"),
+              "[('GA-MEM', False), ('RRT', True)]");
+    EXPECT_EQ(
+        mhplan::test::pyJson(r.out, "d['results'][0]['reason']"),
+        "GA-MEM cannot run on the Dubins world 'dubins_circles': it plans on R^2 only; LRSMA runs there");
+
+    // --query picks a world's query by name; an unknown name is refused, naming it.
+    const std::string dir = tempDir("query");
+    write(dir + "/two.yaml", "name: two\nbounds: {xmin: 0, xmax: 10, ymin: 0, ymax: 10}\nrobot: {radius: 0}\n"
+                             "obstacles: []\nqueries:\n  - {name: first, start: [1, 1], goal: [9, 9]}\n"
+                             "  - {name: second, start: [1, 9], goal: [9, 1]}\n");
+    const auto q = mhplan::test::runCliStdout("compare " + dir +
+                                              "/two.yaml --planners RRT --time 0.01 "
+                                              "--seed 1 --query second --json");
+    ASSERT_EQ(q.code, 0) << q.out;
+    EXPECT_EQ(mhplan::test::pyJson(q.out, "d['results'][0]['query']['name']"), "second");
+    const auto bad = runCli("compare " + dir + "/two.yaml --planners RRT --time 0.01 --query third");
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_TRUE(contains(bad.out, "third")) << bad.out;
+}
+
+TEST(CliOffPlane, PlanRefusesAnInapplicablePlannerOnceNamingOneThatRuns)
+{
+    const auto r = runCli("plan se2_narrow_passage --planner GA-MEM --seed 1");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(count(r.out, "GA-MEM"), 1u) << r.out;
+    EXPECT_TRUE(contains(r.out, "GA-MEM cannot run on the SE(2) world 'se2_narrow_passage': it plans on R^2 "
+                                "only; LRSMA runs there"))
+        << r.out;
+    // ... and the planner it names runs there with its defaults (decoding auto: the space's interpolation).
+    const auto l = runCli("plan se2_narrow_passage --planner LRSMA --seed 1 --set max_iterations=3 --quiet");
+    EXPECT_NE(l.code, 1) << l.out;
+    EXPECT_TRUE(contains(l.out, "status:")) << l.out;
+    const auto s = runCli("plan dubins_circles --planner SMA --seed 1 --set max_iterations=3 --quiet");
+    EXPECT_NE(s.code, 1) << s.out;
+    // A refusal by the planner itself (an explicit spline on SE(2)) is printed once, without OMPL's copy.
+    const auto spline =
+        runCli("plan se2_narrow_passage --planner SMA --seed 1 --set decoding=spline --set max_iterations=3");
+    EXPECT_EQ(spline.code, 1) << spline.out;
+    EXPECT_EQ(count(spline.out, "decoding=polyline or auto"), 1u) << spline.out;
+}
+
+TEST(CliOffPlane, TheSmallThings)
+{
+    // --set with a word for a number.
+    auto r = runCli("plan bfo_case1 --planner RRTstar --set range=abc");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(contains(r.out, "'abc' is not a number")) << r.out;
+    // version --help is help.
+    r = runCli("version --help");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(contains(r.out, "usage: mhplan version")) << r.out;
+    // --seed's help says what the seed reproduces.
+    r = runCli("plan --help");
+    EXPECT_TRUE(contains(r.out, "reproduces a run bounded by iterations")) << r.out;
+    // A polygon robot's radius is its reach, marked.
+    r = runCli("worlds se2_narrow_passage");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(contains(r.out, "* a polygon robot")) << r.out;
+    EXPECT_FALSE(contains(r.out, " 0       ")) << r.out;
+    // sim prints the controller's counters once.
+    r = runCli("sim bfo_case3_lines --controller plan:RRTConnect --seed 1 --set plan_time=0.05");
+    EXPECT_EQ(count(r.out, "counters:"), 1u) << r.out;
+}
+
+TEST(CliOffPlane, GenerateWritesAFileTheOtherCommandsRead)
+{
+    const std::string dir = tempDir("generate");
+    auto r = runCli("generate circles --count 5 --seed 2 --output " + dir + "/c5");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(fs::exists(dir + "/c5.yaml"));
+    EXPECT_TRUE(contains(r.out, "wrote " + dir + "/c5.yaml")) << r.out;
+    r = runCli("worlds " + dir + "/c5.yaml");
+    EXPECT_EQ(r.code, 0) << r.out;
+    r = runCli("generate circles --output " + dir + "/c5.txt");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(contains(r.out, "'.txt' is not a world file")) << r.out;
+    EXPECT_FALSE(fs::exists(dir + "/c5.txt"));
+}
+
+TEST(CliOffPlane, AMissingBraceIsReportedOnItsLine)
+{
+    const std::string dir = tempDir("brace");
+    write(dir + "/w.yaml", "name: w\n"
+                           "bounds: {xmin: 0, xmax: 10, ymin: 0, ymax: 10}\n"
+                           "robot: {radius: 0}\n"
+                           "obstacles:\n"
+                           "  - circle: {center: [5, 5], radius: 1}\n"
+                           "  - circle: {center: [2, 2], radius: 1\n"
+                           "queries:\n"
+                           "  - {name: q, start: [1, 1], goal: [9, 9]}\n");
+    const auto r = runCli("worlds " + dir + "/w.yaml");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(contains(r.out, "w.yaml:6: malformed YAML: '{' opened on this line is not closed")) << r.out;
+}
+
+TEST(CliOffPlane, PlannersShowTheirSpacesAndOnlyTheFootersThatApply)
+{
+    auto r = runCli("planners GA-MEM RRTstar");
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "runs on: R^2 only; anytime")) << r.out;
+    EXPECT_TRUE(contains(r.out, "runs on: R^2, R^k, SE(2), Dubins, Reeds-Shepp, SE(3) (and tries other "
+                                "spaces); anytime"))
+        << r.out;
+    EXPECT_FALSE(contains(r.out, "iterations versus max_iterations")) << r.out;
+    r = runCli("planners SMA");
+    EXPECT_TRUE(contains(r.out, "iterations versus max_iterations")) << r.out;
+    const auto j = mhplan::test::runCliStdout("planners AStar --json");
+    EXPECT_EQ(mhplan::test::pyJson(j.out, "(d['planners'][0]['spaces'], d['planners'][0]['deterministic'], "
+                                          "d['planners'][0]['anytime'])"),
+              "(['R^2'], True, False)");
+}
