@@ -18,6 +18,7 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -111,12 +112,26 @@ namespace mhplan::cli
         else
             std::cout << "seed " << seed << ", time limit " << timeLimit << " s, " << runs
                       << " run(s) per pair\n\n";
+        // Column widths that fit every name (a name never runs into the next column).
+        int worldWidth = 17, plannerWidth = 16;
+        for (const auto &f : files)
+            worldWidth =
+                std::max(worldWidth, static_cast<int>(std::filesystem::path(f).stem().string().size()));
+        for (const auto &p : planners)
+            plannerWidth = std::max(plannerWidth, static_cast<int>(p.size()));
+        const auto names = [&](const std::string &world, const std::string &planner)
+        {
+            std::cout << std::left << std::setw(worldWidth) << world << ' ' << std::setw(plannerWidth)
+                      << planner << ' ' << std::right;
+        };
         if (!json)
-            std::cout << std::left << std::setw(18) << "world" << std::setw(17) << "planner" << std::right
-                      << std::setw(7) << "exact" << std::setw(12) << "best len" << std::setw(12)
+        {
+            names("world", "planner");
+            std::cout << std::setw(7) << "exact" << std::setw(12) << "best len" << std::setw(12)
                       << "median len" << std::setw(12) << "optimum" << std::setw(12) << "median gap"
                       << std::setw(11) << "time [s]"
                       << "\n";
+        }
         std::vector<std::string> reasons; // why the n/a rows are n/a, once per planner
         for (const auto &file : files)
         {
@@ -152,10 +167,10 @@ namespace mhplan::cli
                         name + " plans on " + spaceList(builtinPlanners().get(name).capabilities) + " only";
                     if (std::find(reasons.begin(), reasons.end(), note) == reasons.end())
                         reasons.push_back(note);
-                    std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name
-                              << std::right << std::setw(7) << "n/a" << std::setw(12) << "-" << std::setw(12)
-                              << "-" << std::setw(12) << optText.str() << std::setw(12) << "-"
-                              << std::setw(11) << "-"
+                    names(world.name, name);
+                    std::cout << std::setw(7) << "n/a" << std::setw(12) << "-" << std::setw(12) << "-"
+                              << std::setw(12) << optText.str() << std::setw(12) << "-" << std::setw(11)
+                              << "-"
                               << "\n";
                     continue;
                 }
@@ -236,8 +251,8 @@ namespace mhplan::cli
                     else
                         gap << "-";
                 }
-                std::cout << std::left << std::setw(18) << world.name << std::setw(17) << name << std::right
-                          << std::setw(4) << exact << "/" << std::left << std::setw(2) << runs << std::right
+                names(world.name, name);
+                std::cout << std::setw(4) << exact << "/" << std::left << std::setw(2) << runs << std::right
                           << std::setw(12) << best.str() << std::setw(12) << median.str() << std::setw(12)
                           << optText.str() << std::setw(12) << gap.str() << std::setw(11) << std::fixed
                           << std::setprecision(3) << totalTime / static_cast<double>(runs) << "\n"
