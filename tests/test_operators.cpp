@@ -199,9 +199,10 @@ TEST(GmsOperators, VariantsAreRegisteredWithDistinctNamesAndSwitchesOn)
     }
     EXPECT_EQ(faithfulGms, 2u);
     EXPECT_EQ(improved, 3u);
-    // The original SMA is [LRSMA]'s: spline decoding, fitness S, no operator.
+    // The original SMA is [LRSMA]'s: spline decoding (the default "auto" is the spline on R^k,
+    // docs/spaces.md), fitness S, no operator.
     const ob::PlannerPtr sma = builtinPlanners().create("SMA", planarSpace());
-    EXPECT_EQ(sma->params()["decoding"].getValue(), "spline");
+    EXPECT_EQ(sma->params()["decoding"].getValue(), "auto");
     EXPECT_EQ(sma->params()["fitness"].getValue(), "lrsma");
 }
 

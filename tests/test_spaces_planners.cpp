@@ -387,7 +387,8 @@ TEST(SpacesRefusals, RkOnlySettingsAndPlanarPlannersRefuseSE2)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     // The spline decoding and the [GMS] fitness are R^k only: refused naming the parameter.
-    EXPECT_NE(refusal("SMA", test::blockProblem()).find("parameter 'decoding' = 'spline'"),
+    EXPECT_NE(refusal("SMA", test::blockProblem(), {{"decoding", "spline"}})
+                  .find("parameter 'decoding' = 'spline'"),
               std::string::npos);
     EXPECT_NE(refusal("MGO", test::blockProblem(), {{"fitness", "gms"}}).find("parameter 'fitness' = 'gms'"),
               std::string::npos);

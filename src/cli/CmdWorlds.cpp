@@ -158,7 +158,7 @@ namespace mhplan::cli
             return 0;
         }
         std::cout << std::left << std::setw(22) << "name" << std::setw(9) << "type" << std::setw(11)
-                  << "obstacles" << std::setw(8) << "radius" << std::setw(16) << "bounds"
+                  << "obstacles" << std::setw(9) << "radius" << std::setw(16) << "bounds"
                   << "queries / source\n";
         bool polygonRobot = false;
         for (std::size_t i = 0; i < worlds.size(); ++i)
@@ -172,14 +172,14 @@ namespace mhplan::cli
             // A polygon robot's radius: its reach (the largest distance of a vertex from its reference
             // point).
             std::ostringstream radius;
-            radius << (w.robotPolygon.empty() ? w.robotRadius : w.robotReach());
+            radius << std::setprecision(4) << (w.robotPolygon.empty() ? w.robotRadius : w.robotReach());
             if (!w.robotPolygon.empty())
             {
                 radius << "*";
                 polygonRobot = true;
             }
             std::cout << std::left << std::setw(22) << w.name << std::setw(9) << w.type() << std::setw(11)
-                      << w.obstacleCount() << std::setw(8) << radius.str() << std::setw(16) << bounds.str()
+                      << w.obstacleCount() << std::setw(9) << radius.str() << std::setw(16) << bounds.str()
                       << (queries.empty() ? "-" : queries) << " / "
                       << (w.source.empty() ? files[i] : w.source);
             if (w.isRigid())
