@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan_space_table: every population planner that runs on any state space, and RRT*, on one problem per
-   space: R^2 (bfo_case2), R^4 (a hypersphere in [0,1]^4, as tests/test_nd.cpp), SE(2)
-   (se2_narrow_passage), Dubins (dubins_circles) and Reeds-Shepp (reeds_shepp_parking), with a fixed time
-   budget and fixed seeds; prints a Markdown table of the success rate (exact paths that pass the independent
-   check) and the median cost (the problem's objective) per planner and space (docs/spaces.md).
+   space: R^2 (bfo_case2), R^4 and R^6 (a hypersphere in [0,1]^k, as tests/test_nd.cpp), SE(2)
+   (se2_narrow_passage), Dubins (dubins_circles), Reeds-Shepp (reeds_shepp_parking) and SE(3) (a stick among
+   balls, below), with a fixed time budget and fixed seeds; prints a Markdown table of the success rate (exact
+   paths that pass the independent check) and the median cost (the problem's objective) per planner and
+   space (docs/spaces.md).
 
-   mhplan_space_table [--time S] [--seeds N] [--environments DIR] */
+   mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...]
+                      [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3] */
 #include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
@@ -15,6 +17,7 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE3StateSpace.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -35,13 +38,12 @@ using namespace mhplan;
 
 namespace
 {
-    constexpr unsigned int kDimension = 4;
     constexpr double kSphereRadius = 0.25;
 
-    double sphereClearance(const double *v)
+    double sphereClearance(const double *v, unsigned int k)
     {
         double s = 0.0;
-        for (unsigned int j = 0; j < kDimension; ++j)
+        for (unsigned int j = 0; j < k; ++j)
             s += (v[j] - 0.5) * (v[j] - 0.5);
         return std::sqrt(s) - kSphereRadius;
     }
@@ -56,11 +58,12 @@ namespace
         bool isValid(const ob::State *s) const override { return clearance(s) >= 0.0; }
         double clearance(const ob::State *s) const override
         {
-            return sphereClearance(s->as<ob::RealVectorStateSpace::StateType>()->values);
+            return sphereClearance(s->as<ob::RealVectorStateSpace::StateType>()->values,
+                                   si_->getStateDimension());
         }
     };
 
-    og::SimpleSetupPtr sphereProblem()
+    og::SimpleSetupPtr sphereProblem(unsigned int kDimension)
     {
         auto space = std::make_shared<ob::RealVectorStateSpace>(kDimension);
         space->setBounds(0.0, 1.0);
@@ -81,8 +84,8 @@ namespace
         return ss;
     }
 
-    /** Independent check of an R^4 path: inside [0,1]^4 and outside the sphere at 1e-4 spacing. */
-    bool sphereFree(const og::PathGeometric &path)
+    /** Independent check of an R^k path: inside [0,1]^k and outside the sphere at 1e-4 spacing. */
+    bool sphereFree(const og::PathGeometric &path, unsigned int kDimension)
     {
         std::vector<double> q(kDimension);
         for (std::size_t i = 1; i < path.getStateCount(); ++i)
@@ -102,24 +105,118 @@ namespace
                     if (q[j] < 0.0 || q[j] > 1.0)
                         return false;
                 }
-                if (sphereClearance(q.data()) < 0.0)
+                if (sphereClearance(q.data(), kDimension) < 0.0)
                     return false;
             }
         }
         return true;
     }
 
+    /** The SE(3) problem: a stick (half length 0.8 along the body's x axis) in [0, 10]^3 among four balls;
+        valid when the stick's segment keeps out of every ball and inside the box (exact segment-ball
+        distance). Start (1, 1, 1) identity, goal (9, 9, 9) turned a half turn about z; OMPL's
+        DiscreteMotionValidator at 0.002 of the extent. */
+    constexpr double kStickHalf = 0.8;
+    const double kBalls[4][4] = {{5, 5, 5, 2.2}, {3, 6.5, 3, 1.5}, {7, 3.5, 7, 1.5}, {6.5, 6.5, 2.5, 1.2}};
+
+    bool stickValid(const ob::State *state)
+    {
+        const auto *s = state->as<ob::SE3StateSpace::StateType>();
+        const ob::SO3StateSpace::StateType &q = s->rotation();
+        // The body's x axis rotated by q.
+        const double ax = 1 - 2 * (q.y * q.y + q.z * q.z), ay = 2 * (q.x * q.y + q.w * q.z),
+                     az = 2 * (q.x * q.z - q.w * q.y);
+        const double p[3] = {s->getX(), s->getY(), s->getZ()}, d[3] = {ax, ay, az};
+        for (int e = -1; e <= 1; e += 2)
+            for (int j = 0; j < 3; ++j)
+            {
+                const double v = p[j] + e * kStickHalf * d[j];
+                if (v < 0.0 || v > 10.0)
+                    return false;
+            }
+        for (const auto &b : kBalls)
+        {
+            double t = 0.0;
+            for (int j = 0; j < 3; ++j)
+                t += (b[j] - p[j]) * d[j];
+            t = std::max(-kStickHalf, std::min(kStickHalf, t));
+            double r2 = 0.0;
+            for (int j = 0; j < 3; ++j)
+                r2 += (p[j] + t * d[j] - b[j]) * (p[j] + t * d[j] - b[j]);
+            if (r2 < b[3] * b[3])
+                return false;
+        }
+        return true;
+    }
+
+    og::SimpleSetupPtr se3Problem()
+    {
+        auto space = std::make_shared<ob::SE3StateSpace>();
+        ob::RealVectorBounds b(3);
+        b.setLow(0.0);
+        b.setHigh(10.0);
+        space->setBounds(b);
+        auto ss = std::make_shared<og::SimpleSetup>(space);
+        ss->setStateValidityChecker(stickValid);
+        ss->getSpaceInformation()->setStateValidityCheckingResolution(0.002);
+        ob::ScopedState<ob::SE3StateSpace> start(space), goal(space);
+        start->setXYZ(1, 1, 1);
+        start->rotation().setIdentity();
+        goal->setXYZ(9, 9, 9);
+        goal->rotation().setAxisAngle(0, 0, 1, M_PI);
+        ss->setStartAndGoalStates(start, goal, 1e-9);
+        ss->setOptimizationObjective(
+            std::make_shared<ob::PathLengthOptimizationObjective>(ss->getSpaceInformation()));
+        return ss;
+    }
+
+    /** Independent check of an SE(3) path: the space's interpolation at 1e-4 of the extent per state. */
+    bool se3Free(const og::SimpleSetup &ss)
+    {
+        const og::PathGeometric &path = ss.getSolutionPath();
+        const ob::SpaceInformationPtr &si = ss.getSpaceInformation();
+        ob::State *q = si->allocState();
+        bool ok = true;
+        for (std::size_t i = 1; i < path.getStateCount() && ok; ++i)
+        {
+            const double len = si->distance(path.getState(i - 1), path.getState(i));
+            const auto steps = std::max<std::size_t>(
+                1, static_cast<std::size_t>(std::ceil(len / (1e-4 * si->getMaximumExtent()))));
+            for (std::size_t s = 0; s <= steps && ok; ++s)
+            {
+                si->getStateSpace()->interpolate(path.getState(i - 1), path.getState(i), double(s) / steps,
+                                                 q);
+                ok = stickValid(q);
+            }
+        }
+        si->freeState(q);
+        return ok;
+    }
+
+    std::vector<std::string> splitList(const std::string &s)
+    {
+        std::vector<std::string> out;
+        std::stringstream in(s);
+        std::string item;
+        while (std::getline(in, item, ','))
+            if (!item.empty())
+                out.push_back(item);
+        return out;
+    }
+
     struct Problem
     {
+        std::string key;
         std::string label;
         std::function<og::SimpleSetupPtr()> make;
         std::function<bool(const og::SimpleSetup &)> independentlyFree;
     };
 
-    Problem worldProblem(const std::string &label, const std::string &file)
+    Problem worldProblem(const std::string &key, const std::string &label, const std::string &file)
     {
         auto world = std::make_shared<World>(loadWorld(file));
         Problem p;
+        p.key = key;
         p.label = label;
         p.make = [world]()
         { return makeSimpleSetup(*world, world->queries.at(0), makeCollisionModel(*world)); };
@@ -161,6 +258,7 @@ int main(int argc, char **argv)
     double timeLimit = 1.0;
     unsigned int seeds = 3;
     std::string environments = MHPLAN_ENVIRONMENTS_DIR;
+    std::vector<std::string> plannerList, problemList;
     for (int i = 1; i + 1 < argc; i += 2)
     {
         const std::string key = argv[i];
@@ -170,10 +268,15 @@ int main(int argc, char **argv)
             seeds = static_cast<unsigned int>(std::atoi(argv[i + 1]));
         else if (key == "--environments")
             environments = argv[i + 1];
+        else if (key == "--planners")
+            plannerList = splitList(argv[i + 1]);
+        else if (key == "--problems")
+            problemList = splitList(argv[i + 1]);
         else
         {
             std::cerr << "mhplan_space_table: unknown option '" << key
-                      << "'; accepted: --time S, --seeds N, --environments DIR\n";
+                      << "'; accepted: --time S, --seeds N, --environments DIR, --planners A,B,..., "
+                         "--problems r2,r4,r6,se2,dubins,reeds_shepp,se3\n";
             return 1;
         }
     }
@@ -185,23 +288,47 @@ int main(int argc, char **argv)
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ompl::RNG::setSeed(1);
 
-    const std::vector<Problem> problems = {
-        worldProblem("R^2 (bfo_case2)", environments + "/bfo_case2.yaml"),
-        {"R^4 (hypersphere)", sphereProblem,
-         [](const og::SimpleSetup &ss) { return sphereFree(ss.getSolutionPath()); }},
-        worldProblem("SE(2) (se2_narrow_passage)", environments + "/se2_narrow_passage.yaml"),
-        worldProblem("Dubins (dubins_circles)", environments + "/dubins_circles.yaml"),
-        worldProblem("Reeds-Shepp (reeds_shepp_parking)", environments + "/reeds_shepp_parking.yaml"),
+    const std::vector<Problem> all = {
+        worldProblem("r2", "R^2 (bfo_case2)", environments + "/bfo_case2.yaml"),
+        {"r4", "R^4 (hypersphere)", [] { return sphereProblem(4); },
+         [](const og::SimpleSetup &ss) { return sphereFree(ss.getSolutionPath(), 4); }},
+        {"r6", "R^6 (hypersphere)", [] { return sphereProblem(6); },
+         [](const og::SimpleSetup &ss) { return sphereFree(ss.getSolutionPath(), 6); }},
+        worldProblem("se2", "SE(2) (se2_narrow_passage)", environments + "/se2_narrow_passage.yaml"),
+        worldProblem("dubins", "Dubins (dubins_circles)", environments + "/dubins_circles.yaml"),
+        worldProblem("reeds_shepp", "Reeds-Shepp (reeds_shepp_parking)",
+                     environments + "/reeds_shepp_parking.yaml"),
+        {"se3", "SE(3) (stick among balls)", se3Problem, se3Free},
     };
-    const PlannerRegistry &registry = builtinPlanners();
-    std::vector<std::string> planners;
-    for (const std::string &name : registry.names())
+    std::vector<Problem> problems;
+    for (const Problem &p : all)
+        if (problemList.empty() ||
+            std::find(problemList.begin(), problemList.end(), p.key) != problemList.end())
+            problems.push_back(p);
+    if (problems.empty())
     {
-        const PlannerEntry &e = registry.get(name);
-        if (e.origin == "mhplan" && e.runsOn(cap::SE2)) // the population planners that run off the plane
-            planners.push_back(name);
+        std::cerr << "mhplan_space_table: --problems names none of r2,r4,r6,se2,dubins,reeds_shepp,se3\n";
+        return 1;
     }
-    planners.push_back("RRTstar");
+    const PlannerRegistry &registry = builtinPlanners();
+    std::vector<std::string> planners = plannerList;
+    if (planners.empty())
+    {
+        for (const std::string &name : registry.names())
+        {
+            const PlannerEntry &e = registry.get(name);
+            if (e.origin == "mhplan" && e.runsOn(cap::SE2)) // mhplan's planners that run off the plane
+                planners.push_back(name);
+        }
+        planners.push_back("RRTstar");
+        planners.push_back("InformedRRTstar");
+    }
+    for (const std::string &name : planners)
+        if (!registry.has(name))
+        {
+            std::cerr << "mhplan_space_table: --planners: unknown planner '" << name << "'\n";
+            return 1;
+        }
 
     std::cout << "| planner | ";
     for (const Problem &p : problems)
@@ -222,8 +349,9 @@ int main(int argc, char **argv)
             {
                 const og::SimpleSetupPtr ss = problem.make();
                 std::map<std::string, std::string> params;
-                if (name != "RRTstar")
-                    params = {{"seed", std::to_string(seed)}, {"decoding", "polyline"}};
+                // mhplan's planners take the seed (their default decoding, auto, fits every space).
+                if (registry.get(name).origin != "ompl")
+                    params = {{"seed", std::to_string(seed)}};
                 try
                 {
                     ss->setPlanner(registry.create(name, ss->getSpaceInformation(), params));

@@ -154,21 +154,21 @@ namespace mhplan
         r.add({"GA-MEM", "mhplan",
                "GA, improved memetic variant (not in the paper): variable-length feasible paths from "
                "multi-resolution walks, path crossover, detour mutation, crowding, local search, restarts",
-               allocatorFor<MemeticGenetic>(), cap::Planar | cap::Anytime | cap::Improved});
+               allocatorFor<MemeticGenetic>(), cap::AllSpaces | cap::Anytime | cap::Improved});
         r.add(
             {"SMA-MEM", "mhplan",
              "SMA, improved memetic variant (not in the paper): the SMA update on normal offsets at stations "
              "along the best path, feasible decoding, local search, restarts",
-             allocatorFor<MemeticSlimeMould>(), cap::Planar | cap::Anytime | cap::Improved});
+             allocatorFor<MemeticSlimeMould>(), cap::AllSpaces | cap::Anytime | cap::Improved});
         r.add({"LRSMA-MEM", "mhplan",
                "LRSMA, improved memetic variant (not in the paper): SMA-MEM with LRSMA's Levy flight and "
                "rotation perturbation on station offsets",
-               allocatorFor<MemeticLRSMA>(), cap::Planar | cap::Anytime | cap::Improved});
+               allocatorFor<MemeticLRSMA>(), cap::AllSpaces | cap::Anytime | cap::Improved});
         r.add(
             {"MGO-MEM", "mhplan",
              "MGO, improved memetic variant (not in the paper): the four gazelle moves on normal offsets at "
              "stations along the best path, feasible decoding, local search, restarts",
-             allocatorFor<MemeticGazelle>(), cap::Planar | cap::Anytime | cap::Improved});
+             allocatorFor<MemeticGazelle>(), cap::AllSpaces | cap::Anytime | cap::Improved});
         // pagmo2's single-objective, derivative-free algorithms, one planner each ("pagmo:de", ...; origin
         // "pagmo"; docs/algorithms.md 11).
         registerPagmoPlanners(r);

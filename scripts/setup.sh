@@ -12,7 +12,7 @@ BUILD_DIR="${1:-${MHPLAN_BUILD_DIR:-build}}"
 
 PACKAGES=(
   g++ cmake make clang
-  libompl-dev libfcl-dev libeigen3-dev libyaml-cpp-dev
+  libompl-dev libfcl-dev libassimp-dev libeigen3-dev libyaml-cpp-dev
   libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libpagmo-dev
   ompl-demos sqlite3 libsqlite3-dev libgif-dev

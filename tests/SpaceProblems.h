@@ -5,6 +5,8 @@
 #ifndef MHPLAN_TESTS_SPACE_PROBLEMS_H
 #define MHPLAN_TESTS_SPACE_PROBLEMS_H
 
+#include "mhplan/collision/CarSpaces.h"
+
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
@@ -161,7 +163,7 @@ namespace mhplan::test
         if (reverse)
             space = std::make_shared<ompl::base::ReedsSheppStateSpace>(1.0);
         else
-            space = std::make_shared<ompl::base::DubinsStateSpace>(1.0);
+            space = std::make_shared<SafeDubinsStateSpace>(1.0); // OMPL's dubins() may assert
         auto ss = se2Problem(
             space,
             [circles](const ompl::base::State *s) { return pointAmongCircles(s, circles, kCheckerMargin); },

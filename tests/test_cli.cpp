@@ -131,7 +131,7 @@ TEST(Cli, RefusesBadInputWithAClearMessage)
     const std::vector<Case> cases = {
         {"plan bfo_case1 --planner NoSuchPlanner", {"unknown planner 'NoSuchPlanner'", "RRTstar", "PRMstar"}},
         {"plan bfo_case1 --planner RRTstar --set nonsense=1", {"no parameter 'nonsense'", "goal_bias"}},
-        {"plan bfo_case1 --planner RRTstar --set goal_bias=7", {"goal_bias", "out of range", "[0., 1.]"}},
+        {"plan bfo_case1 --planner RRTstar --set goal_bias=-0.5", {"goal_bias", "out of range", ">= 0"}},
         {"plan bfo_case1 --planner RRTstar --set goal_bias", {"expected key=value"}},
         {"plan no_such_world", {"no_such_world", "no such file"}},
         {"plan bfo_case1 --colour red", {"unknown option '--colour'", "--planner"}},

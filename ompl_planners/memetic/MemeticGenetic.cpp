@@ -67,6 +67,33 @@ namespace mhplan
         return best;
     }
 
+    bool MemeticGenetic::stateOffspring(std::size_t a, Individual &child)
+    {
+        // The same operators on paths of states (docs/spaces.md): crossover at close states, and a detour
+        // through a state drawn near a piece or a re-connect of a piece (the state mode's re-walk).
+        MemeticStateToolkit &tk = stateToolkit();
+        const std::size_t n = pop_.size();
+        bool changed = false;
+        if (n > 1 && rng_.uniform01() < crossoverRate_)
+        {
+            std::size_t b = tournament();
+            if (b == a)
+                b = (a + 1 + static_cast<std::size_t>(rng_.uniformInt(0, int(n) - 2))) % n;
+            const double radius = 2.5 * pop_[a].cost / 47.0;
+            changed = tk.splice(pop_[a].states, pop_[b].states, radius, rng_.uniform01() < 0.5, child.states);
+        }
+        if (!changed)
+            child.states = pop_[a].states;
+        if (!changed || rng_.uniform01() < mutationRate_)
+        {
+            if (rng_.uniform01() < 0.35)
+                changed = tk.detour(child.states, 0.3) || changed;
+            else
+                changed = tk.reconnect(child.states, 0.3, 2000, stopFunction()) || changed;
+        }
+        return changed;
+    }
+
     bool MemeticGenetic::generation(unsigned long /*t*/)
     {
         const std::size_t n = pop_.size();
@@ -76,6 +103,15 @@ namespace mhplan
             if (stopRequested())
                 return false;
             const std::size_t a = tournament();
+            if (stateMode())
+            {
+                if (!stateOffspring(a, child))
+                    continue;
+                if (!improveAndEvaluate(child))
+                    return false;
+                crowdingInsert(child);
+                continue;
+            }
             bool changed = false;
             if (n > 1 && rng_.uniform01() < crossoverRate_)
             {

@@ -8,7 +8,9 @@
 namespace mhplan
 {
     /** \brief GA-MEM: the genetic algorithm's selection / crossover / mutation on variable-length feasible
-        paths, with memetic local search (MemeticPlanner: walks, tightening, elite polish, restarts).
+        paths, with memetic local search (MemeticPlanner: walks, tightening, elite polish, restarts). In the
+        state mode (any space but R^2, docs/spaces.md) the crossover joins paths of states at close states
+        and the mutations are the detour (0.35) and the re-connect of a piece (0.65).
 
         Each generation produces N offspring: a parent by tournament (size \c tournament_size, on cost);
         with probability \c crossover_rate a second parent and a path crossover where the parents pass
@@ -44,6 +46,9 @@ namespace mhplan
 
       private:
         std::size_t tournament();
+        /** \brief State mode: an offspring of parent \e a into \e child.states; false when no operator
+            changed it. */
+        bool stateOffspring(std::size_t a, Individual &child);
 
         double crossoverRate_{0.7};
         double mutationRate_{0.5};

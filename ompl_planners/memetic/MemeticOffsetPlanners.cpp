@@ -69,6 +69,8 @@ namespace mhplan
         r_.clear();
         n_.clear();
         seg_.clear();
+        rs_.clear();
+        coordScale_.clear();
     }
 
     double OffsetMemeticPlanner::scheduleFraction(unsigned long t) const
@@ -79,6 +81,11 @@ namespace mhplan
 
     void OffsetMemeticPlanner::buildStations()
     {
+        if (stateMode())
+        {
+            buildStateStations();
+            return;
+        }
         const MemeticPath &ref = reference_.path;
         double turn = 0.0;
         for (std::size_t i = 1; i + 1 < ref.size(); ++i)
@@ -104,8 +111,14 @@ namespace mhplan
         }
     }
 
-    void OffsetMemeticPlanner::encode(const MemeticPath &path, std::vector<double> &x) const
+    void OffsetMemeticPlanner::encode(const Individual &ind, std::vector<double> &x)
     {
+        if (stateMode())
+        {
+            encodeStates(ind.states, x);
+            return;
+        }
+        const MemeticPath &path = ind.path;
         const double bound = offsetBound();
         x.assign(stations(), 0.0);
         for (unsigned int k = 0; k < stations(); ++k)
@@ -153,14 +166,14 @@ namespace mhplan
         buildStations();
         x_.resize(pop_.size());
         for (std::size_t i = 0; i < pop_.size(); ++i)
-            encode(pop_[i].path, x_[i]);
+            encode(pop_[i], x_[i]);
     }
 
     void OffsetMemeticPlanner::populationChanged()
     {
         x_.resize(pop_.size());
         for (std::size_t i = 0; i < pop_.size(); ++i)
-            encode(pop_[i].path, x_[i]);
+            encode(pop_[i], x_[i]);
         updateReference();
     }
 
@@ -176,12 +189,14 @@ namespace mhplan
         epochLength_ = std::min<unsigned long>(epochLength_ * 2, 1ul << 40);
         x_.resize(pop_.size());
         for (std::size_t i = 0; i < pop_.size(); ++i)
-            encode(pop_[i].path, x_[i]);
+            encode(pop_[i], x_[i]);
         updateReference();
     }
 
     bool OffsetMemeticPlanner::decodeEvaluate(std::vector<double> &x, Individual &out)
     {
+        if (stateMode())
+            return decodeEvaluateStates(x, out);
         MemeticToolkit &tk = toolkit();
         const MemeticPath &ref = reference_.path;
         const unsigned int k = stations();
@@ -238,7 +253,7 @@ namespace mhplan
         }
         if (!improveAndEvaluate(out))
             return false;
-        encode(out.path, x);
+        encode(out, x);
         return true;
     }
 

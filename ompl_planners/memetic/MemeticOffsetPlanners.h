@@ -31,6 +31,12 @@ namespace mhplan
           line of station k closest to r_k (0 when it does not cross within the offset range).
         - Offsets are bounded by +-D, D = \c offset_range x the bounds' larger side (the "bounds" of the
           position; random positions are uniform in them).
+        - State mode (any space but R^2, docs/spaces.md): the stations are K = min(\c max_stations, 8 + the
+          reference's interior waypoints) states at equal arc length along the reference, a position holds a
+          displacement of every coordinate of the parametrisation at every station (coordinate c scaled by
+          its range over the largest range, so D applies to all alike); the decoding and the fallback to the
+          reference are as above with the space's interpolation; the re-encoding is the displacement of the
+          improved path's state at the station's arc share.
         - Schedules t/T: T = \c iterations generations per epoch; an epoch ends by a restart with elitism
           (MemeticPlanner) and the next one runs twice as long, so no time budget is needed. */
     class OffsetMemeticPlanner : public MemeticPlanner
@@ -58,8 +64,8 @@ namespace mhplan
         /** \brief Decode \e x into \e out, improve and evaluate it and re-encode the result into \e x; false
             when interrupted. */
         bool decodeEvaluate(std::vector<double> &x, Individual &out);
-        /** \brief Offsets of \e path against the current reference. */
-        void encode(const MemeticPath &path, std::vector<double> &x) const;
+        /** \brief Offsets of \e ind's path against the current reference. */
+        void encode(const Individual &ind, std::vector<double> &x);
         /** \brief Uniform random position in [-D, D]^K. */
         void randomPosition(std::vector<double> &x);
         void clampPosition(std::vector<double> &x) const;
@@ -68,7 +74,12 @@ namespace mhplan
         /** \brief The schedule index t in 1..T of generation \e t of the epoch, and T. */
         double scheduleFraction(unsigned long t) const;
 
-        unsigned int stations() const { return static_cast<unsigned int>(r_.size()); }
+        /** \brief The length of a position: K (planar) or K times the parametrisation's dimension (state
+            mode). */
+        unsigned int stations() const
+        {
+            return static_cast<unsigned int>(stateMode() ? rs_.size() * stateDim_ : r_.size());
+        }
         double offsetBound() const { return offsetRange_ * scale(); }
 
         /** \brief Positions, one per individual of pop_. */
@@ -76,6 +87,10 @@ namespace mhplan
 
       private:
         void buildStations();
+        // State mode (MemeticOffsetStates.cpp, docs/spaces.md "The memetic planners off the plane").
+        void buildStateStations();
+        void encodeStates(const StatePath &path, std::vector<double> &x);
+        bool decodeEvaluateStates(std::vector<double> &x, Individual &out);
 
         unsigned int iterations_{30};
         unsigned int maxStations_{64};
@@ -86,6 +101,10 @@ namespace mhplan
         MemeticPath r_;
         std::vector<Vec2> n_;
         std::vector<std::size_t> seg_;
+        StatePath rs_;
+        unsigned int stateDim_{0};
+        /** \brief State mode: coordinate c of an offset is x * coordScale_[c] (its range / the largest). */
+        std::vector<double> coordScale_;
     };
 
     /** \brief SMA-MEM: the slime mould algorithm's update (Li et al. 2020) on station offsets. Each

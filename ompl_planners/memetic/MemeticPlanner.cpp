@@ -5,6 +5,7 @@
 #include "mhplan/base/Parameters.h"
 #include "mhplan/collision/Validity.h"
 
+#include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -49,6 +50,9 @@ namespace mhplan
         constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000,
                                          "generations without improvement before a restart (the elite kept)"};
         constexpr ParamRange kBisections{"bisections", 4, 1, 40, "bisection steps of each pull move"};
+        constexpr ParamRange kValidatorMargin{
+            "validator_margin", 0, 0.05, 4,
+            "margin kept with OMPL's DiscreteMotionValidator, in its sample spacings (0 = none)"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -89,6 +93,8 @@ namespace mhplan
                                     &MemeticPlanner::getStagnation);
         declareRanged<unsigned int>(params(), this, kBisections, &MemeticPlanner::setBisections,
                                     &MemeticPlanner::getBisections);
+        declareRanged<double>(params(), this, kValidatorMargin, &MemeticPlanner::setValidatorMargin,
+                              &MemeticPlanner::getValidatorMargin);
 
         addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
@@ -96,6 +102,12 @@ namespace mhplan
                                    [this] { return std::to_string(evaluationCount()); });
         addPlannerProgressProperty("motion checks INTEGER",
                                    [this] { return std::to_string(motionCheckCount()); });
+        addPlannerProgressProperty("state checks INTEGER",
+                                   [this] { return std::to_string(stateCheckCount()); });
+        addPlannerProgressProperty("cached motion checks INTEGER",
+                                   [this] { return std::to_string(cacheHitCount()); });
+        addPlannerProgressProperty("improvements INTEGER",
+                                   [this] { return std::to_string(improvementCount()); });
     }
 
     MemeticPlanner::~MemeticPlanner()
@@ -187,6 +199,21 @@ namespace mhplan
         bisections_ = n;
     }
 
+    void MemeticPlanner::setValidatorMargin(double m)
+    {
+        checkParameter(kValidatorMargin, m);
+        validatorMargin_ = m;
+    }
+
+    double MemeticPlanner::marginDistance() const
+    {
+        // Only OMPL's sampling validator leaves gaps between its samples; mhplan's exact and certified
+        // validators decide every point of a motion (docs/variants.md).
+        if (dynamic_cast<const ob::DiscreteMotionValidator *>(si_->getMotionValidator().get()) == nullptr)
+            return 0.0;
+        return validatorMargin_ * si_->getStateValidityCheckingResolution() * si_->getMaximumExtent();
+    }
+
     void MemeticPlanner::refuseSetup(const std::string &message)
     {
         setup_ = false;
@@ -201,12 +228,12 @@ namespace mhplan
         const ob::StateSpacePtr &ss = si_->getStateSpace();
         const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(ss.get());
         if (space == nullptr || space->getDimension() != 2)
-            refuseSetup(
-                "needs a 2-dimensional ompl::base::RealVectorStateSpace (the lattice walks, pull moves "
-                "and crossover joints are planar); got the state space '" +
-                ss->getName() + "'" +
-                (space != nullptr ? " of dimension " + std::to_string(space->getDimension()) : "") +
-                ". Use SMA, LRSMA or MGO in R^k.");
+        {
+            // Any other space: the state mode (docs/spaces.md, "The memetic planners off the plane").
+            setupStateMode();
+            return;
+        }
+        stateMode_ = false;
         const ob::RealVectorBounds &b = space->getBounds();
         for (unsigned int j = 0; j < 2; ++j)
             if (!std::isfinite(b.low[j]) || !std::isfinite(b.high[j]) || b.low[j] >= b.high[j])
@@ -225,6 +252,9 @@ namespace mhplan
         bestPath_.clear();
         closest_.clear();
         polished_.clear();
+        bestStates_.clear();
+        closestStates_.clear();
+        polishedStates_.clear();
         level_ = 0;
         noPath_ = false;
         fillCut_ = false;
@@ -234,6 +264,11 @@ namespace mhplan
         restarts_ = 0;
         if (toolkit_)
             toolkit_->resetCounts();
+        if (stateToolkit_)
+            stateToolkit_->resetCounts();
+        stateChecks_ = 0;
+        cacheHits_ = 0;
+        improvements_ = 0;
         bestCostValue_ = std::numeric_limits<double>::infinity();
         iterationCount_ = 0;
         evaluationCount_ = 0;
@@ -248,13 +283,15 @@ namespace mhplan
             OMPL_ERROR("%s: no valid start state", getName().c_str());
             return false;
         }
-        start_ = statePosition(start);
         const ob::State *goal = pis_.nextGoal();
         if (goal == nullptr)
         {
             OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
             return false;
         }
+        if (stateMode_)
+            return prepareStateProblem(start, goal);
+        start_ = statePosition(start);
         goal_ = statePosition(goal);
         const auto &b = si_->getStateSpace()->as<ob::RealVectorStateSpace>()->getBounds();
         const Box box{b.low[0], b.high[0], b.low[1], b.high[1]};
@@ -263,6 +300,8 @@ namespace mhplan
             toolkit_ = std::make_unique<MemeticToolkit>(si_, rng_);
         toolkit_->setBounds(box);
         toolkit_->setBisections(bisections_);
+        toolkit_->setMargin(marginDistance());
+        toolkit_->setFixedPoints(start_, goal_);
         toolkit_->resetCounts();
         if (costA_ == nullptr)
         {
@@ -294,20 +333,29 @@ namespace mhplan
         return c.value();
     }
 
-    void MemeticPlanner::record(const MemeticPath &path, double cost)
+    bool MemeticPlanner::improves(double cost)
     {
         const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
         const ob::Cost c(cost);
         const bool better =
             !haveSolution_ || (opt ? opt->isCostBetterThan(c, bestCostObj_) : cost < bestCostObj_.value());
         if (!better)
-            return;
+            return false;
         if (haveSolution_ && bestCostObj_.value() - cost <= 1e-12 * std::abs(cost))
-            return; // rounding noise is not an improvement
+            return false; // rounding noise is not an improvement
         haveSolution_ = true;
         bestCostObj_ = c;
-        bestPath_ = path;
         bestCostValue_ = cost;
+        ++improvements_;
+        publishCounts();
+        return true;
+    }
+
+    void MemeticPlanner::record(const MemeticPath &path, double cost)
+    {
+        if (!improves(cost))
+            return;
+        bestPath_ = path;
         reportImprovement(
             this, pdef_, *si_, bestPath_.size(),
             [this](ob::State *s, std::size_t i) { setStatePosition(s, bestPath_[i]); }, bestCostObj_);
@@ -323,6 +371,8 @@ namespace mhplan
 
     bool MemeticPlanner::improveAndEvaluate(Individual &ind)
     {
+        if (stateMode_)
+            return improveAndEvaluateStates(ind);
         MemeticPath p = ind.path;
         toolkit_->tighten(p, coarseTurn_, 1e-4, 30, stop_);
         if (stopRequested())
@@ -363,6 +413,8 @@ namespace mhplan
     {
         if (noPath_)
             return false;
+        if (stateMode_)
+            return walkStateIndividual(out);
         const double noise = walks_ == 0 ? 0.0 : rng_.uniformReal(0.0, walkNoise_);
         const Box &box = toolkit_->bounds();
         toolkit_->randomiseField(std::hypot(box.width(), box.height()));
@@ -447,7 +499,8 @@ namespace mhplan
         double dn = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < pop_.size(); ++i)
         {
-            const double d = signatureDistance(child, pop_[i]);
+            const double d =
+                stateMode_ ? stateSignatureDistance(child, pop_[i]) : signatureDistance(child, pop_[i]);
             if (d < dn)
             {
                 dn = d;
@@ -464,14 +517,14 @@ namespace mhplan
 
     bool MemeticPlanner::fillPopulation()
     {
-        const unsigned long startChecks = toolkit_->motionChecks();
+        const unsigned long startChecks = motionCheckTotal();
         while (pop_.size() < populationSize_ && !noPath_)
         {
             if (stopRequested())
                 return false;
             // Huge worlds: start with what there is once the walks have cost kFillBudget motion checks
             // (deterministic, unlike a clock); the rest joins one per generation.
-            if (pop_.size() >= 2 && toolkit_->motionChecks() - startChecks > kFillBudget)
+            if (pop_.size() >= 2 && motionCheckTotal() - startChecks > kFillBudget)
             {
                 fillCut_ = true;
                 return true;
@@ -496,6 +549,11 @@ namespace mhplan
     {
         if (pop_.empty())
             return;
+        if (stateMode_)
+        {
+            polishEliteStates();
+            return;
+        }
         const std::size_t b = bestIndex();
         if (polished_.empty() || pop_[b].cost < polishedSource_)
         {
@@ -513,6 +571,11 @@ namespace mhplan
 
     void MemeticPlanner::eliteRewalks()
     {
+        if (stateMode_)
+        {
+            eliteReconnects();
+            return;
+        }
         for (unsigned int k = 0; k < eliteRewalks_ && !pop_.empty(); ++k)
         {
             if (stopRequested())
@@ -631,15 +694,31 @@ namespace mhplan
         return ob::PlannerStatus::TIMEOUT;
     }
 
+    unsigned long MemeticPlanner::motionCheckTotal() const
+    {
+        if (stateMode_)
+            return stateToolkit_ ? stateToolkit_->motionChecks() : 0;
+        return toolkit_ ? toolkit_->motionChecks() : 0;
+    }
+
     void MemeticPlanner::publishCounts()
     {
-        if (toolkit_)
-            motionChecks_ = toolkit_->motionChecks();
+        motionChecks_ = motionCheckTotal();
+        if (stateMode_ && stateToolkit_)
+        {
+            stateChecks_ = stateToolkit_->stateChecks();
+            cacheHits_ = stateToolkit_->cacheHits();
+        }
     }
 
     void MemeticPlanner::reportSolution(bool &exact, bool &approximate)
     {
         exact = approximate = false;
+        if (stateMode_)
+        {
+            reportStateSolution(exact, approximate);
+            return;
+        }
         const MemeticPath *points = haveSolution_ ? &bestPath_ : nullptr;
         if (points == nullptr && closest_.size() >= 1 && std::isfinite(closestDistance_))
             points = &closest_;
@@ -656,6 +735,14 @@ namespace mhplan
     void MemeticPlanner::getPlannerData(ob::PlannerData &data) const
     {
         ob::Planner::getPlannerData(data);
+        if (stateMode_)
+        {
+            const StatePath &states = haveSolution_ ? bestStates_ : closestStates_;
+            addPathToPlannerData(
+                *si_, states.size(), [&](ob::State *s, std::size_t i) { fillState(s, states[i]); },
+                haveSolution_, data, plannerDataStates_);
+            return;
+        }
         const MemeticPath &points = haveSolution_ ? bestPath_ : closest_;
         addPathToPlannerData(
             *si_, points.size(), [&points](ob::State *s, std::size_t i) { setStatePosition(s, points[i]); },

@@ -5,6 +5,8 @@
 #ifndef MHPLAN_MEMETIC_PLANNER_H
 #define MHPLAN_MEMETIC_PLANNER_H
 
+#include "mhplan/planners/common/StateParametrisation.h"
+#include "mhplan/planners/memetic/MemeticStateToolkit.h"
 #include "mhplan/planners/memetic/MemeticToolkit.h"
 
 #include <ompl/base/Planner.h>
@@ -21,10 +23,14 @@ namespace mhplan
     /** \brief Base class of the memetic improved variants GA-MEM, SMA-MEM, MGO-MEM and LRSMA-MEM (not in
         any paper: mhplan's scalable, anytime versions of the update rules).
 
-        Problem: a 2-dimensional ompl::base::RealVectorStateSpace with finite bounds (the walks, the pull
-        moves and the crossover joints are planar), any validity checker and motion validator, start and goal
-        from the problem definition (the first start, one goal sample). The planner sees the problem only
-        through the space information (bounds, isValid, checkMotion) and the optimization objective.
+        Problem: a 2-dimensional ompl::base::RealVectorStateSpace with finite bounds (the planar mode: the
+        lattice walks, pull moves and crossover joints below), or any other state space with a
+        StateParametrisation (R^k, SE(2), Dubins, Reeds-Shepp, SE(3), compounds: the state mode of
+        docs/spaces.md, "The memetic planners off the plane": the same population, local search, polish,
+        restarts and update rules on paths of states, MemeticStateToolkit), any validity checker and motion
+        validator, start and goal from the problem definition (the first start, one goal sample). The
+        planner sees the problem only through the space information (bounds, sampler, interpolation,
+        distance, isValid, checkMotion) and the optimization objective.
 
         Design (each choice stated as docs/conventions.md asks):
         - Encoding that grows with the problem: an individual is a feasible polyline of any number of
@@ -124,11 +130,27 @@ namespace mhplan
         /** \brief Bisection steps of each pull move (4..40). */
         void setBisections(unsigned int n);
         unsigned int getBisections() const { return bisections_; }
+        /** \brief The validator margin in sample spacings of OMPL's DiscreteMotionValidator (0..4; 0 = none;
+            docs/variants.md, "No corner the validator cannot see"). */
+        void setValidatorMargin(double m);
+        double getValidatorMargin() const { return validatorMargin_; }
+        /** \brief The margin in the space's distance for the current motion validator: validator_margin x
+            the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
+        double marginDistance() const;
 
         double bestCost() const { return bestCostValue_.load(); }
         unsigned long iterationCount() const { return iterationCount_.load(); }
         unsigned long evaluationCount() const { return evaluationCount_.load(); }
         unsigned long motionCheckCount() const { return motionChecks_.load(); }
+        /** \brief Validity-checker calls the planner made itself (state mode; the motion validator's own are
+            not seen). */
+        unsigned long stateCheckCount() const { return stateChecks_.load(); }
+        /** \brief Motion checks answered from the segment cache instead of the validator (state mode). */
+        unsigned long cacheHitCount() const { return cacheHits_.load(); }
+        /** \brief Improvements of the best cost since the last clear(). */
+        unsigned long improvementCount() const { return improvements_.load(); }
+        /** \brief True when the planner runs in the state mode (any space but R^2). */
+        bool stateMode() const { return stateMode_; }
         /** \brief Restarts with elitism since the last clear(). */
         unsigned long restartCount() const { return restarts_; }
 
@@ -139,6 +161,9 @@ namespace mhplan
             double cost{0.0};
             /** \brief 16 points at equal arc length (for crowding). */
             MemeticPath signature;
+            /** \brief State mode: the path and its 16 states at equal arc length. */
+            StatePath states;
+            StatePath stateSignature;
         };
 
         /** \brief Algorithm state after the population exists (called once per (re)start). */
@@ -172,6 +197,11 @@ namespace mhplan
         static double signatureDistance(const Individual &a, const Individual &b);
 
         MemeticToolkit &toolkit() { return *toolkit_; }
+        MemeticStateToolkit &stateToolkit() { return *stateToolkit_; }
+        /** \brief State mode: the cost of a path, counted as an evaluation; updates the best. */
+        double evaluate(const StatePath &path);
+        /** \brief State mode: the similarity of two individuals (max distance of their signature states). */
+        double stateSignatureDistance(const Individual &a, const Individual &b);
         const Vec2 &startPoint() const { return start_; }
         const Vec2 &goalPoint() const { return goal_; }
         /** \brief The larger side of the bounds. */
@@ -204,6 +234,19 @@ namespace mhplan
         void record(const MemeticPath &path, double cost);
         double pathCost(const MemeticPath &path);
         void publishCounts();
+        /** \brief True when \e cost improves the best (then bestCostObj_ and the counters are updated). */
+        bool improves(double cost);
+        unsigned long motionCheckTotal() const;
+
+        // State mode (MemeticPlannerStates.cpp).
+        void setupStateMode();
+        bool prepareStateProblem(const ompl::base::State *start, const ompl::base::State *goal);
+        bool walkStateIndividual(Individual &out);
+        bool improveAndEvaluateStates(Individual &ind);
+        void polishEliteStates();
+        void eliteReconnects();
+        void reportStateSolution(bool &exact, bool &approximate);
+        void fillState(ompl::base::State *s, const StatePoint &p) const;
 
         unsigned int populationSize_;
         unsigned int maxIterations_{0};
@@ -218,6 +261,7 @@ namespace mhplan
         unsigned int stagnation_{40};
         unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
+        double validatorMargin_{0.5};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         std::function<bool()> stop_;
@@ -226,6 +270,11 @@ namespace mhplan
         Vec2 start_, goal_;
         double scale_{1.0};
         std::unique_ptr<MemeticToolkit> toolkit_;
+        bool stateMode_{false};
+        std::unique_ptr<StateParametrisation> param_;
+        std::unique_ptr<MemeticStateToolkit> stateToolkit_;
+        StatePoint startState_, goalState_;
+        StatePath bestStates_, closestStates_, polishedStates_;
         ompl::base::State *costA_{nullptr};
         ompl::base::State *costB_{nullptr};
         unsigned int level_{0};
@@ -250,6 +299,9 @@ namespace mhplan
         std::atomic<unsigned long> iterationCount_{0};
         std::atomic<unsigned long> evaluationCount_{0};
         std::atomic<unsigned long> motionChecks_{0};
+        std::atomic<unsigned long> stateChecks_{0};
+        std::atomic<unsigned long> cacheHits_{0};
+        std::atomic<unsigned long> improvements_{0};
     };
 } // namespace mhplan
 

@@ -67,7 +67,21 @@ namespace mhplan
         /** \brief Bisection steps of every pull move (4..40). */
         void setBisections(unsigned int n) { bisections_ = n; }
 
-        /** \brief The motion validator's verdict on a segment (both ends inside the bounds). Counted. */
+        /** \brief The validator margin m (0: none): every segment the toolkit accepts also has its two copies
+            shifted by m to either side (the start and goal unshifted) accepted by the validity checker at
+            their first end and the motion validator (docs/variants.md, "No corner the validator cannot
+            see"). */
+        void setMargin(double m) { margin_ = m; }
+        double margin() const { return margin_; }
+        /** \brief The points never shifted by the margin (the query's start and goal). */
+        void setFixedPoints(const Vec2 &a, const Vec2 &b)
+        {
+            fixedA_ = a;
+            fixedB_ = b;
+        }
+
+        /** \brief The motion validator's verdict on a segment (both ends inside the bounds), and the
+            margin's. Counted. */
         bool motionValid(const Vec2 &a, const Vec2 &b);
         /** \brief motionValid(); when invalid, \e fraction is the motion validator's last valid fraction
             of the segment (checkMotion with lastValid). Counted. */
@@ -143,6 +157,9 @@ namespace mhplan
         /** \brief Largest t in [0, 1] (bisection) with a -> v + t d -> b valid (t = 0 assumed valid). */
         double bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b);
         bool inBounds(const Vec2 &p) const { return bounds_.contains(p); }
+        bool marginValid(const Vec2 &a, const Vec2 &b);
+        double margin_{0.0};
+        Vec2 fixedA_, fixedB_;
 
         ompl::base::SpaceInformationPtr si_;
         ompl::RNG &rng_;

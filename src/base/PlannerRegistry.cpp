@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/base/PlannerRegistry.h"
 
+#include "mhplan/base/Parameters.h"
 #include "mhplan/base/World.h"
 
 #include <ompl/base/spaces/DubinsStateSpace.h>
@@ -9,8 +10,10 @@
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -60,6 +63,38 @@ namespace mhplan
             while (std::getline(ss, item, sep))
                 out.push_back(item);
             return out;
+        }
+        /** \brief OMPL's range suggestion \e range read as a hint (docs/cli.md, "Planner parameters"): a
+            numeric one ("lo:step:hi", "lo:hi") asks for a finite number (an integer when all three are
+            integers), not below zero when lo is not; its upper end is not enforced. A list asks for one of
+            its items (checkAgainstRange). Empty when \e value is acceptable, else what is accepted. */
+        std::string checkAgainstHint(const std::string &value, const std::string &range)
+        {
+            if (range.find(':') == std::string::npos)
+                return checkAgainstRange(value, range);
+            const std::vector<std::string> parts = split(range, ':');
+            double lo = 0.0, hi = 0.0, v = 0.0;
+            if ((parts.size() != 2 && parts.size() != 3) || !parseDouble(parts.front(), lo) ||
+                !parseDouble(parts.back(), hi))
+                return ""; // not a numeric range: nothing to enforce
+            const bool integer = integerRange(parts);
+            const bool nonNegative = lo >= 0.0;
+            const std::string what = std::string(integer ? "an integer" : "a finite number") +
+                                     (nonNegative ? " >= 0" : "") + " (OMPL suggests " + parts.front() +
+                                     " to " + parts.back() + ")";
+            if (!parseDouble(value, v) || (integer && v != std::floor(v)) || (nonNegative && v < 0.0))
+                return what;
+            return "";
+        }
+    } // namespace
+
+    namespace
+    {
+        std::string folded(std::string s)
+        {
+            for (char &c : s)
+                c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            return s;
         }
     } // namespace
 
@@ -132,19 +167,57 @@ namespace mhplan
         if (entry.name.empty() || !entry.allocate)
             throw std::invalid_argument("planner registry: an entry needs a name and an allocator");
         const std::string name = entry.name;
-        if (!entries_.emplace(name, std::move(entry)).second)
-            throw std::invalid_argument("planner registry: '" + name + "' is registered twice");
+        const auto taken = folded_.find(folded(name));
+        if (taken != folded_.end())
+            throw std::invalid_argument("planner registry: '" + name + "' is registered twice (as '" +
+                                        taken->second + "')");
+        entries_.emplace(name, std::move(entry));
+        folded_.emplace(folded(name), name);
+    }
+
+    void PlannerRegistry::addAlias(const std::string &alias, const std::string &name)
+    {
+        if (entries_.count(name) == 0)
+            throw std::invalid_argument("planner registry: alias '" + alias + "' names '" + name +
+                                        "', which is not registered");
+        const auto taken = folded_.find(folded(alias));
+        if (alias.empty() || taken != folded_.end())
+            throw std::invalid_argument("planner registry: alias '" + alias + "' is taken");
+        aliases_.emplace(alias, name);
+        folded_.emplace(folded(alias), name);
+    }
+
+    std::string PlannerRegistry::resolve(const std::string &name) const
+    {
+        if (entries_.count(name) != 0)
+            return name;
+        const auto alias = aliases_.find(name);
+        if (alias != aliases_.end())
+            return alias->second;
+        const auto f = folded_.find(folded(name));
+        return f == folded_.end() ? std::string() : f->second;
+    }
+
+    bool PlannerRegistry::has(const std::string &name) const
+    {
+        return !resolve(name).empty();
     }
 
     const PlannerEntry &PlannerRegistry::get(const std::string &name) const
     {
-        const auto it = entries_.find(name);
-        if (it != entries_.end())
-            return it->second;
+        const std::string resolved = resolve(name);
+        if (!resolved.empty())
+            return entries_.at(resolved);
         std::ostringstream msg;
         msg << "unknown planner '" << name << "'; registered planners:";
         for (const auto &n : names())
             msg << " " << n;
+        if (!aliases_.empty())
+        {
+            msg << "; aliases (case is ignored):";
+            for (const auto &kv : aliases_)
+                msg << " " << kv.first;
+        }
         throw InputError(msg.str());
     }
 
@@ -267,8 +340,13 @@ namespace mhplan
             const std::string range = ps[kv.first].getRangeSuggestion();
             // The planner's own current value is always accepted (some OMPL defaults sit outside their
             // declared range suggestion, e.g. PRM's max_nearest_neighbors).
+            if (kv.second == ps[kv.first].getValue())
+                continue; // nothing to change (OMPL's own default may be "inf" or outside its suggestion)
+            // mhplan's own parameters (declared with a description, mhplan/base/Parameters.h) have ranges
+            // that are limits, checked by their setters too; OMPL's suggestions are hints.
+            const bool limit = dynamic_cast<const ParameterDescription *>(&ps[kv.first]) != nullptr;
             std::string problem =
-                kv.second == ps[kv.first].getValue() ? std::string() : checkAgainstRange(kv.second, range);
+                limit ? checkAgainstRange(kv.second, range) : checkAgainstHint(kv.second, range);
             if (problem.empty() && notFinite(kv.second))
                 problem = "a finite number";
             double number = 0.0;
@@ -280,6 +358,7 @@ namespace mhplan
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
                                  kv.second + "' is out of range; expected " + problem);
             std::string value = kv.second;
+            const std::string old = ps[kv.first].getValue();
             if (range == "0,1" && (value == "true" || value == "false"))
                 value = value == "true" ? "1" : "0";
             bool ok = false;
@@ -296,6 +375,19 @@ namespace mhplan
                 throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first +
                                  "': cannot set value '" + kv.second + "'" +
                                  (range.empty() ? "" : " (expected " + range + ")"));
+            // What OMPL stored must be the number given: its setters cast to the parameter's type, so an
+            // unsigned parameter would keep 2 for 2.5 and 4294967295 for -1 (docs/cli.md, "Planner
+            // parameters"). OMPL prints doubles to six significant digits: compare to that precision.
+            double given = 0.0, stored = 0.0;
+            const std::string storedText = ps[kv.first].getValue();
+            if (parseDouble(value, given) && parseDouble(storedText, stored) &&
+                std::fabs(stored - given) > 1e-5 * std::max(1.0, std::fabs(given)))
+            {
+                ps.setParam(kv.first, old);
+                throw InputError("planner '" + planner.getName() + "' parameter '" + kv.first + "': value '" +
+                                 kv.second + "' is out of range; OMPL would store it as " + storedText +
+                                 (range.empty() ? "" : " (OMPL suggests " + range + ")"));
+            }
         }
     }
 

@@ -98,12 +98,21 @@ namespace mhplan
     class PlannerRegistry
     {
       public:
-        /** \brief Add an entry; throws std::invalid_argument if the name is taken. */
+        /** \brief Add an entry; throws std::invalid_argument if the name is taken (names and aliases are
+            compared ignoring case). */
         void add(PlannerEntry entry);
-        bool has(const std::string &name) const { return entries_.count(name) != 0; }
-        /** \brief The entry for \e name; throws InputError listing every registered name. */
+        /** \brief Let \e alias name the entry \e name as well (e.g. OMPL.app's "kpiece" for "KPIECE1");
+            throws std::invalid_argument when \e name is not registered or \e alias is taken. */
+        void addAlias(const std::string &alias, const std::string &name);
+        /** \brief True when \e name is an entry's name or alias, ignoring case. */
+        bool has(const std::string &name) const;
+        /** \brief The entry that \e name names (its name or an alias, ignoring case); throws InputError
+            listing every registered name. The entry's own name is get(name).name. */
         const PlannerEntry &get(const std::string &name) const;
+        /** \brief The entries' names (aliases not included). */
         std::vector<std::string> names() const;
+        /** \brief Alias -> entry name. */
+        const std::map<std::string, std::string> &aliases() const { return aliases_; }
 
         /** \brief Allocate planner \e name on \e si and apply \e params (applyPlannerParameters). */
         ompl::base::PlannerPtr create(const std::string &name, const ompl::base::SpaceInformationPtr &si,
@@ -124,17 +133,26 @@ namespace mhplan
                                      bool clearance = true) const;
 
       private:
+        /** The entry's name for \e name (exact, then alias, then ignoring case); empty when unknown. */
+        std::string resolve(const std::string &name) const;
+
         std::map<std::string, PlannerEntry> entries_;
+        std::map<std::string, std::string> aliases_;
+        /** Lower-cased name or alias -> entry name. */
+        std::map<std::string, std::string> folded_;
     };
 
     /** \brief Set parameters on a planner, refusing (InputError) an unknown name (the message lists the
-        planner's parameters), a value that does not parse, or a value outside the declared range suggestion
-        ("lo:step:hi", "lo:hi" or a comma-separated list). */
+        planner's parameters) or a value that checkAgainstRange or OMPL's own setter refuses. The ranges of
+        mhplan's own parameters (DescribedParam) are limits; OMPL's numeric range suggestions are hints for
+        GUIs, not limits: any finite value the setter takes is accepted (docs/cli.md, "Planner parameters").
+     */
     void applyPlannerParameters(ompl::base::Planner &planner,
                                 const std::map<std::string, std::string> &params);
 
-    /** \brief Check \e value against an OMPL range suggestion; returns an empty string when it fits, else a
-        description of what is accepted. */
+    /** \brief Check \e value against a range suggestion as a limit (the controllers' parameters use it);
+        returns an empty string when it fits, else a description of what is accepted. Planners' parameters
+        read OMPL's suggestions as hints instead (applyPlannerParameters). */
     std::string checkAgainstRange(const std::string &value, const std::string &range);
 
     /** \brief Parse "key=value" into the map; throws InputError on a malformed item. */

@@ -158,8 +158,11 @@ namespace mhplan::cli
             "Every experiment runs in its own process and writes its OMPL log; complete logs are skipped, so "
             "an "
             "interrupted campaign resumes where it stopped. Shards split the experiments between machines; "
-            "one final --merge-only builds the database from all logs.",
-            {{"CAMPAIGN", "a campaign file (e.g. benchmarks/seeds.yaml)"}},
+            "one final --merge-only builds the database from all logs. An OMPL.app problem file "
+            "(PROBLEM.cfg, docs/omplapp.md) runs its own benchmark (its planners, parameters, run_count, "
+            "time_limit, mem_limit, save_paths) in this process; it takes --runs, --time, --seed, --database, "
+            "--logs, --no-progress and --validator certified|discrete.",
+            {{"CAMPAIGN", "a campaign file (e.g. benchmarks/seeds.yaml), or an OMPL.app problem file (.cfg)"}},
             {{"--jobs", "N", "experiments run in parallel, 1..256 (default 1)"},
              {"--shard", "i/N",
               "run only the i-th of N shares of the experiments (writes logs, no database)"},
@@ -190,7 +193,8 @@ namespace mhplan::cli
              "bench benchmarks/seeds.yaml --runs 5 --time 0.2 --database /tmp/s.db",
              "bench benchmarks/scaling.yaml --shard 1/4 && mhplan bench benchmarks/scaling.yaml "
              "--merge-only",
-             "bench benchmarks/seeds.yaml --slurm --shards 4 --cpus 2 --time 01:00:00 --submit"},
+             "bench benchmarks/seeds.yaml --slurm --shards 4 --cpus 2 --time 01:00:00 --submit",
+             "bench environments/omplapp/bugtrap.cfg --runs 5 --database /tmp/bugtrap.db"},
             "0 every experiment completed, 1 bad input, 2 internal error, 3 some experiment failed, or "
             "(merging) the database lacks experiments of the campaign or a log was not taken"};
         return doc;
@@ -198,6 +202,8 @@ namespace mhplan::cli
 
     int cmdBench(const Argv &argv)
     {
+        if (isCfgArgument(argv))
+            return cmdBenchCfg(argv);
         const Args args("bench", argv,
                         {{"jobs", "shard", "database", "logs", "runs", "time", "seed",
                           // --slurm

@@ -31,8 +31,12 @@ namespace mhplan::cli
             "plan one query of a world with one planner; print the path, its length, the exact optimum and "
             "the gap",
             "The path is checked with the exact segment model; the gap is reported only for an exact, "
-            "collision-free path of a world whose exact optimum is known.",
-            {{"WORLD", "a world file (.yaml, .map) or the name of a shipped world (see 'mhplan worlds')"}},
+            "collision-free path of a world whose exact optimum is known. An OMPL.app problem file "
+            "(PROBLEM.cfg, docs/omplapp.md) takes --planner (default: the file's first), --set, --time "
+            "(default: the file's time_limit), --seed, --quiet, and also --validator certified|discrete and "
+            "--path FILE (the path's states); its path is checked densely against the meshes.",
+            {{"WORLD", "a world file (.yaml, .map), the name of a shipped world (see 'mhplan worlds'), or an "
+                       "OMPL.app problem file (.cfg)"}},
             {options::query(),
              options::start(),
              options::goal(),
@@ -49,7 +53,8 @@ namespace mhplan::cli
              {"--quiet", "", "leave out the list of the path's states (text output)"}},
             {"plan bfo_case1 --planner SMA --time 2 --seed 7",
              "plan lrsma_scenario1 --planner LRSMA --set population_size=40 --set iterations=200 --svg p.svg",
-             "plan gms_grid20 --planner ThetaStar --json --quiet"},
+             "plan gms_grid20 --planner ThetaStar --json --quiet",
+             "plan environments/omplapp/bugtrap.cfg --planner kpiece --time 2"},
             "0 exact collision-free path, 1 bad input, 2 internal error, 3 no exact or no collision-free "
             "path"};
         return doc;
@@ -57,6 +62,8 @@ namespace mhplan::cli
 
     int cmdPlan(const Argv &argv)
     {
+        if (isCfgArgument(argv))
+            return cmdPlanCfg(argv);
         const Args args("plan", argv,
                         {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg"},
                          {"set"},

@@ -25,6 +25,11 @@ namespace mhplan::cli
     int cmdOptimum(const Argv &argv);
     int cmdSim(const Argv &argv);
     int cmdArena(const Argv &argv);
+    /** \brief True when an argument names an OMPL.app problem file (.cfg): plan and bench hand it to
+        cmdPlanCfg and cmdBenchCfg (CfgCommands.cpp, docs/omplapp.md). */
+    bool isCfgArgument(const Argv &argv);
+    int cmdPlanCfg(const Argv &argv);
+    int cmdBenchCfg(const Argv &argv);
 
     /** \brief The directory of shipped worlds: $MHPLAN_ENVIRONMENTS, else the source tree's environments/. */
     std::string environmentsDir();

@@ -12,7 +12,7 @@ namespace ompl::tools
 
 namespace mhplan
 {
-    /** \brief Add OMPL's geometric planners that make sense in 2D to \e registry (origin "ompl"). */
+    /** \brief Add OMPL 1.5.2's geometric planners to \e registry (origin "ompl"), with OMPL.app's names as aliases. */
     void registerOmplPlanners(PlannerRegistry &registry);
 
     /** \brief Add every built-in planner to \e registry: OMPL's (registerOmplPlanners) and mhplan's

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: the state mode of the memetic planners (docs/spaces.md, "The memetic planners off the plane"):
+   MemeticPlanner on any state space with a StateParametrisation. */
+#include "mhplan/planners/memetic/MemeticPlanner.h"
+
+#include "mhplan/planners/common/PlannerSupport.h"
+
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/util/Exception.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        /** \brief Tree states of one connection of the walks (start to goal, or through a via state). */
+        constexpr unsigned int kConnectNodes = 5000;
+        /** \brief Tree states of one re-connect of a piece (mutation, elite re-connects). */
+        constexpr unsigned int kReconnectNodes = 2000;
+    } // namespace
+
+    void MemeticPlanner::setupStateMode()
+    {
+        std::string why;
+        std::unique_ptr<StateParametrisation> param = StateParametrisation::create(si_->getStateSpace(), why);
+        if (!param)
+            refuseSetup("cannot plan on the state space '" + si_->getStateSpace()->getName() + "': " + why +
+                        " (supported: " + StateParametrisation::supportedSpaces() + ")");
+        // A new parametrisation (the space's bounds may have changed): the search starts over.
+        stateToolkit_.reset();
+        param_ = std::move(param);
+        stateMode_ = true;
+        problemReady_ = false;
+        clear();
+    }
+
+    void MemeticPlanner::fillState(ob::State *s, const StatePoint &p) const
+    {
+        param_->fromVector(p.data(), s);
+    }
+
+    bool MemeticPlanner::prepareStateProblem(const ob::State *start, const ob::State *goal)
+    {
+        param_->setReference(start);
+        if (!stateToolkit_)
+            stateToolkit_ = std::make_unique<MemeticStateToolkit>(si_, *param_, rng_);
+        stateToolkit_->setObjective(pdef_->getOptimizationObjective());
+        stateToolkit_->setBisections(bisections_);
+        stateToolkit_->setMargin(marginDistance());
+        stateToolkit_->resetCounts();
+        stateToolkit_->fromState(start, startState_);
+        stateToolkit_->fromState(goal, goalState_);
+        // The scale of the offsets (OffsetMemeticPlanner): the largest coordinate range.
+        scale_ = 0.0;
+        for (unsigned int j = 0; j < param_->dimension(); ++j)
+            scale_ = std::max(scale_, param_->upper(j) - param_->lower(j));
+        if (!(scale_ > 0.0))
+            scale_ = 1.0;
+        if (seed_ != 0)
+            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        closestDistance_ = std::numeric_limits<double>::infinity();
+        closestStates_ = {startState_};
+        OMPL_INFORM("%s: seed %lu, N = %u, state mode on '%s'", getName().c_str(),
+                    static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+                    si_->getStateSpace()->getName().c_str());
+        problemReady_ = true;
+        return true;
+    }
+
+    double MemeticPlanner::evaluate(const StatePath &path)
+    {
+        ++evaluationCount_;
+        const double c = stateToolkit_->cost(path);
+        if (improves(c))
+        {
+            bestStates_ = path;
+            reportImprovement(
+                this, pdef_, *si_, bestStates_.size(),
+                [this](ob::State *s, std::size_t i) { fillState(s, bestStates_[i]); }, bestCostObj_);
+        }
+        return c;
+    }
+
+    double MemeticPlanner::stateSignatureDistance(const Individual &a, const Individual &b)
+    {
+        double d = 0.0;
+        for (std::size_t k = 0; k < a.stateSignature.size() && k < b.stateSignature.size(); ++k)
+            d = std::max(d, stateToolkit_->distance(a.stateSignature[k], b.stateSignature[k]));
+        return d;
+    }
+
+    bool MemeticPlanner::improveAndEvaluateStates(Individual &ind)
+    {
+        MemeticStateToolkit &tk = *stateToolkit_;
+        StatePath p = ind.states;
+        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path).
+        tk.tighten(p, coarseTurn_, 1e-3, 10, stop_);
+        if (stopRequested())
+            return false;
+        ind.states.swap(p);
+        // Every operator checks the motions it makes; this pass guards split motions under a sampling
+        // validator (which may refuse a piece of a motion it accepted). Cached: unchanged motions are free.
+        if (!tk.pathValid(ind.states))
+            ind.cost = std::numeric_limits<double>::infinity();
+        else
+            ind.cost = evaluate(ind.states);
+        tk.resample(ind.states, 16, ind.stateSignature, nullptr);
+        return true;
+    }
+
+    bool MemeticPlanner::walkStateIndividual(Individual &out)
+    {
+        MemeticStateToolkit &tk = *stateToolkit_;
+        const double range = 0.2 * tk.extent();
+        const MemeticStateToolkit::Sampler uniform = [&tk](StatePoint &x) { return tk.sampleUniform(x); };
+        // Every other connection after the first passes a valid state drawn uniformly: another homotopy
+        // class by construction.
+        bool viaWalk = walks_ > 0 && rng_.uniform01() < 0.5;
+        ++walks_;
+        StatePoint via;
+        if (viaWalk)
+        {
+            viaWalk = false;
+            for (int k = 0; k < 20 && !viaWalk; ++k)
+                viaWalk = tk.sampleUniform(via) && tk.pointValid(via);
+        }
+        MemeticStateToolkit::ConnectResult r;
+        if (viaWalk)
+        {
+            StatePath second;
+            r = tk.connect(out.states, startState_, via, range, kConnectNodes / 2, uniform, stop_);
+            if (r == MemeticStateToolkit::ConnectResult::Found)
+            {
+                r = tk.connect(second, via, goalState_, range, kConnectNodes / 2, uniform, stop_,
+                               &closestStates_, &closestDistance_);
+                if (r == MemeticStateToolkit::ConnectResult::Found)
+                    out.states.insert(out.states.end(), second.begin() + 1, second.end());
+            }
+        }
+        else
+            r = tk.connect(out.states, startState_, goalState_, range, kConnectNodes, uniform, stop_,
+                           &closestStates_, &closestDistance_);
+        if (r != MemeticStateToolkit::ConnectResult::Found)
+            return false;
+        if (!haveSolution_ && tk.pathValid(out.states))
+        {
+            // The first path is reported at once, before its local search.
+            if (stopRequested())
+                return false;
+            evaluate(out.states);
+        }
+        return improveAndEvaluateStates(out) && std::isfinite(out.cost);
+    }
+
+    void MemeticPlanner::polishEliteStates()
+    {
+        MemeticStateToolkit &tk = *stateToolkit_;
+        const std::size_t b = bestIndex();
+        if (polishedStates_.empty() || pop_[b].cost < polishedSource_)
+        {
+            polishedStates_ = pop_[b].states;
+            polishedSource_ = pop_[b].cost;
+        }
+        StatePath p = polishedStates_;
+        tk.tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 4000, true);
+        if (stopRequested() || !tk.pathValid(p))
+            return;
+        polishedStates_.swap(p);
+        evaluate(polishedStates_);
+    }
+
+    void MemeticPlanner::eliteReconnects()
+    {
+        for (unsigned int k = 0; k < eliteRewalks_ && !pop_.empty(); ++k)
+        {
+            if (stopRequested())
+                return;
+            const std::size_t b = bestIndex();
+            Individual child;
+            child.states = pop_[b].states;
+            if (!stateToolkit_->reconnect(child.states, 0.3, kReconnectNodes, stop_))
+                continue;
+            if (!improveAndEvaluateStates(child))
+                return;
+            if (child.cost < pop_[b].cost)
+            {
+                pop_[b] = std::move(child);
+                populationChanged();
+            }
+        }
+    }
+
+    void MemeticPlanner::reportStateSolution(bool &exact, bool &approximate)
+    {
+        const StatePath *states = haveSolution_ ? &bestStates_ : nullptr;
+        if (states == nullptr && !closestStates_.empty() && std::isfinite(closestDistance_))
+            states = &closestStates_;
+        if (states == nullptr)
+            return;
+        exact = haveSolution_;
+        approximate = !exact;
+        addSolution(
+            *this, pdef_, si_, states->size(),
+            [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact, bestCostObj_,
+            closestDistance_);
+    }
+} // namespace mhplan

@@ -1,0 +1,662 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "mhplan/planners/memetic/MemeticStateToolkit.h"
+
+#include <ompl/datastructures/NearestNeighborsLinear.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace ob = ompl::base;
+
+namespace mhplan
+{
+    namespace
+    {
+        /** \brief Drop consecutive duplicates (zero-length motions a piece split at a waypoint leaves). */
+        void dedupe(StatePath &path)
+        {
+            path.erase(std::unique(path.begin(), path.end()), path.end());
+        }
+
+        constexpr std::size_t kQuery = std::numeric_limits<std::size_t>::max();
+        constexpr std::size_t kCacheLimit = 1u << 20;
+    } // namespace
+
+    std::size_t MemeticStateToolkit::KeyHash::operator()(const std::vector<double> &k) const
+    {
+        std::uint64_t h = 1469598103934665603ull;
+        for (double v : k)
+        {
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &v, sizeof bits);
+            h = (h ^ bits) * 1099511628211ull;
+            h ^= h >> 29;
+        }
+        return static_cast<std::size_t>(h);
+    }
+
+    MemeticStateToolkit::MemeticStateToolkit(ob::SpaceInformationPtr si, const StateParametrisation &param,
+                                             ompl::RNG &rng)
+        : si_(std::move(si)), param_(param), rng_(rng)
+    {
+        a_ = si_->allocState();
+        b_ = si_->allocState();
+        c_ = si_->allocState();
+    }
+
+    MemeticStateToolkit::~MemeticStateToolkit()
+    {
+        si_->freeState(a_);
+        si_->freeState(b_);
+        si_->freeState(c_);
+    }
+
+    void MemeticStateToolkit::resetCounts()
+    {
+        motionChecks_ = stateChecks_ = cacheHits_ = 0;
+        cache_.clear();
+    }
+
+    void MemeticStateToolkit::fromState(const ob::State *s, StatePoint &p) const
+    {
+        p.resize(param_.dimension());
+        param_.toVector(s, p.data());
+    }
+
+    bool MemeticStateToolkit::pointValid(const StatePoint &p)
+    {
+        ++stateChecks_;
+        toState(p, a_);
+        return si_->satisfiesBounds(a_) && si_->isValid(a_);
+    }
+
+    bool MemeticStateToolkit::motionValid(const StatePoint &a, const StatePoint &b)
+    {
+        key_.assign(a.begin(), a.end());
+        key_.insert(key_.end(), b.begin(), b.end());
+        const auto it = cache_.find(key_);
+        if (it != cache_.end())
+        {
+            ++cacheHits_;
+            return it->second;
+        }
+        ++motionChecks_;
+        toState(a, a_);
+        toState(b, b_);
+        const bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        if (cache_.size() >= kCacheLimit)
+            cache_.clear();
+        cache_.emplace(key_, ok);
+        return ok;
+    }
+
+    bool MemeticStateToolkit::pathValid(const StatePath &path)
+    {
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!motionValid(path[i - 1], path[i]))
+                return false;
+        return true;
+    }
+
+    double MemeticStateToolkit::segmentCost(const StatePoint &a, const StatePoint &b)
+    {
+        toState(a, a_);
+        toState(b, b_);
+        return opt_ ? opt_->motionCost(a_, b_).value() : si_->distance(a_, b_);
+    }
+
+    double MemeticStateToolkit::cost(const StatePath &path)
+    {
+        if (!opt_)
+        {
+            double c = 0.0;
+            for (std::size_t i = 1; i < path.size(); ++i)
+                c += segmentCost(path[i - 1], path[i]);
+            return c;
+        }
+        ob::Cost c = opt_->identityCost();
+        for (std::size_t i = 1; i < path.size(); ++i)
+        {
+            toState(path[i - 1], a_);
+            toState(path[i], b_);
+            c = opt_->combineCosts(c, opt_->motionCost(a_, b_));
+        }
+        return c.value();
+    }
+
+    double MemeticStateToolkit::distance(const StatePoint &a, const StatePoint &b)
+    {
+        toState(a, a_);
+        toState(b, b_);
+        return si_->distance(a_, b_);
+    }
+
+    void MemeticStateToolkit::interpolate(const StatePoint &a, const StatePoint &b, double t, StatePoint &out)
+    {
+        toState(a, a_);
+        toState(b, b_);
+        si_->getStateSpace()->interpolate(a_, b_, t, c_);
+        fromState(c_, out);
+    }
+
+    bool MemeticStateToolkit::sampleUniform(StatePoint &out)
+    {
+        // The parametrisation's uniform draw with the planner's RNG (the space's sampler has a generator of
+        // its own, which the planner's seed would not reproduce).
+        out.resize(param_.dimension());
+        param_.sample(rng_, out.data());
+        return true;
+    }
+
+    bool MemeticStateToolkit::sampleNear(const StatePoint &near, double d, StatePoint &out)
+    {
+        // Every coordinate within d of \e near's (rotations folded, positions clamped into the bounds).
+        out = near;
+        for (double &v : out)
+            v += rng_.uniformReal(-d, d);
+        param_.enforce(out.data());
+        return true;
+    }
+
+    double MemeticStateToolkit::extent() const
+    {
+        return si_->getMaximumExtent();
+    }
+
+    MemeticStateToolkit::ConnectResult MemeticStateToolkit::connect(
+        StatePath &path, const StatePoint &from, const StatePoint &to, double range, unsigned int maxNodes,
+        const Sampler &sample, const std::function<bool()> &stop, StatePath *closest, double *closestDistance)
+    {
+        if (motionValid(from, to))
+        {
+            path = {from, to};
+            return ConnectResult::Found;
+        }
+        struct Node
+        {
+            StatePoint x;
+            std::size_t parent;
+        };
+        std::vector<Node> trees[2];
+        StatePoint query;
+        ompl::NearestNeighborsLinear<std::size_t> nn[2];
+        for (int t = 0; t < 2; ++t)
+        {
+            std::vector<Node> &tree = trees[t];
+            // Tree 0 grows from the start (motions parent -> child), tree 1 from the goal (child -> parent).
+            // OMPL's nearest-neighbour structures call the distance with the query first, a tree state
+            // second. A linear scan: GNAT draws its pivots from a generator of its own (not reproducible from
+            // the planner's seed) and is not exact under an asymmetric distance.
+            nn[t].setDistanceFunction(
+                [this, &tree, &query, t](const std::size_t &i, const std::size_t &j)
+                {
+                    const StatePoint &p = i == kQuery ? query : tree[i].x;
+                    const StatePoint &q = j == kQuery ? query : tree[j].x;
+                    return t == 0 ? distance(q, p) : distance(p, q);
+                });
+        }
+        trees[0].push_back({from, kQuery});
+        trees[1].push_back({to, kQuery});
+        nn[0].add(0);
+        nn[1].add(0);
+        // 0: blocked, 1: advanced, 2: reached the target. From the nearest tree state, or from \e from (a
+        // state just added: a connection goes on from where it got).
+        auto extend = [&](int t, const StatePoint &target, std::size_t &added,
+                          std::size_t from = kQuery) -> int
+        {
+            query = target;
+            const std::size_t n = from != kQuery ? from : nn[t].nearest(kQuery);
+            const StatePoint from0 = trees[t][n].x;
+            const double d = t == 0 ? distance(from0, target) : distance(target, from0);
+            const bool reach = d <= range;
+            StatePoint q;
+            if (reach)
+                q = target;
+            else
+                interpolate(from0, target, range / d, q);
+            if (!pointValid(q))
+                return 0;
+            if (!(t == 0 ? motionValid(from0, q) : motionValid(q, from0)))
+                return 0;
+            trees[t].push_back({q, n});
+            added = trees[t].size() - 1;
+            nn[t].add(added);
+            if (t == 0 && closest != nullptr && closestDistance != nullptr)
+            {
+                const double dg = distance(q, to);
+                if (dg < *closestDistance)
+                {
+                    *closestDistance = dg;
+                    closest->clear();
+                    for (std::size_t k = added; k != kQuery; k = trees[0][k].parent)
+                        closest->push_back(trees[0][k].x);
+                    std::reverse(closest->begin(), closest->end());
+                }
+            }
+            return reach ? 2 : 1;
+        };
+        // On a space whose motions are not reversible (Dubins) a tree grown from the goal would hold states
+        // the goal is not reachable from: there only the start tree grows, and after each step it is extended
+        // toward the goal itself until it reaches it or is blocked.
+        const ob::StateSpacePtr &space = si_->getStateSpace();
+        const bool bidirectional = space->hasSymmetricDistance() && space->hasSymmetricInterpolate();
+        int t = 0;
+        unsigned long attempts = 0;
+        StatePoint r;
+        while (trees[0].size() + trees[1].size() < maxNodes && attempts < 20ul * maxNodes)
+        {
+            ++attempts;
+            if (stop())
+                return ConnectResult::Stopped;
+            if (!sample(r))
+                continue;
+            std::size_t a = 0;
+            if (!bidirectional)
+            {
+                if (extend(0, r, a) == 0)
+                    continue;
+                int res = 1;
+                for (bool first = true; res == 1 && trees[0].size() < maxNodes; first = false)
+                {
+                    if (stop())
+                        return ConnectResult::Stopped;
+                    res = extend(0, to, a, first ? kQuery : a);
+                }
+                if (res == 2)
+                {
+                    path.clear();
+                    for (std::size_t k = a; k != kQuery; k = trees[0][k].parent)
+                        path.push_back(trees[0][k].x);
+                    std::reverse(path.begin(), path.end());
+                    return ConnectResult::Found;
+                }
+                continue;
+            }
+            if (extend(t, r, a) != 0)
+            {
+                const StatePoint target = trees[t][a].x;
+                const int other = 1 - t;
+                std::size_t b = 0;
+                int res = 1;
+                for (bool first = true; res == 1 && trees[0].size() + trees[1].size() < maxNodes;
+                     first = false)
+                {
+                    if (stop())
+                        return ConnectResult::Stopped;
+                    res = extend(other, target, b, first ? kQuery : b);
+                }
+                if (res == 2)
+                {
+                    const std::size_t s = t == 0 ? a : b, g = t == 0 ? b : a;
+                    path.clear();
+                    for (std::size_t k = s; k != kQuery; k = trees[0][k].parent)
+                        path.push_back(trees[0][k].x);
+                    std::reverse(path.begin(), path.end());
+                    for (std::size_t k = trees[1][g].parent; k != kQuery; k = trees[1][k].parent)
+                        path.push_back(trees[1][k].x);
+                    return ConnectResult::Found;
+                }
+            }
+            t = 1 - t;
+        }
+        return ConnectResult::Budget;
+    }
+
+    void MemeticStateToolkit::shortcut(StatePath &path, const std::function<bool()> &stop)
+    {
+        if (path.size() < 3)
+            return;
+        StatePath out;
+        out.reserve(path.size());
+        std::size_t i = 0;
+        out.push_back(path[0]);
+        const std::size_t last = path.size() - 1;
+        while (i < last)
+        {
+            if (stop())
+            {
+                out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(i + 1), path.end());
+                break;
+            }
+            // Farthest visible waypoint: double the jump while visible, then bisect.
+            std::size_t good = i + 1, bad = last + 1;
+            for (std::size_t jump = 2;; jump *= 2)
+            {
+                const std::size_t j = std::min(last, i + jump);
+                if (motionValid(path[i], path[j]))
+                    good = j;
+                else
+                {
+                    bad = j;
+                    break;
+                }
+                if (j == last)
+                    break;
+            }
+            while (bad - good > 1)
+            {
+                const std::size_t mid = (good + bad) / 2;
+                if (motionValid(path[i], path[mid]))
+                    good = mid;
+                else
+                    bad = mid;
+            }
+            out.push_back(path[good]);
+            i = good;
+        }
+        path.swap(out);
+    }
+
+    bool MemeticStateToolkit::pullToward(const StatePoint &a, StatePoint &v, const StatePoint &b,
+                                         const StatePoint &target, unsigned int steps)
+    {
+        const double now = segmentCost(a, v) + segmentCost(v, b);
+        StatePoint w;
+        auto valid = [&](double t)
+        {
+            interpolate(v, target, t, w);
+            return motionValid(a, w) && motionValid(w, b);
+        };
+        double lo = 0.0;
+        if (valid(1.0))
+            lo = 1.0;
+        else
+        {
+            double hi = 1.0;
+            for (unsigned int k = 0; k < steps; ++k)
+            {
+                const double mid = 0.5 * (lo + hi);
+                if (valid(mid))
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+        }
+        if (lo < 1.0 && margin_ > 0.0)
+        {
+            // Blocked: stay the margin (in the space's distance) short of the contact (docs/spaces.md).
+            const double d = distance(v, target);
+            lo = d > 0.0 ? lo - margin_ / d : 0.0;
+        }
+        if (lo <= 0.0)
+            return false;
+        interpolate(v, target, lo, w);
+        const double after = segmentCost(a, w) + segmentCost(w, b);
+        if (!(after < now - 1e-12 * now))
+            return false;
+        v.swap(w);
+        return true;
+    }
+
+    bool MemeticStateToolkit::pullPass(StatePath &path, std::vector<char> &dirty, std::vector<char> &held,
+                                       const std::function<bool()> &stop, bool precise)
+    {
+        bool changed = false;
+        std::vector<char> next(path.size(), 0);
+        held.assign(path.size(), 0);
+        const unsigned int steps = precise ? std::max(bisections_, 24u) : std::min(bisections_, 6u);
+        StatePoint m;
+        for (std::size_t i = 1; i + 1 < path.size(); ++i)
+        {
+            if (!dirty[i])
+                continue;
+            if (stop())
+                return changed;
+            const StatePoint &a = path[i - 1], &b = path[i + 1];
+            // A waypoint its neighbours see past is dropped (not one just inserted by the subdivision: it
+            // lies on the motion its neighbours span, and is there for its neighbour's pull).
+            if (dirty[i] != 2 && motionValid(a, b))
+            {
+                path.erase(path.begin() + static_cast<std::ptrdiff_t>(i));
+                dirty.erase(dirty.begin() + static_cast<std::ptrdiff_t>(i));
+                next.erase(next.begin() + static_cast<std::ptrdiff_t>(i));
+                held.erase(held.begin() + static_cast<std::ptrdiff_t>(i));
+                next[i - 1] = 1;
+                if (i < next.size())
+                    next[i] = 1;
+                changed = true;
+                --i;
+                continue;
+            }
+            interpolate(a, b, 0.5, m);
+            bool moved = pullToward(a, path[i], b, m, steps);
+            moved = pullToward(a, path[i], b, a, steps) || moved;
+            moved = pullToward(a, path[i], b, b, steps) || moved;
+            if (moved)
+            {
+                changed = true;
+                next[i - 1] = next[i] = next[i + 1] = 1;
+            }
+            else
+                held[i] = 1; // held by a contact on one of its motions: subdivision may free it
+        }
+        next.front() = next.back() = 0;
+        dirty.swap(next);
+        return changed;
+    }
+
+    bool MemeticStateToolkit::subdivide(StatePath &path, std::vector<char> &dirty,
+                                        const std::vector<char> &held, double maxTurn, unsigned int maxPoints)
+    {
+        if (path.size() < 3 || path.size() >= maxPoints || held.size() != path.size())
+            return false;
+        const double threshold = 1.0 / std::cos(0.5 * std::min(maxTurn, 3.0)) - 1.0;
+        std::vector<char> sharp(path.size(), 0);
+        for (std::size_t i = 1; i + 1 < path.size(); ++i)
+        {
+            if (!held[i])
+                continue;
+            const double chord = segmentCost(path[i - 1], path[i + 1]);
+            const double around = segmentCost(path[i - 1], path[i]) + segmentCost(path[i], path[i + 1]);
+            sharp[i] = chord > 0.0 && around / chord - 1.0 > threshold;
+        }
+        StatePath out;
+        std::vector<char> outDirty;
+        bool split = false;
+        StatePoint mid;
+        for (std::size_t i = 0; i < path.size(); ++i)
+        {
+            out.push_back(path[i]);
+            outDirty.push_back(dirty[i] ? 1 : 0);
+            if (i + 1 >= path.size() || !(sharp[i] || sharp[i + 1]) ||
+                out.size() + (path.size() - i) >= maxPoints)
+                continue;
+            interpolate(path[i], path[i + 1], 0.5, mid);
+            if (!motionValid(path[i], mid) || !motionValid(mid, path[i + 1]))
+                continue;
+            out.push_back(mid);
+            outDirty.push_back(2);
+            split = true;
+        }
+        if (split)
+        {
+            path.swap(out);
+            dirty.swap(outDirty);
+        }
+        return split;
+    }
+
+    bool MemeticStateToolkit::tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
+                                      const std::function<bool()> &stop, unsigned int maxPoints, bool precise)
+    {
+        dedupe(path);
+        shortcut(path, stop);
+        std::vector<char> dirty(path.size(), 1), held;
+        double len = cost(path);
+        for (unsigned int pass = 0; pass < maxPasses; ++pass)
+        {
+            if (stop())
+                return false;
+            // Only waypoints the previous pass could not move are subdivided around.
+            const bool split = subdivide(path, dirty, held, maxTurn, maxPoints);
+            const bool changed = pullPass(path, dirty, held, stop, precise);
+            const double now = cost(path);
+            if (!changed && !split)
+                break;
+            if (len - now < relTol * len && pass > 0)
+                break;
+            len = now;
+        }
+        return !stop();
+    }
+
+    void MemeticStateToolkit::resample(const StatePath &path, unsigned int n, StatePath &out,
+                                       std::vector<std::size_t> *segments)
+    {
+        out.clear();
+        if (segments != nullptr)
+            segments->clear();
+        std::vector<double> cum(path.size(), 0.0);
+        for (std::size_t i = 1; i < path.size(); ++i)
+            cum[i] = cum[i - 1] + distance(path[i - 1], path[i]);
+        const double total = cum.back();
+        std::size_t seg = 0;
+        StatePoint p;
+        for (unsigned int k = 0; k < n; ++k)
+        {
+            const double s = n > 1 ? total * double(k) / double(n - 1) : 0.0;
+            while (seg + 2 < path.size() && cum[seg + 1] < s)
+                ++seg;
+            if (path.size() < 2)
+                p = path.front();
+            else
+            {
+                const double l = cum[seg + 1] - cum[seg];
+                const double u = l > 0.0 ? std::min(1.0, std::max(0.0, (s - cum[seg]) / l)) : 0.0;
+                interpolate(path[seg], path[seg + 1], u, p);
+            }
+            out.push_back(p);
+            if (segments != nullptr)
+                segments->push_back(seg);
+        }
+        if (n > 1 && !path.empty())
+        {
+            out.front() = path.front();
+            out.back() = path.back();
+        }
+    }
+
+    bool MemeticStateToolkit::splice(const StatePath &a, const StatePath &b, double radius, bool twoPoint,
+                                     StatePath &child)
+    {
+        constexpr unsigned int kSamples = 48;
+        StatePath sa, sb;
+        std::vector<std::size_t> ga, gb;
+        resample(a, kSamples, sa, &ga);
+        resample(b, kSamples, sb, &gb);
+        // The sample of b nearest to sa[p] among indices [q0, kSamples - 2].
+        auto nearest = [&](const StatePoint &x, std::size_t q0, std::size_t &q)
+        {
+            double best = std::numeric_limits<double>::infinity();
+            for (std::size_t j = q0; j + 1 < kSamples; ++j)
+            {
+                const double d = distance(x, sb[j]);
+                if (d < best)
+                {
+                    best = d;
+                    q = j;
+                }
+            }
+            return best;
+        };
+        for (int tries = 0; tries < 4; ++tries)
+        {
+            const auto p1 = static_cast<std::size_t>(rng_.uniformInt(1, twoPoint ? 30 : int(kSamples) - 2));
+            std::size_t q1 = 1;
+            if (nearest(sa[p1], 1, q1) > radius || !motionValid(sa[p1], sb[q1]))
+                continue;
+            child.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(ga[p1] + 1));
+            child.push_back(sa[p1]);
+            child.push_back(sb[q1]);
+            if (!twoPoint)
+            {
+                child.insert(child.end(), b.begin() + static_cast<std::ptrdiff_t>(gb[q1] + 1), b.end());
+                dedupe(child);
+                return true;
+            }
+            const auto p2 = static_cast<std::size_t>(rng_.uniformInt(int(p1) + 4, int(kSamples) - 2));
+            std::size_t q2 = q1;
+            if (q1 + 2 >= kSamples - 1 || nearest(sa[p2], q1 + 1, q2) > radius ||
+                !motionValid(sb[q2], sa[p2]))
+                continue;
+            child.insert(child.end(), b.begin() + static_cast<std::ptrdiff_t>(gb[q1] + 1),
+                         b.begin() + static_cast<std::ptrdiff_t>(gb[q2] + 1));
+            child.push_back(sb[q2]);
+            child.push_back(sa[p2]);
+            child.insert(child.end(), a.begin() + static_cast<std::ptrdiff_t>(ga[p2] + 1), a.end());
+            dedupe(child);
+            return true;
+        }
+        return false;
+    }
+
+    bool MemeticStateToolkit::pickPiece(const StatePath &path, double scale, StatePoint &p1,
+                                        std::size_t &seg1, StatePoint &p2, std::size_t &seg2)
+    {
+        if (path.size() < 2)
+            return false;
+        constexpr unsigned int kSamples = 65;
+        StatePath s;
+        std::vector<std::size_t> g;
+        resample(path, kSamples, s, &g);
+        const double share = rng_.uniformReal(0.05, std::max(0.06, scale));
+        const auto span = std::max<int>(2, static_cast<int>(share * (kSamples - 1)));
+        const int i = rng_.uniformInt(0, int(kSamples) - 1 - span);
+        p1 = s[std::size_t(i)];
+        seg1 = g[std::size_t(i)];
+        p2 = s[std::size_t(i + span)];
+        seg2 = g[std::size_t(i + span)];
+        return true;
+    }
+
+    bool MemeticStateToolkit::detour(StatePath &path, double scale)
+    {
+        StatePoint p1, p2, mid, c;
+        std::size_t s1 = 0, s2 = 0;
+        for (int tries = 0; tries < 4; ++tries)
+        {
+            if (!pickPiece(path, scale, p1, s1, p2, s2))
+                return false;
+            interpolate(p1, p2, 0.5, mid);
+            const double d = distance(p1, p2);
+            sampleNear(mid, std::max(d, 1e-6 * extent()), c);
+            if (!pointValid(c) || !motionValid(p1, c) || !motionValid(c, p2))
+                continue;
+            StatePath out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(s1 + 1));
+            out.push_back(p1);
+            out.push_back(c);
+            out.push_back(p2);
+            out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(s2 + 1), path.end());
+            dedupe(out);
+            path.swap(out);
+            return true;
+        }
+        return false;
+    }
+
+    bool MemeticStateToolkit::reconnect(StatePath &path, double scale, unsigned int maxNodes,
+                                        const std::function<bool()> &stop)
+    {
+        StatePoint p1, p2, mid;
+        std::size_t s1 = 0, s2 = 0;
+        if (!pickPiece(path, scale, p1, s1, p2, s2))
+            return false;
+        interpolate(p1, p2, 0.5, mid);
+        double span = 0.0;
+        for (std::size_t i = s1; i <= s2 && i + 1 < path.size(); ++i)
+            span += distance(path[i], path[i + 1]);
+        span = std::max(span, 1e-6 * extent());
+        StatePath piece;
+        const Sampler local = [&](StatePoint &x) { return sampleNear(mid, span, x); };
+        if (connect(piece, p1, p2, 0.25 * span, maxNodes, local, stop) != ConnectResult::Found)
+            return false;
+        StatePath out(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(s1 + 1));
+        out.insert(out.end(), piece.begin(), piece.end());
+        out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(s2 + 1), path.end());
+        dedupe(out);
+        path.swap(out);
+        return true;
+    }
+} // namespace mhplan

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: path operators of the memetic (-MEM) planners on any state space with a parametrisation
+   (docs/spaces.md, "The memetic planners off the plane"): randomised bidirectional connections on the state
+   sampler and motion validator for feasible initial paths, local search through the space's interpolation,
+   path crossover at close states, detour and re-connect mutations. */
+#ifndef MHPLAN_MEMETIC_STATE_TOOLKIT_H
+#define MHPLAN_MEMETIC_STATE_TOOLKIT_H
+
+#include "mhplan/planners/common/StateParametrisation.h"
+
+#include <ompl/base/OptimizationObjective.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief A waypoint: the StateParametrisation coordinates of a state. */
+    using StatePoint = std::vector<double>;
+    /** \brief A path of waypoints, consecutive ones joined by the space's interpolation. */
+    using StatePath = std::vector<StatePoint>;
+
+    /** \brief Path operators of the memetic planners on a state space other than the plane (docs/spaces.md,
+        "The memetic planners off the plane"). Everything goes through the space information: the state
+        sampler, the space's interpolate() and distance(), the validity checker (isValid) and the motion
+        validator (checkMotion, in the path's direction, so asymmetric spaces such as Dubins are handled);
+        costs are the optimization objective's motion costs.
+
+        - connect(): a randomised bidirectional connection of two states: two trees (one from each end)
+          grown alternately toward random states (the sampler, or a caller's local sampler) by steps of at
+          most \e range along the space's interpolation, each new state checked by isValid() and its motion
+          by checkMotion() (toward the goal tree's root for the goal tree); after each extension the other
+          tree is extended toward the new state until it reaches it (joined) or is blocked. On a space whose
+          distance or interpolation is not symmetric (Dubins) only the start tree grows, and after each step
+          it is extended toward the goal until it reaches it or is blocked. Nearest neighbours by a linear
+       scan (OMPL's NearestNeighborsLinear: exact under an asymmetric distance, and reproducible). A fresh
+       random draw per call gives paths in different homotopy classes.
+        - tighten(): passes of greedy shortcut (the farthest later waypoint visible), pull moves (waypoint i
+          moved toward the interpolation midpoint of its neighbours and toward each neighbour, the largest
+          fraction found by bisection that keeps both adjacent motions valid and lowers the cost) and
+          adaptive subdivision (the two motions at a waypoint that no pull move could move and whose detour
+          excess (c(a,v) + c(v,b)) /
+          c(a,b) - 1 exceeds 1 / cos(maxTurn / 2) - 1, the excess of a planar turn of maxTurn, get their
+          interpolation midpoints inserted), until a pass gains less than \e relTol.
+        - Motion checks are cached: a segment whose two end coordinates are bit-identical to one checked
+          before is never checked again (motionChecks() counts the validator's calls, cacheHits() the
+          answers from the cache, stateChecks() the isValid() calls made here).
+        Not thread-safe. */
+    class MemeticStateToolkit
+    {
+      public:
+        MemeticStateToolkit(ompl::base::SpaceInformationPtr si, const StateParametrisation &param,
+                            ompl::RNG &rng);
+        ~MemeticStateToolkit();
+        MemeticStateToolkit(const MemeticStateToolkit &) = delete;
+        MemeticStateToolkit &operator=(const MemeticStateToolkit &) = delete;
+
+        /** \brief The objective whose motion costs are the path cost (null: the space's distance). */
+        void setObjective(ompl::base::OptimizationObjectivePtr opt) { opt_ = std::move(opt); }
+        void setBisections(unsigned int n) { bisections_ = n; }
+        /** \brief The validator margin (space distance, 0: none): a pull move the motion validator blocks
+            stops this far short of the blocked position (docs/spaces.md). */
+        void setMargin(double m) { margin_ = m; }
+
+        unsigned int dimension() const { return param_.dimension(); }
+        const StateParametrisation &parametrisation() const { return param_; }
+
+        void toState(const StatePoint &p, ompl::base::State *s) const { param_.fromVector(p.data(), s); }
+        void fromState(const ompl::base::State *s, StatePoint &p) const;
+
+        /** \brief The validity checker's verdict. Counted. */
+        bool pointValid(const StatePoint &p);
+        /** \brief The motion validator's verdict on a -> b (cached). */
+        bool motionValid(const StatePoint &a, const StatePoint &b);
+        bool pathValid(const StatePath &path);
+        /** \brief The objective's motion cost of a -> b. */
+        double segmentCost(const StatePoint &a, const StatePoint &b);
+        double cost(const StatePath &path);
+        /** \brief The space's distance. */
+        double distance(const StatePoint &a, const StatePoint &b);
+        /** \brief The state at fraction \e t of the space's interpolation from \e a to \e b. */
+        void interpolate(const StatePoint &a, const StatePoint &b, double t, StatePoint &out);
+
+        unsigned long motionChecks() const { return motionChecks_; }
+        unsigned long stateChecks() const { return stateChecks_; }
+        unsigned long cacheHits() const { return cacheHits_; }
+        void resetCounts();
+
+        enum class ConnectResult
+        {
+            Found,
+            Budget,
+            Stopped
+        };
+        /** \brief Draws a state (coordinates) for connect(); false when it could not. */
+        using Sampler = std::function<bool(StatePoint &)>;
+        /** \brief A randomised bidirectional connection from \e from to \e to (class doc), at most
+            \e maxNodes states in the two trees together. On Found \e path runs from \e from to \e to.
+            \e closest / \e closestDistance: the start tree's state nearest to \e to seen so far. */
+        ConnectResult connect(StatePath &path, const StatePoint &from, const StatePoint &to, double range,
+                              unsigned int maxNodes, const Sampler &sample, const std::function<bool()> &stop,
+                              StatePath *closest = nullptr, double *closestDistance = nullptr);
+        /** \brief A uniform state (StateParametrisation::sample with the planner's RNG). */
+        bool sampleUniform(StatePoint &out);
+        /** \brief A state whose every coordinate is within \e d of \e near's (then StateParametrisation::
+            enforce()). */
+        bool sampleNear(const StatePoint &near, double d, StatePoint &out);
+        /** \brief The space's maximum extent (si->getMaximumExtent()). */
+        double extent() const;
+
+        void shortcut(StatePath &path, const std::function<bool()> &stop);
+        /** \brief Local search (class doc); false when \e stop() interrupted it (the path stays valid and no
+            costlier). */
+        bool tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
+                     const std::function<bool()> &stop, unsigned int maxPoints = 2000, bool precise = false);
+
+        /** \brief Crossover at states where \e a and \e b (resampled at 48 states each) pass within
+            \e radius: a[..p] -> b[q..] or a[..p1] -> b[q1..q2] -> a[p2..], the joints checked. */
+        bool splice(const StatePath &a, const StatePath &b, double radius, bool twoPoint, StatePath &child);
+        /** \brief Replace a piece (span a random share up to \e scale of the cost) by two motions through a
+            valid state drawn near its middle. */
+        bool detour(StatePath &path, double scale);
+        /** \brief Replace a piece by a new local connect() between its ends (states drawn near the piece). */
+        bool reconnect(StatePath &path, double scale, unsigned int maxNodes,
+                       const std::function<bool()> &stop);
+
+        /** \brief \e n states at equal cost along \e path (first and last its ends), each with the index of
+            the segment it lies on. */
+        void resample(const StatePath &path, unsigned int n, StatePath &out,
+                      std::vector<std::size_t> *segments);
+
+      private:
+        /** \brief One pass of drops and pull moves over the dirty waypoints; \e held marks those that could
+            not move. */
+        bool pullPass(StatePath &path, std::vector<char> &dirty, std::vector<char> &held,
+                      const std::function<bool()> &stop, bool precise);
+        bool subdivide(StatePath &path, std::vector<char> &dirty, const std::vector<char> &held,
+                       double maxTurn, unsigned int maxPoints);
+        /** \brief The best move of \e v toward \e target (bisection on the fraction) between \e a and \e b;
+            true when one lowered the cost (\e v then moved). */
+        bool pullToward(const StatePoint &a, StatePoint &v, const StatePoint &b, const StatePoint &target,
+                        unsigned int steps);
+        /** \brief The piece between arc positions: the ends' states and the segments they lie on. */
+        bool pickPiece(const StatePath &path, double scale, StatePoint &p1, std::size_t &seg1, StatePoint &p2,
+                       std::size_t &seg2);
+
+        struct KeyHash
+        {
+            std::size_t operator()(const std::vector<double> &k) const;
+        };
+
+        ompl::base::SpaceInformationPtr si_;
+        const StateParametrisation &param_;
+        ompl::RNG &rng_;
+        ompl::base::OptimizationObjectivePtr opt_;
+        unsigned int bisections_{10};
+        double margin_{0.0};
+        ompl::base::State *a_{nullptr};
+        ompl::base::State *b_{nullptr};
+        ompl::base::State *c_{nullptr};
+        unsigned long motionChecks_{0};
+        unsigned long stateChecks_{0};
+        unsigned long cacheHits_{0};
+        std::unordered_map<std::vector<double>, bool, KeyHash> cache_;
+        std::vector<double> key_;
+    };
+} // namespace mhplan
+
+#endif

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* mhplan: OMPL.app's benchmark configuration files (.cfg), read as OMPL.app's benchmark program reads them
+   (docs/omplapp.md): the problem (meshes, start, goal, volume, objective), the benchmark's settings and the
+   planner instances with their parameters. */
+#ifndef MHPLAN_CFG_IO_H
+#define MHPLAN_CFG_IO_H
+
+#include "mhplan/collision/MeshRigidBody.h"
+#include "mhplan/io/MeshIO.h"
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mhplan
+{
+    /** \brief A value of the file and the line it was on. */
+    struct CfgValue
+    {
+        std::string value;
+        int line{0};
+    };
+
+    /** \brief One planner instance of the [planner] section: OMPL.app's name as written (the registry
+        resolves it), its parameters, its context (problem keys for this instance only) and display name. */
+    struct CfgPlannerInstance
+    {
+        std::string name;
+        int line{0};
+        std::map<std::string, CfgValue> params;
+        std::map<std::string, CfgValue> context;
+        /** \brief From NAME.name=...; empty: the planner's own name. */
+        std::string displayName;
+    };
+
+    /** \brief A parsed .cfg file (meshes not yet read). */
+    struct CfgProblem
+    {
+        std::string file;
+        std::string name;
+        /** \brief Mesh paths, resolved against the file's folder. */
+        std::string world;
+        std::string robot;
+        /** \brief False: SE(2) (no z or axis keys); true: SE(3). */
+        bool se3{false};
+        RigidPose start;
+        RigidPose goal;
+        /** \brief The volume when the file gives it; empty: inferred (loadCfgProblem). */
+        std::optional<Eigen::AlignedBox3d> volume;
+        std::string objective{"length"};
+        double objectiveThreshold{std::numeric_limits<double>::quiet_NaN()};
+        double threshold{1e-6};
+        /** \brief mhplan's keys: motion_validator (certified, discrete) and resolution. */
+        std::string motionValidator{"certified"};
+        double resolution{std::numeric_limits<double>::quiet_NaN()};
+        /** \brief The other [problem] keys (OMPL.app's context: space information parameters and sampler),
+            applied to every planner instance (loadCfgProblem checks them). */
+        std::map<std::string, CfgValue> context;
+
+        // [benchmark]
+        std::optional<double> timeLimit;
+        std::optional<double> memLimit;
+        std::optional<unsigned> runCount;
+        std::string output;
+        /** \brief "" (none), "all" or "shortest" ("best" is read as "shortest"). */
+        std::string savePaths;
+        bool simplify{true};
+
+        std::vector<CfgPlannerInstance> planners;
+        /** \brief Line of each key read (section.key), for messages. */
+        std::map<std::string, int> lines;
+        /** \brief What was accepted but has no effect, to be printed (e.g. the mem_limit). */
+        std::vector<std::string> notes;
+
+        /** \brief "FILE:LINE: key 'KEY'" for messages about \e key (file only when the key is absent). */
+        std::string where(const std::string &key) const;
+    };
+
+    /** \brief Parse a .cfg from text; \e fileName names it in messages and its folder resolves mesh paths.
+        Throws InputError "FILE:LINE: key 'KEY': ..." for: a line outside a section or not key=value, an
+        unknown section or key (naming those accepted), a repeated key, a value that does not parse,
+        a control-based problem (control=...), an objective mhplan does not have, missing start/goal keys,
+        a partial volume, an SE(3) pose with only some of its z and axis keys, a zero rotation axis. */
+    CfgProblem parseCfg(const std::string &text, const std::string &fileName);
+
+    /** \brief Read and parse a .cfg file. */
+    CfgProblem loadCfg(const std::string &path);
+
+    /** \brief The problem with its meshes read: the OMPL set-up's specification. The volume, when the file
+        has none, is the environment's box (x, y and, for SE(3), z) grown to hold the start and goal
+        positions, as OMPL.app infers it. Mesh errors name the .cfg file, line and key. */
+    struct LoadedCfgProblem
+    {
+        CfgProblem cfg;
+        MeshProblemSpec spec;
+    };
+    LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits = {});
+} // namespace mhplan
+
+#endif

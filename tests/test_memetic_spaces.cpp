@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* The memetic planners off the plane and in an OMPL program (docs/spaces.md, "The memetic planners off the
+   plane"; docs/variants.md, "No corner the validator cannot see"): the state mode's toolkit keeps paths valid
+   and never costlier, caches motion verdicts, the planners reproduce a run from the seed and count their
+   checks; with OMPL's DiscreteMotionValidator and a plain point checker the validator margin keeps the
+   returned paths clear of what the validator's samples miss (an independent dense check). Budgets are
+   generations, never wall-clock. */
+#include "mhplan/bench/Campaign.h"
+#include "mhplan/planners/memetic/MemeticPlanner.h"
+#include "mhplan/planners/memetic/MemeticStateToolkit.h"
+#include "mhplan/registry/Registry.h"
+
+#include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+
+#include "RegistrySupport.h"
+#include "SpaceProblems.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+using namespace mhplan;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    ob::PlannerTerminationCondition never()
+    {
+        return ob::PlannerTerminationCondition([] { return false; });
+    }
+
+    /** \brief Circles (x, y, r) of the OMPL-program problem in [0, 20]^2: a row the straight line must
+        wrap. */
+    const std::vector<std::array<double, 3>> &appCircles()
+    {
+        static const std::vector<std::array<double, 3>> circles{{6, 6, 2.0},  {10, 10, 2.5}, {14, 13, 1.5},
+                                                                {5, 12, 1.8}, {13, 5, 1.7},  {9, 15.5, 1.2}};
+        return circles;
+    }
+
+    bool appValid(double x, double y)
+    {
+        for (const auto &c : appCircles())
+            if ((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) < c[2] * c[2])
+                return false;
+        return true;
+    }
+
+    /** \brief As an OMPL user sets it up: R^2 [0, 20]^2, a point checker over the circles, OMPL's
+        DiscreteMotionValidator at \e resolution (of the extent 28.3: 0.01 is a sample every 0.28 m). */
+    og::SimpleSetupPtr appProblem(double resolution)
+    {
+        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+        space->setBounds(0.0, 20.0);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker(
+            [](const ob::State *s)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                return appValid(v[0], v[1]);
+            });
+        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+        si->setStateValidityCheckingResolution(resolution);
+        si->setup();
+        auto ss = std::make_shared<og::SimpleSetup>(si);
+        ob::ScopedState<> start(space), goal(space);
+        start[0] = 1.0;
+        start[1] = 1.0;
+        goal[0] = 19.0;
+        goal[1] = 19.0;
+        ss->setStartAndGoalStates(start, goal);
+        ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+        return ss;
+    }
+
+    /** \brief The deepest cut of a planar path into the circles, sampled every millimetre (0 when none). */
+    double deepestCut(const og::PathGeometric &path)
+    {
+        double deepest = 0.0;
+        for (std::size_t i = 1; i < path.getStateCount(); ++i)
+        {
+            const double *a = path.getState(i - 1)->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double *b = path.getState(i)->as<ob::RealVectorStateSpace::StateType>()->values;
+            const auto n = std::max<std::size_t>(
+                1, static_cast<std::size_t>(std::ceil(std::hypot(b[0] - a[0], b[1] - a[1]) / 0.001)));
+            for (std::size_t k = 0; k <= n; ++k)
+            {
+                const double u = double(k) / double(n);
+                const double x = a[0] + (b[0] - a[0]) * u, y = a[1] + (b[1] - a[1]) * u;
+                for (const auto &c : appCircles())
+                    deepest = std::max(deepest, c[2] - std::hypot(x - c[0], y - c[1]));
+            }
+        }
+        return deepest;
+    }
+
+    std::vector<std::vector<double>> statesOf(const og::PathGeometric &path,
+                                              const StateParametrisation &param)
+    {
+        std::vector<std::vector<double>> out;
+        for (std::size_t i = 0; i < path.getStateCount(); ++i)
+        {
+            std::vector<double> x(param.dimension());
+            param.toVector(path.getState(i), x.data());
+            out.push_back(x);
+        }
+        return out;
+    }
+} // namespace
+
+TEST(MemeticStateToolkit, ConnectThenTightenStaysValidAndNeverCostlier)
+{
+    // The SE(2) slot: the stick must turn to pass; a connection, then local search.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    og::SimpleSetupPtr ss = test::slotProblem();
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    std::string why;
+    auto param = StateParametrisation::create(si->getStateSpace(), why);
+    ASSERT_TRUE(param) << why;
+    param->setReference(ss->getProblemDefinition()->getStartState(0));
+    ompl::RNG rng(3);
+    MemeticStateToolkit tk(si, *param, rng);
+    tk.setObjective(ss->getOptimizationObjective());
+    StatePoint start, goal;
+    tk.fromState(ss->getProblemDefinition()->getStartState(0), start);
+    ob::ScopedState<ob::SE2StateSpace> g(si->getStateSpace());
+    g->setXY(8.0, 8.0);
+    g->setYaw(M_PI / 2);
+    tk.fromState(g.get(), goal);
+    const std::function<bool()> stop = [] { return false; };
+    StatePath path;
+    ASSERT_EQ(tk.connect(
+                  path, start, goal, 0.2 * tk.extent(), 20000,
+                  [&](StatePoint &x) { return tk.sampleUniform(x); }, stop),
+              MemeticStateToolkit::ConnectResult::Found);
+    EXPECT_EQ(path.front(), start);
+    EXPECT_EQ(path.back(), goal);
+    ASSERT_TRUE(tk.pathValid(path));
+    const double connected = tk.cost(path);
+    const unsigned long checks = tk.motionChecks();
+    // Re-checking the same path is answered from the cache: no new validator call.
+    ASSERT_TRUE(tk.pathValid(path));
+    EXPECT_EQ(tk.motionChecks(), checks);
+    EXPECT_GE(tk.cacheHits(), path.size() - 1);
+    tk.tighten(path, 0.35, 1e-4, 30, stop);
+    const double tightened = tk.cost(path);
+    EXPECT_TRUE(tk.pathValid(path));
+    EXPECT_LE(tightened, connected + 1e-12);
+    EXPECT_EQ(path.front(), start);
+    EXPECT_EQ(path.back(), goal);
+    // Independent check with the exact geometry (the checker's walls are grown by 0.02).
+    og::PathGeometric out(si);
+    ob::State *s = si->allocState();
+    for (const StatePoint &p : path)
+    {
+        tk.toState(p, s);
+        out.append(s);
+    }
+    si->freeState(s);
+    EXPECT_TRUE(test::denseValid(out, [](const ob::State *q)
+                                 { return test::stickValid(q, test::slotWalls(), test::kStickHalf, 0.0); }));
+    std::cout << "[state toolkit] slot: connected " << connected << ", tightened " << tightened << ", "
+              << tk.motionChecks() << " motion checks, " << tk.cacheHits() << " from the cache\n";
+}
+
+TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        std::vector<std::vector<double>> paths[2];
+        for (int run = 0; run < 2; ++run)
+        {
+            og::SimpleSetupPtr ss = test::carProblem(false);
+            ob::PlannerPtr p =
+                builtinPlanners().create(name, ss->getSpaceInformation(),
+                                         {{"seed", "11"}, {"max_iterations", "1"}, {"population_size", "4"}});
+            ss->setPlanner(p);
+            ss->setup();
+            ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << name;
+            const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(p);
+            ASSERT_TRUE(mp);
+            EXPECT_TRUE(mp->stateMode());
+            const auto props = p->getPlannerProgressProperties();
+            const unsigned long motion = std::stoul(props.at("motion checks INTEGER")());
+            const unsigned long cached = std::stoul(props.at("cached motion checks INTEGER")());
+            const unsigned long improvements = std::stoul(props.at("improvements INTEGER")());
+            EXPECT_GT(motion, 0u) << name;
+            EXPECT_GT(cached, 0u) << name;
+            EXPECT_GE(improvements, 1u) << name;
+            EXPECT_GT(std::stoul(props.at("state checks INTEGER")()), 0u) << name;
+            std::string why;
+            auto param = StateParametrisation::create(ss->getStateSpace(), why);
+            param->setReference(ss->getProblemDefinition()->getStartState(0));
+            paths[run] = statesOf(ss->getSolutionPath(), *param);
+            EXPECT_TRUE(test::denseValid(ss->getSolutionPath(), [](const ob::State *s)
+                                         { return test::pointAmongCircles(s, test::carCircles(), 0.0); }))
+                << name;
+            if (run == 0)
+                std::cout << "[state mode] " << name << " Dubins, N = 4, 1 generation: cost "
+                          << mp->bestCost() << ", " << motion << " motion checks, " << cached << " cached, "
+                          << improvements << " improvements\n";
+        }
+        EXPECT_EQ(paths[0], paths[1]) << name;
+    }
+}
+
+TEST(MemeticMargin, ParameterRoundTripsAndIsRefusedOutOfRange)
+{
+    og::SimpleSetupPtr ss = appProblem(0.01);
+    ob::PlannerPtr p = builtinPlanners().create("GA-MEM", ss->getSpaceInformation());
+    EXPECT_EQ(p->params()["validator_margin"].getValue(), "0.5");
+    ASSERT_TRUE(p->params().setParam("validator_margin", "1.5"));
+    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    EXPECT_FALSE(p->params().setParam("validator_margin", "-0.1"));
+    EXPECT_FALSE(p->params().setParam("validator_margin", "5"));
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
+    // Tied to the validator: 1.5 sample spacings of the DiscreteMotionValidator (0.01 x extent).
+    const double extent = ss->getSpaceInformation()->getMaximumExtent();
+    EXPECT_NEAR(std::dynamic_pointer_cast<MemeticPlanner>(p)->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
+}
+
+TEST(MemeticMargin, DiscreteValidatorPathsPassADenseCheck)
+{
+    // A coarse validator (a sample every 0.28 m): a path pulled tight round a circle cuts it between the
+    // samples by up to 0.28^2 / (8 R), 2-7 mm here, unless the planner keeps the margin.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        double withMargin = 0.0, without = 0.0, cutWithout = 0.0;
+        for (const char *margin : {"0.5", "0"})
+        {
+            og::SimpleSetupPtr ss = appProblem(0.01);
+            ob::PlannerPtr p = builtinPlanners().create(
+                name, ss->getSpaceInformation(),
+                {{"seed", "4"}, {"max_iterations", "20"}, {"validator_margin", margin}});
+            ss->setPlanner(p);
+            ss->setup();
+            ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << name;
+            const double cut = deepestCut(ss->getSolutionPath());
+            const double len = ss->getSolutionPath().length();
+            if (std::string(margin) == "0")
+            {
+                without = len;
+                cutWithout = cut;
+                continue;
+            }
+            withMargin = len;
+            EXPECT_LE(cut, 0.0) << name << ": the returned path cuts a circle by " << cut << " m";
+        }
+        std::cout << "[margin] " << name << ": length " << withMargin << " with the margin (0.14 m), "
+                  << without << " without (deepest cut " << 1000.0 * cutWithout << " mm); cost "
+                  << 100.0 * (withMargin - without) / without << " %\n";
+    }
+}
+
+TEST(MemeticCampaign, DefaultCampaignRunsTheMemeticPlanners)
+{
+    // The README's main command (benchmarks/seeds.yaml) shows them beside the faithful planners and OMPL's.
+    const std::string file = std::string(MHPLAN_ENVIRONMENTS_DIR) + "/../benchmarks/seeds.yaml";
+    std::ifstream in(file);
+    ASSERT_TRUE(in) << file;
+    std::stringstream text;
+    text << in.rdbuf();
+    const bench::Campaign c = bench::parseCampaign(text.str(), file);
+    std::map<std::string, unsigned int> runs;
+    for (const auto &p : c.planners)
+        runs[p.planner] = bench::runsOf(c, p);
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        ASSERT_EQ(runs.count(name), 1u) << name;
+        EXPECT_GE(runs[name], 1u) << name;
+    }
+    for (const char *name : {"SMA", "LRSMA", "MGO", "GA", "RRTstar", "InformedRRTstar"})
+        EXPECT_EQ(runs.count(name), 1u) << name;
+}
