@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/planners/memetic/MemeticStateToolkit.h"
 
-#include <ompl/datastructures/NearestNeighborsLinear.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,11 @@ namespace mhplan
         a_ = si_->allocState();
         b_ = si_->allocState();
         c_ = si_->allocState();
+        // Dubins and Reeds-Shepp states are parametrised (x, y, yaw) and their distance is a path length: at
+        // least the distance of the positions (used to prune nearest-state scans).
+        const ob::StateSpace *space = si_->getStateSpace().get();
+        positionBound_ = dynamic_cast<const ob::DubinsStateSpace *>(space) != nullptr ||
+                         dynamic_cast<const ob::ReedsSheppStateSpace *>(space) != nullptr;
     }
 
     MemeticStateToolkit::~MemeticStateToolkit()
@@ -181,33 +187,74 @@ namespace mhplan
         };
         std::vector<Node> trees[2];
         StatePoint query;
-        ompl::NearestNeighborsLinear<std::size_t> nn[2];
-        for (int t = 0; t < 2; ++t)
+        // The nearest state of tree t to \e query: tree 0 grows from the start (motions parent -> child),
+        // tree 1 from the goal (child -> parent), so the distance runs from the tree state in tree 0 and to
+        // it in tree 1. An exact scan (the first of equal nearest states, as OMPL's linear structure returns;
+        // GNAT draws its pivots from a generator of its own, not reproducible from the planner's seed, and is
+        // not exact under an asymmetric distance). On the car spaces the position distance is a lower bound
+        // of the path length (docs/spaces.md): states whose bound exceeds the best distance so far are
+        // skipped, which saves most of the Dubins or Reeds-Shepp distances of a scan.
+        std::vector<double> bound;
+        auto nearest = [&](int t) -> std::size_t
         {
-            std::vector<Node> &tree = trees[t];
-            // Tree 0 grows from the start (motions parent -> child), tree 1 from the goal (child -> parent).
-            // OMPL's nearest-neighbour structures call the distance with the query first, a tree state
-            // second. A linear scan: GNAT draws its pivots from a generator of its own (not reproducible from
-            // the planner's seed) and is not exact under an asymmetric distance.
-            nn[t].setDistanceFunction(
-                [this, &tree, &query, t](const std::size_t &i, const std::size_t &j)
+            const std::vector<Node> &tree = trees[t];
+            const auto dist = [&](std::size_t i)
+            { return t == 0 ? distance(tree[i].x, query) : distance(query, tree[i].x); };
+            std::size_t best = 0;
+            double bestD = dist(0);
+            if (!positionBound_)
+            {
+                for (std::size_t i = 1; i < tree.size(); ++i)
                 {
-                    const StatePoint &p = i == kQuery ? query : tree[i].x;
-                    const StatePoint &q = j == kQuery ? query : tree[j].x;
-                    return t == 0 ? distance(q, p) : distance(p, q);
-                });
-        }
+                    const double d = dist(i);
+                    if (d < bestD)
+                    {
+                        bestD = d;
+                        best = i;
+                    }
+                }
+                return best;
+            }
+            bound.resize(tree.size());
+            std::size_t m = 0;
+            for (std::size_t i = 0; i < tree.size(); ++i)
+            {
+                // Shrunk by a relative 1e-9: rounding never prunes the true nearest state.
+                bound[i] = std::hypot(tree[i].x[0] - query[0], tree[i].x[1] - query[1]) * (1.0 - 1e-9);
+                if (bound[i] < bound[m])
+                    m = i;
+            }
+            if (m != 0)
+            {
+                const double d = dist(m);
+                if (d < bestD)
+                {
+                    bestD = d;
+                    best = m;
+                }
+            }
+            for (std::size_t i = 1; i < tree.size(); ++i)
+            {
+                if (i == m || bound[i] > bestD)
+                    continue;
+                const double d = dist(i);
+                if (d < bestD || (d == bestD && i < best))
+                {
+                    bestD = d;
+                    best = i;
+                }
+            }
+            return best;
+        };
         trees[0].push_back({from, kQuery});
         trees[1].push_back({to, kQuery});
-        nn[0].add(0);
-        nn[1].add(0);
         // 0: blocked, 1: advanced, 2: reached the target. From the nearest tree state, or from \e from (a
         // state just added: a connection goes on from where it got).
         auto extend = [&](int t, const StatePoint &target, std::size_t &added,
                           std::size_t from = kQuery) -> int
         {
             query = target;
-            const std::size_t n = from != kQuery ? from : nn[t].nearest(kQuery);
+            const std::size_t n = from != kQuery ? from : nearest(t);
             const StatePoint from0 = trees[t][n].x;
             const double d = t == 0 ? distance(from0, target) : distance(target, from0);
             const bool reach = d <= range;
@@ -222,7 +269,6 @@ namespace mhplan
                 return 0;
             trees[t].push_back({q, n});
             added = trees[t].size() - 1;
-            nn[t].add(added);
             if (t == 0 && closest != nullptr && closestDistance != nullptr)
             {
                 const double dg = distance(q, to);

@@ -155,6 +155,8 @@ namespace mhplan
 
         ompl::base::SpaceInformationPtr si_;
         const StateParametrisation &param_;
+        /** \brief The space's distance is at least the distance of the first two coordinates (x, y). */
+        bool positionBound_{false};
         ompl::RNG &rng_;
         ompl::base::OptimizationObjectivePtr opt_;
         unsigned int bisections_{10};
