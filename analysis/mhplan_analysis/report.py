@@ -167,11 +167,7 @@ def box_plots(database, exp, outdir):
         ax.set_xticks(range(1, len(names) + 1))
         ax.set_xticklabels(names, rotation=60, ha="right", fontsize=8)
         ax.set_title(label, fontsize=10)
-        if key == "time":
-            ax.set_yscale("log")
-        elif key == "smoothness":
-            # Heavy-tailed (one sharp turn dominates): a symmetric log scale keeps the boxes readable.
-            ax.set_yscale("symlog", linthresh=1.0)
+        attribute_scale(ax, key, [v for d in data for v in d])
         if key == "length" and _optimum(exp):
             ax.axhline(_optimum(exp), color="#1f77b4", linestyle="--", linewidth=1, label="exact optimum")
             ax.legend(fontsize=7, loc="upper right")
@@ -185,6 +181,19 @@ def box_plots(database, exp, outdir):
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path), missing
+
+
+def attribute_scale(ax, key, values):
+    """The value axis of one box plot: time on a log scale; smoothness (never negative, heavy-tailed: one
+    sharp turn dominates) on a symmetric log scale from 0, so no negative tick appears even when every path
+    is straight (all values 0)."""
+    if key == "time":
+        ax.set_yscale("log")
+    elif key == "smoothness":
+        ax.set_yscale("symlog", linthresh=1.0)
+        finite = [v for v in values if v is not None and math.isfinite(v)]
+        top = max(finite) if finite else 0.0
+        ax.set_ylim(0.0, max(1.0, top * 1.3))
 
 
 def success_bars(database, outdir, exps=None):
@@ -218,51 +227,89 @@ def success_bars(database, outdir, exps=None):
     return os.path.basename(path)
 
 
-def convergence_plot(database, exp, outdir, colors):
-    """Best cost against time per optimizing planner: median and 95% CI over runs, log time axis."""
+def convergence_samples(database, exp, planner):
+    """(samples, source) of one planner's runs: runid -> [(time, cost), ...]. From mhplan's improvements table
+    when the database has one (every improvement at the exact time it happened, benchmarks/Improvements.h),
+    else from OMPL's progress samples ('best cost', a sampling interval late at most)."""
+    runs = database.runs_of(exp.id, planner)
+    if database.improvements is not None:
+        return {r.id: [(t, c) for t, c, _ in database.improvements.get(r.id, [])] for r in runs}, "improvements"
     if "best_cost" not in database.progress_columns:
+        return {}, None
+    return {r.id: [(t, dbmod.to_float(v.get("best_cost"))) for t, v in database.progress.get(r.id, [])] for r in runs}, "progress"
+
+
+def convergence_series(database, exp, planner, tmax):
+    """The planner's best cost over time: (times, median, lo, hi, source), a step function that holds each
+    value from its time to the next (draw with steps-post). The times are exactly the recorded improvements'
+    times of all its runs (the median of step functions changes only there), plus tmax; a run without a
+    solution yet counts as +inf (stats.median_band). None when no run recorded a cost."""
+    samples, source = convergence_samples(database, exp, planner)
+    finite = [(t, c) for s in samples.values() for t, c in s if t is not None and c is not None and math.isfinite(c)]
+    if not finite:
         return None
+    times = sorted({max(t, 1e-6) for t, _ in finite} | {max(tmax, max(t for t, _ in finite))})
+    grid = np.array(times)
+    runs = database.runs_of(exp.id, planner)
+    matrix = np.array([stats.step_series([(max(t, 1e-6), c) for t, c in samples[r.id] if t is not None], grid) for r in runs])
+    med, lo, hi = stats.median_band(matrix)
+    if np.all(np.isnan(med)):
+        return None
+    return grid, med, lo, hi, source
+
+
+def convergence_figure(database, exp, colors):
+    """The convergence figure (a matplotlib figure; None when nothing was recorded): per planner the median
+    best cost (95 % CI band) over a log time axis, from the recorded improvements. With a reference (the
+    exact optimum, else the best cost found in the campaign) the y axis is the gap to it in % on a symmetric
+    log scale, so lines that converge stay apart; the reference (gap 0) is a thin grey line drawn beneath
+    every planner's line, and the planners' lines get thinner in drawing order, so a line on top of another
+    leaves the one beneath visible as its outline."""
+    tmax = max((dbmod.to_float(exp.params.get("timelimit")) or 1.0), 1e-3)
     series = {}
     for p in database.planners_of(exp.id):
-        runs = database.runs_of(exp.id, p)
-        samples = {r.id: [(t, dbmod.to_float(v.get("best_cost"))) for t, v in database.progress.get(r.id, [])] for r in runs}
-        if not any(any(c is not None for _, c in s) for s in samples.values()):
-            continue
-        series[p] = (runs, samples)
+        s = convergence_series(database, exp, p, tmax)
+        if s is not None:
+            series[p] = s
     if not series:
         return None
-    tmax = max((dbmod.to_float(exp.params.get("timelimit")) or 1.0), 1e-3)
-    tmin = tmax
-    for runs, samples in series.values():
-        for s in samples.values():
-            for t, c in s:
-                if t is not None and t > 0 and c is not None:
-                    tmin = min(tmin, t)
-    tmin = max(min(tmin, tmax / 10.0), 1e-5)
-    grid = np.logspace(math.log10(tmin), math.log10(tmax), 120)
-    fig, ax = plt.subplots(figsize=(8, 5))
-    for p, (runs, samples) in series.items():
-        matrix = np.array([stats.step_series(samples[r.id], grid) for r in runs])
-        med, lo, hi = stats.median_band(matrix)
-        if np.all(np.isnan(med)):
-            continue
-        ax.plot(grid, med, color=colors[p], label=p, linewidth=1.6)
-        ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.18, linewidth=0)
     opt = _optimum(exp)
-    if opt:
-        ax.axhline(opt, color="black", linestyle="--", linewidth=1, label="exact optimum %.4f" % opt)
-        top = ax.get_ylim()[1]
-        ax.set_ylim(opt * 0.995, min(top, opt * 1.6))
-    elif _best_found(database, exp):
-        best = _best_found(database, exp)
-        ax.axhline(best, color="black", linestyle=":", linewidth=1, label="best found %.4f (no exact optimum)" % best)
+    best = None if opt else _best_found(database, exp)
+    ref = opt or best
+    fig, ax = plt.subplots(figsize=(8, 5))
+    n = len(series)
+    lowest = 0.0
+    for i, (p, (grid, med, lo, hi, _)) in enumerate(series.items()):
+        if ref:
+            med, lo, hi = (100.0 * (v - ref) / ref for v in (med, lo, hi))
+            lowest = min(lowest, float(np.nanmin(med)))
+        width = 3.2 - 2.0 * i / max(n - 1, 1)
+        ax.plot(grid, med, color=colors[p], label=p, linewidth=width, drawstyle="steps-post", zorder=3 + i / n)
+        ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.15, linewidth=0, step="post", zorder=2)
+    if ref:
+        label = ("exact optimum %.4f" % opt) if opt else ("best found %.4f (no exact optimum)" % best)
+        ax.axhline(0.0, color="#555555", linestyle="--", linewidth=0.8, label=label, zorder=1, gid="reference")
+        ax.set_yscale("symlog", linthresh=0.1)
+        ax.set_ylim(bottom=min(lowest * 1.2, 0.0) if lowest < 0 else 0.0)
+        ax.set_ylabel("gap to the %s [%%] (median, 95%% CI)" % ("exact optimum" if opt else "best found"))
+    else:
+        ax.set_ylabel("best cost (median, 95% CI)")
     ax.set_xscale("log")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("best cost (median, 95% CI)")
+    ax.set_xlim(min(float(s[0][0]) for s in series.values()), tmax)
+    ax.set_xlabel("time [s] (every recorded improvement)" if any(s[4] == "improvements" for s in series.values())
+                  else "time [s] (progress samples)")
     ax.set_title(exp.name)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    ax.legend(fontsize=9, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
+    return fig
+
+
+def convergence_plot(database, exp, outdir, colors):
+    """convergence_figure saved as convergence_EXPERIMENT.png; its file name, None without data."""
+    fig = convergence_figure(database, exp, colors)
+    if fig is None:
+        return None
     path = os.path.join(outdir, "convergence_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
@@ -572,7 +619,7 @@ def write_report(database_path, outdir, world_dir=None):
         if conv:
             parts.append("<img src='%s' alt='convergence'>" % conv)
         else:
-            notes.append("%s: no convergence plot (no planner recorded 'best cost' progress)." % exp.name)
+            notes.append("%s: no convergence plot (no planner recorded an improvement or 'best cost' progress)." % exp.name)
         world_file = dbmod.experiment_value(exp, "world_file")
         if world_file and world_dir and not os.path.isabs(str(world_file)):
             world_file = os.path.join(world_dir, str(world_file))
