@@ -419,6 +419,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
     path = os.path.join(outdir, "paths_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
+    path_figure.footprints = footprints  # how many best paths show the robot (the page says so)
     return os.path.basename(path), query_unknown if drawn else "no saved exact paths"
 
 
@@ -731,7 +732,12 @@ def write_report(database_path, outdir, world_dir=None):
         if paths:
             pf, why = path_figure(database, exp, paths, world_file, outdir, colors)
             if pf:
-                parts.append("<img src='%s' alt='paths'>" % pf)
+                shown = getattr(path_figure, "footprints", 0)
+                parts.append("<img class='paths' src='%s' alt='paths' data-footprints='%d'>" % (pf, shown))
+                if shown:
+                    parts.append("<p class='footprints'>The robot's footprint is drawn along each planner's best "
+                                 "path (at start, goal, every 1.5 robot reaches of travel and every 30&deg; of "
+                                 "turn), green at the start, blue at the goal.</p>")
             if why:
                 notes.append("%s: %s." % (exp.name, why))
         rows = per_exp_tables[exp.id]

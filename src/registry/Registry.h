@@ -5,6 +5,10 @@
 
 #include "mhplan/base/PlannerRegistry.h"
 
+#include <map>
+#include <string>
+#include <vector>
+
 namespace ompl::tools
 {
     class Benchmark;
@@ -28,9 +32,30 @@ namespace mhplan
     ompl::base::PlannerPtr allocatePlanner(const std::string &name, const ompl::base::SpaceInformationPtr &si,
                                            const std::map<std::string, std::string> &params = {});
 
-    /** \brief Add planners to an existing OMPL benchmark in one call: by default every mhplan planner
-        (origin "mhplan"); \e names may list any registered planner. Names are checked before anything is
-        added. */
+    /** \brief One planner of addPlannersToBenchmark: a registered name (or alias), its parameters (as
+        allocatePlanner takes them) and the name it gets in the benchmark (Planner::getName(), which OMPL's
+        log and database record as "geometric_" + name; empty: the planner's own name). Two configurations of
+        one planner need two display names, or their runs merge in the database. */
+    struct BenchmarkPlanner
+    {
+        std::string name;
+        std::map<std::string, std::string> params{};
+        std::string displayName{};
+    };
+
+    /** \brief A BenchmarkPlanner from the text "NAME", "NAME[key=value,...]", "NAME@DISPLAY" or
+        "NAME[key=value,...]@DISPLAY" (README, "Use from your OMPL program"); InputError naming the text and
+        what is accepted when it is malformed. The name and parameters are checked by
+        addPlannersToBenchmark. */
+    BenchmarkPlanner parseBenchmarkPlanner(const std::string &text);
+
+    /** \brief Add planners to an existing OMPL benchmark in one call, each with its parameters and display
+        name. Every name and parameter is checked (on the benchmark's space) before anything is added:
+        InputError for an unknown planner, parameter or out-of-range value, or a display name used twice. */
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<BenchmarkPlanner> &planners);
+
+    /** \brief The same from texts parsed by parseBenchmarkPlanner ("SMA", "SMA[population_size=60]@SMA-60");
+        by default (\e names empty) every mhplan planner (origin "mhplan") with its defaults. */
     void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark,
                                 const std::vector<std::string> &names = {});
 } // namespace mhplan
