@@ -518,8 +518,9 @@ namespace mhplan::bench::detail
         x.totalDuration = secondsSince(t0);
 
         std::ostringstream paths;
-        paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;... (SE(2)-based worlds: x y "
-                 "yaw;...)\n";
+        paths
+            << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;... (SE(2)-based worlds: x y "
+               "yaw;...)\n";
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
             for (std::size_t k = 0; k < records[pi].paths.size(); ++k)
                 if (!records[pi].paths[k].empty())

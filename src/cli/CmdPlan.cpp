@@ -64,7 +64,8 @@ namespace mhplan::cli
                     since = 0.0;
                 }
             }
-            out.push_back({placed(world, {query.start.x, query.start.y, query.startYaw}), "#2ca02c", "start"});
+            out.push_back(
+                {placed(world, {query.start.x, query.start.y, query.startYaw}), "#2ca02c", "start"});
             out.push_back({placed(world, {query.goal.x, query.goal.y, query.goalYaw}), "#1f77b4", "goal"});
             return out;
         }
@@ -205,8 +206,9 @@ namespace mhplan::cli
         const int code = status == ob::PlannerStatus::EXACT_SOLUTION && collisionFree ? 0 : 3;
         if (args.has("svg") && havePath)
             writeTextFile(args.get("svg"),
-                          worldSvg(world, &query, {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}},
-                                   0.0, pathFootprints(world, query, rigid.poses, "#d62728")));
+                          worldSvg(world, &query,
+                                   {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}, 0.0,
+                                   pathFootprints(world, query, rigid.poses, "#d62728")));
 
         if (json)
         {

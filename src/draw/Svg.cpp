@@ -59,8 +59,9 @@ namespace mhplan
         s << worldSvgShapes(world, pixelsPerMetre, margin);
         for (const SvgFootprint &f : footprints)
         {
-            s << "<polygon class=\"footprint\" fill=\"" << escape(f.color) << "\" fill-opacity=\"0.15\" stroke=\""
-              << escape(f.color) << "\" stroke-width=\"1.2\" points=\"";
+            s << "<polygon class=\"footprint\" fill=\"" << escape(f.color)
+              << "\" fill-opacity=\"0.15\" stroke=\"" << escape(f.color)
+              << "\" stroke-width=\"1.2\" points=\"";
             for (const auto &v : f.vertices)
                 s << X(v.x) << "," << Y(v.y) << " ";
             s << "\"><title>" << escape(f.title) << "</title></polygon>\n";

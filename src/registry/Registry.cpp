@@ -46,6 +46,7 @@
 #include <ompl/tools/benchmark/Benchmark.h>
 
 #include <numeric>
+#include <utility>
 #include <set>
 
 namespace ob = ompl::base;
@@ -213,6 +214,19 @@ namespace mhplan
         return builtinPlanners().create(name, si, params);
     }
 
+    BenchmarkPlanner::BenchmarkPlanner(const char *text) : BenchmarkPlanner(std::string(text)) {}
+
+    BenchmarkPlanner::BenchmarkPlanner(const std::string &text)
+    {
+        *this = parseBenchmarkPlanner(text);
+    }
+
+    BenchmarkPlanner::BenchmarkPlanner(std::string name, std::map<std::string, std::string> params,
+                                       std::string displayName)
+        : name(std::move(name)), params(std::move(params)), displayName(std::move(displayName))
+    {
+    }
+
     BenchmarkPlanner parseBenchmarkPlanner(const std::string &text)
     {
         const std::string accepted = "expected NAME, NAME[key=value,...], NAME@DISPLAY or "
@@ -242,8 +256,8 @@ namespace mhplan
             while (from <= list.size() && !list.empty())
             {
                 const auto comma = list.find(',', from);
-                const std::string item = list.substr(from, comma == std::string::npos ? std::string::npos
-                                                                                      : comma - from);
+                const std::string item =
+                    list.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
                 if (item.find('=') == std::string::npos || item.front() == '=')
                     refuse("parameter '" + item + "' is not key=value");
                 parseKeyValue(item, out.params);
@@ -273,13 +287,20 @@ namespace mhplan
         };
     } // namespace
 
-    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<BenchmarkPlanner> &planners)
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark,
+                                const std::vector<BenchmarkPlanner> &chosen)
     {
         const PlannerRegistry &reg = builtinPlanners();
+        std::vector<BenchmarkPlanner> planners = chosen;
+        if (planners.empty())
+            for (const auto &n : reg.names())
+                if (reg.get(n).origin == "mhplan")
+                    planners.push_back({n, {}, ""});
         og::SimpleSetup *setup = BenchmarkAccess::setup(benchmark);
         if (setup == nullptr)
-            throw InputError("addPlannersToBenchmark: the benchmark plans with controls; mhplan's registry holds "
-                             "geometric planners (ompl::tools::Benchmark(geometric::SimpleSetup &, ...))");
+            throw InputError(
+                "addPlannersToBenchmark: the benchmark plans with controls; mhplan's registry holds "
+                "geometric planners (ompl::tools::Benchmark(geometric::SimpleSetup &, ...))");
         // Check everything on the benchmark's own space before adding anything.
         std::set<std::string> shown;
         for (const BenchmarkPlanner &p : planners)
@@ -301,16 +322,4 @@ namespace mhplan
                 });
     }
 
-    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<std::string> &names)
-    {
-        const PlannerRegistry &reg = builtinPlanners();
-        std::vector<BenchmarkPlanner> chosen;
-        if (names.empty())
-            for (const auto &n : reg.names())
-                if (reg.get(n).origin == "mhplan")
-                    chosen.push_back({n});
-        for (const auto &n : names)
-            chosen.push_back(parseBenchmarkPlanner(n));
-        addPlannersToBenchmark(benchmark, chosen);
-    }
 } // namespace mhplan
