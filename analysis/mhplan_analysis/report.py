@@ -290,11 +290,12 @@ def convergence_figure(database, exp, colors):
     ref = opt or best
     fig, ax = plt.subplots(figsize=(8, 5))
     n = len(series)
-    lowest = 0.0
+    lowest, highest = 0.0, 0.0
     for i, (p, (grid, med, lo, hi, _)) in enumerate(series.items()):
         if ref:
             med, lo, hi = (100.0 * (v - ref) / ref for v in (med, lo, hi))
             lowest = min(lowest, float(np.nanmin(med)))
+            highest = max(highest, float(np.nanmax(med)))
         width = 3.2 - 2.0 * i / max(n - 1, 1)
         ax.plot(grid, med, color=colors[p], label=p, linewidth=width, drawstyle="steps-post", zorder=3 + i / n)
         ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.15, linewidth=0, step="post", zorder=2)
@@ -302,12 +303,13 @@ def convergence_figure(database, exp, colors):
         label = ("exact optimum %.4f" % opt) if opt else ("best found %.4f (no exact optimum)" % best)
         ax.axhline(0.0, color="#555555", linestyle="--", linewidth=0.8, label=label, zorder=1, gid="reference")
         ax.set_yscale("symlog", linthresh=0.1)
-        ax.set_ylim(bottom=min(lowest * 1.2, 0.0) if lowest < 0 else 0.0)
+        # Room above the highest median (a line along the frame would be hidden by it).
+        ax.set_ylim(min(lowest * 1.2, 0.0) if lowest < 0 else 0.0, max(highest * 2.0, 1.0))
         ax.set_ylabel("gap to the %s [%%] (median, 95%% CI)" % ("exact optimum" if opt else "best found"))
     else:
         ax.set_ylabel("best cost (median, 95% CI)")
     ax.set_xscale("log")
-    ax.set_xlim(min(float(s[0][0]) for s in series.values()), tmax)
+    ax.set_xlim(min(float(s[0][0]) for s in series.values()), max(float(s[0][-1]) for s in series.values()))
     ax.set_xlabel("time [s] (every recorded improvement)" if any(s[4] == "improvements" for s in series.values())
                   else "time [s] (progress samples)")
     ax.set_title(exp.name)
