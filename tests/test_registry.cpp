@@ -318,9 +318,9 @@ namespace
 
 TEST(Registry, TheClassTableListsEveryMhplanPlanner)
 {
-    // docs/planner_classes.md: one row per registered mhplan planner (pagmo's included), "| `NAME` | `CLASS` | `HEADER` |",
-    // generated from the registry (the planner's run-time class, the header that defines it). On a mismatch
-    // this test prints the whole table to paste.
+    // docs/planner_classes.md: one row per registered mhplan planner (pagmo's included), "| `NAME` | `CLASS`
+    // | `HEADER` |", generated from the registry (the planner's run-time class, the header that defines it).
+    // On a mismatch this test prints the whole table to paste.
     std::ifstream in(std::string(MHPLAN_SOURCE_DIR) + "/docs/planner_classes.md");
     std::stringstream doc;
     doc << in.rdbuf();
