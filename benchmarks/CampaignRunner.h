@@ -76,6 +76,10 @@ namespace mhplan::bench
         (SLURM_CPUS_PER_TASK, else SLURM_JOB_CPUS_PER_NODE). At least 1. */
     unsigned int availableCores();
 
+    /** \brief The system's 1-minute load average (getloadavg: runnable and running tasks, over all cores);
+        -1 when the system does not tell. */
+    double loadAverage();
+
     /** \brief Refuse (InputError naming --jobs and --oversubscribe) or, when \e allow, warn on \e warn
         (may be null) when \e concurrent experiment processes exceed \e cores. */
     void checkOversubscription(unsigned int concurrent, unsigned int cores, bool allow, std::ostream *warn);

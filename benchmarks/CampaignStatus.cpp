@@ -63,6 +63,12 @@ namespace mhplan::bench
         return cores;
     }
 
+    double loadAverage()
+    {
+        double load[1] = {-1.0};
+        return ::getloadavg(load, 1) == 1 ? load[0] : -1.0;
+    }
+
     void checkOversubscription(unsigned int concurrent, unsigned int cores, bool allow, std::ostream *warn)
     {
         if (concurrent <= cores)

@@ -44,28 +44,43 @@ namespace mhplan::bench::detail
             return out;
         }
 
+        /** "x y yaw;x y yaw;...": the poses of a path of an SE(2)-based world (the report draws the robot's
+            footprint along it). */
+        std::string encodePoses(const std::vector<Pose2> &poses)
+        {
+            std::string out;
+            for (const Pose2 &p : poses)
+                out += num(p.x) + " " + num(p.y) + " " + num(p.yaw) + ";";
+            return out;
+        }
+
         /** The metrics of a path of an SE(2)-based world (docs/spaces.md, "Rigid-body and car worlds"): the
             length in the space's metric, the independent dense check along the space's interpolation, the
             FCL clearance, the Reeds-Shepp cusps; smoothness and curvature of the waypoints (se2) or of the
             driven curve sampled every eighth of the turning radius (cars). The stored path is what the robot
-            drives: the waypoints (se2) or the sampled curve (cars). */
+            drives, with the robot's heading: the waypoints (se2) or the sampled curve (cars). */
         void rigidRunProperties(const ExperimentSetup &xs, const ob::SpaceInformation &si,
                                 const og::PathGeometric &path, ot::Benchmark::RunProperties &run,
-                                std::vector<Vec2> &drawn)
+                                std::vector<Pose2> &poses)
         {
             const RigidBodyModel model(xs.world);
             const RigidPathMetrics m = rigidPathMetrics(xs.world, si, path, model, xs.metricStep);
-            drawn = pathPoints(path);
-            if (xs.world.space != SpaceType::SE2)
+            poses.clear();
+            if (xs.world.space == SpaceType::SE2)
+                for (std::size_t i = 0; i < path.getStateCount(); ++i)
+                    poses.push_back(statePose(path.getState(i)));
+            else
             {
                 const double spacing = xs.world.turningRadius / 8.0;
                 const std::size_t every =
                     std::max<std::size_t>(1, static_cast<std::size_t>(spacing / xs.metricStep));
-                drawn.clear();
                 for (std::size_t i = 0; i < m.poses.size(); i += every)
-                    drawn.emplace_back(m.poses[i].x, m.poses[i].y);
-                drawn.emplace_back(m.poses.back().x, m.poses.back().y);
+                    poses.push_back(m.poses[i]);
+                poses.push_back(m.poses.back());
             }
+            std::vector<Vec2> drawn;
+            for (const Pose2 &p : poses)
+                drawn.emplace_back(p.x, p.y);
             const std::vector<Vec2> shape = withoutDuplicates(drawn);
             run["path length REAL"] = num(m.length);
             run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
@@ -185,11 +200,11 @@ namespace mhplan::bench::detail
                         const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
                         if (xs.world.isRigid())
                         {
-                            std::vector<Vec2> drawn;
-                            rigidRunProperties(xs, *si, *geo, run, drawn);
+                            std::vector<Pose2> poses;
+                            rigidRunProperties(xs, *si, *geo, run, poses);
                             if (pdef->hasExactSolution())
                                 run["optimality gap REAL"] = num(std::nan(""));
-                            path = encodePath(drawn);
+                            path = encodePoses(poses);
                         }
                         else
                         {
@@ -474,6 +489,15 @@ namespace mhplan::bench::detail
             x.parameters["octile_optimum_m REAL"] = num(e.octileOptimum * xs.world.grid->cellSize());
         }
         x.parameters["collision_backend TEXT"] = xs.world.isRigid() ? "fcl-rigid" : xs.model->name();
+        // The machine's load while the experiment ran (benchmarks/README.md, "Parallel runs"): the share of a
+        // core its planners had (CPU seconds over wall seconds of solve(), over all runs), the system's
+        // 1-minute load average at its end and the cores this process may use. The report states them.
+        if (times.wall > 0.0)
+            x.parameters["cpu_share REAL"] = num(times.cpu / times.wall);
+        const double load = loadAverage();
+        if (load >= 0.0)
+            x.parameters["load_average REAL"] = num(load);
+        x.parameters["cores_available INTEGER"] = std::to_string(availableCores());
         x.parameters["config_hash TEXT"] = e.configHash;
         x.parameters["mhplan_version TEXT"] = version();
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
@@ -494,7 +518,9 @@ namespace mhplan::bench::detail
         x.totalDuration = secondsSince(t0);
 
         std::ostringstream paths;
-        paths << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;...\n";
+        paths
+            << "# mhplan solution paths: planner <TAB> run index <TAB> x y;x y;... (SE(2)-based worlds: x y "
+               "yaw;...)\n";
         for (std::size_t pi = 0; pi < c.planners.size(); ++pi)
             for (std::size_t k = 0; k < records[pi].paths.size(); ++k)
                 if (!records[pi].paths[k].empty())

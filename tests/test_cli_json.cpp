@@ -275,3 +275,38 @@ TEST(CliListings, PlanControllersListAndCheckThePlannersParameters)
     EXPECT_EQ(bad.code, 1);
     EXPECT_TRUE(contains(bad.out, "planner.population_size")) << bad.out;
 }
+
+TEST(CliJson, DocsNameEveryFieldOfPlanJson)
+{
+    // docs/cli.md: from "Shared objects" (world summary, query) to the end of the plan section.
+    std::ifstream in(std::string(MHPLAN_SOURCE_DIR) + "/docs/cli.md");
+    std::stringstream all;
+    all << in.rdbuf();
+    const std::string text = all.str();
+    const auto from = text.find("Shared objects:");
+    const auto to = text.find("### `mhplan optimum WORLD --json`");
+    ASSERT_NE(from, std::string::npos);
+    ASSERT_NE(to, std::string::npos);
+    const std::string docs = text.substr(from, to - from);
+    // An R^2 world and an SE(2) world with a polygon robot (its extra fields).
+    for (const std::string world : {"bfo_case1 --planner RRTstar", "se2_narrow_passage --planner RRTstar"})
+    {
+        const auto json = runCliStdout("plan " + world + " --time 0.3 --seed 3 --json");
+        ASSERT_FALSE(json.out.empty()) << world;
+        const std::string keys =
+            pyJson(json.out, "' '.join(sorted(set(d) | set(d['world']) | set(d['query'])))", "fields");
+        ASSERT_FALSE(contains(keys, "PARSE ERROR")) << keys;
+        std::istringstream words(keys);
+        std::string key;
+        int count = 0;
+        while (words >> key)
+        {
+            ++count;
+            // A table's `key`, or a key inside a documented object: "{name, start: [x, y], ...}".
+            EXPECT_TRUE(contains(docs, "`" + key + "`") || contains(docs, key + ",") ||
+                        contains(docs, key + "}") || contains(docs, key + ": ["))
+                << "docs/cli.md does not document plan --json field '" << key << "' (" << world << ")";
+        }
+        EXPECT_GE(count, 20) << keys;
+    }
+}

@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -161,9 +163,10 @@ TEST(CliOffPlane, AMissingBraceIsReportedOnItsLine)
 
 TEST(CliOffPlane, PlannersShowTheirSpacesAndOnlyTheFootersThatApply)
 {
+    // GA is planar (GA-MEM runs in state mode on every space since issue 31).
+    EXPECT_TRUE(contains(runCli("planners GA").out, "runs on: R^2 only; anytime"));
     auto r = runCli("planners GA-MEM RRTstar");
     ASSERT_EQ(r.code, 0) << r.out;
-    EXPECT_TRUE(contains(r.out, "runs on: R^2 only; anytime")) << r.out;
     EXPECT_TRUE(contains(r.out, "runs on: R^2, R^k, SE(2), Dubins, Reeds-Shepp, SE(3) (and tries other "
                                 "spaces); anytime"))
         << r.out;
@@ -174,4 +177,43 @@ TEST(CliOffPlane, PlannersShowTheirSpacesAndOnlyTheFootersThatApply)
     EXPECT_EQ(mhplan::test::pyJson(j.out, "(d['planners'][0]['spaces'], d['planners'][0]['deterministic'], "
                                           "d['planners'][0]['anytime'])"),
               "(['R^2'], True, False)");
+}
+
+TEST(CliOffPlane, PlanSvgDrawsThePolygonRobotAtStartGoalAndAlongThePath)
+{
+    // The bar is 2 m long and the gap 1 m wide: it starts upright and must lie down to pass.
+    const std::string dir = tempDir("footprints");
+    const std::string svg = dir + "/p.svg";
+    const auto r = runCli("plan se2_narrow_passage --planner RRTstar --time 2 --seed 3 --quiet --svg " + svg);
+    ASSERT_TRUE(fs::exists(svg)) << r.out;
+    std::ifstream in(svg);
+    std::stringstream all;
+    all << in.rdbuf();
+    const std::string text = all.str();
+    EXPECT_GE(count(text, "class=\"footprint\""), 5u) << text.substr(0, 2000);
+    // The start's footprint: the bar upright at (2, 3), its first vertex (-1, -0.2) at (2.2, 2): 80 px/m,
+    // 20 px margin, y up.
+    const auto start = text.find("<title>start</title>");
+    ASSERT_NE(start, std::string::npos);
+    const auto startPolygon = text.rfind("<polygon class=\"footprint\"", start);
+    EXPECT_TRUE(contains(text.substr(startPolygon, start - startPolygon), "points=\"196.00,340.00 "))
+        << text.substr(startPolygon, start - startPolygon);
+    EXPECT_TRUE(contains(text, "<title>goal</title>"));
+    // Along the path: some footprint lies down (its long edge, the first, horizontal), others stand.
+    int lying = 0, standing = 0;
+    for (auto at = text.find("<title>pose "); at != std::string::npos; at = text.find("<title>pose ", at + 1))
+    {
+        const auto p = text.rfind("points=\"", at) + 8;
+        double x0, y0, x1, y1;
+        char comma;
+        std::istringstream pts(text.substr(p, at - p));
+        pts >> x0 >> comma >> y0 >> x1 >> comma >> y1;
+        if (std::abs(x1 - x0) > 3.0 * std::abs(y1 - y0))
+            ++lying;
+        if (std::abs(y1 - y0) > 3.0 * std::abs(x1 - x0))
+            ++standing;
+    }
+    EXPECT_GE(lying, 1) << "no footprint shows the bar turned to pass the gap";
+    EXPECT_GE(standing, 1);
+    fs::remove_all(dir);
 }

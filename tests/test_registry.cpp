@@ -8,20 +8,31 @@
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
 
 #include "TimeScale.h"
 
 #include <gtest/gtest.h>
 
+#include <cxxabi.h>
+
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <regex>
+#include <sstream>
+#include <typeinfo>
 #include <stdexcept>
 #include <limits>
 
 using namespace mhplan;
 namespace ob = ompl::base;
+namespace og = ompl::geometric;
 
 namespace
 {
@@ -198,4 +209,143 @@ TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
                     << c.center.y << ")";
         EXPECT_GE(polylineLength(pts), 14.2734 - 1e-3) << name << " beats the exact optimum";
     }
+}
+
+TEST(Registry, BenchmarkPlannerTextsParseOrSayWhatIsAccepted)
+{
+    BenchmarkPlanner p = parseBenchmarkPlanner("SMA[population_size=60,max_iterations=5]@SMA-60");
+    EXPECT_EQ(p.name, "SMA");
+    EXPECT_EQ(p.displayName, "SMA-60");
+    EXPECT_EQ(p.params,
+              (std::map<std::string, std::string>{{"population_size", "60"}, {"max_iterations", "5"}}));
+    p = parseBenchmarkPlanner("RRTstar");
+    EXPECT_EQ(p.name, "RRTstar");
+    EXPECT_TRUE(p.params.empty());
+    EXPECT_TRUE(p.displayName.empty());
+    p = parseBenchmarkPlanner("pagmo:de@DE");
+    EXPECT_EQ(p.name, "pagmo:de");
+    EXPECT_EQ(p.displayName, "DE");
+    for (const char *bad : {"SMA[population_size=60", "SMA[population_size]", "SMA@", "[a=1]", "SMA]"})
+    {
+        const std::string e = errorOf([&] { parseBenchmarkPlanner(bad); });
+        EXPECT_NE(e.find("NAME[key=value,...]@DISPLAY"), std::string::npos) << bad << ": " << e;
+        EXPECT_NE(e.find(bad), std::string::npos) << e;
+    }
+}
+
+TEST(Registry, AddPlannersToBenchmarkTakesParametersAndDisplayNames)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 10.0);
+    og::SimpleSetup ss(space);
+    ss.setStateValidityChecker([](const ob::State *s)
+                               { return s->as<ob::RealVectorStateSpace::StateType>()->values[0] > -1.0; });
+    ob::ScopedState<> start(space), goal(space);
+    start[0] = start[1] = 1.0;
+    goal[0] = goal[1] = 9.0;
+    ss.setStartAndGoalStates(start, goal);
+    {
+        ompl::tools::Benchmark refused(ss, "refused");
+        EXPECT_NE(errorOf(
+                      [&] {
+                          addPlannersToBenchmark(refused, {"SMA@X", "GA@X"});
+                      })
+                      .find("two planners named 'X'"),
+                  std::string::npos);
+        EXPECT_NE(errorOf([&] { addPlannersToBenchmark(refused, {"SMA[no_such=1]"}); }).find("no_such"),
+                  std::string::npos);
+        EXPECT_NE(errorOf(
+                      [&] {
+                          addPlannersToBenchmark(refused, {"SMA", "SMA"});
+                      })
+                      .find("two planners named"),
+                  std::string::npos);
+    }
+    ompl::tools::Benchmark benchmark(ss, "display");
+    addPlannersToBenchmark(benchmark,
+                           {"SMA[population_size=12,max_iterations=3]@SMA-12", "SMA[max_iterations=3]"});
+    addPlannersToBenchmark(benchmark, {BenchmarkPlanner{"GA", {{"max_iterations", "3"}}, "GA-3"}});
+    ompl::tools::Benchmark::Request request(5.0, 1024.0, 1);
+    request.displayProgress = false;
+    request.saveConsoleOutput = false;
+    benchmark.benchmark(request);
+    const auto &planners = benchmark.getRecordedExperimentData().planners;
+    ASSERT_EQ(planners.size(), 3u);
+    EXPECT_EQ(planners[0].name, "geometric_SMA-12");
+    EXPECT_EQ(planners[1].name, "geometric_SMA");
+    EXPECT_EQ(planners[2].name, "geometric_GA-3");
+    auto param = [](const ompl::tools::Benchmark::PlannerExperiment &pe, const std::string &name)
+    {
+        for (const auto &kv : pe.common)
+            if (kv.first.rfind(name + " ", 0) == 0 || kv.first == name)
+                return kv.second;
+        return std::string("(not recorded)");
+    };
+    EXPECT_EQ(param(planners[0], "population_size"), "12");
+    EXPECT_EQ(param(planners[0], "max_iterations"), "3");
+    EXPECT_EQ(param(planners[2], "max_iterations"), "3");
+}
+
+namespace
+{
+    std::string demangled(const char *name)
+    {
+        int status = 0;
+        char *d = abi::__cxa_demangle(name, nullptr, nullptr, &status);
+        std::string out = status == 0 && d != nullptr ? d : name;
+        std::free(d);
+        return out;
+    }
+
+    /** The installed header (include/mhplan/planners/FAMILY/FILE.h, the tree of ompl_planners/) that defines
+        class \e cls ("mhplan::SlimeMould"); "" when none does. */
+    std::string headerOf(const std::string &cls)
+    {
+        const std::string bare = cls.substr(cls.rfind(':') + 1);
+        const std::regex definition("(^|\\n)\\s*class\\s+" + bare + "\\b[^;]*\\n?\\s*[:{]");
+        const std::filesystem::path root = std::filesystem::path(MHPLAN_SOURCE_DIR) / "ompl_planners";
+        std::vector<std::filesystem::path> files;
+        for (const auto &f : std::filesystem::recursive_directory_iterator(root))
+            if (f.path().extension() == ".h")
+                files.push_back(f.path());
+        std::sort(files.begin(), files.end());
+        for (const auto &f : files)
+        {
+            std::ifstream in(f);
+            std::stringstream text;
+            text << in.rdbuf();
+            if (std::regex_search(text.str(), definition))
+                return "mhplan/planners/" + std::filesystem::relative(f, root).generic_string();
+        }
+        return "";
+    }
+} // namespace
+
+TEST(Registry, TheClassTableListsEveryMhplanPlanner)
+{
+    // docs/planner_classes.md: one row per registered mhplan planner (pagmo's included), "| `NAME` | `CLASS`
+    // | `HEADER` |", generated from the registry (the planner's run-time class, the header that defines it).
+    // On a mismatch this test prints the whole table to paste.
+    std::ifstream in(std::string(MHPLAN_SOURCE_DIR) + "/docs/planner_classes.md");
+    std::stringstream doc;
+    doc << in.rdbuf();
+    const auto si = unitSquare();
+    std::string table, missing;
+    for (const std::string &name : builtinPlanners().names())
+    {
+        if (builtinPlanners().get(name).origin == "ompl")
+            continue; // mhplan's own (origin "mhplan") and its pagmo2 bridge (origin "pagmo")
+        const ob::PlannerPtr p = builtinPlanners().create(name, si);
+        const std::string cls = demangled(typeid(*p).name());
+        const std::string header = headerOf(cls);
+        EXPECT_FALSE(header.empty()) << name << ": no header under ompl_planners/ defines " << cls;
+        const std::string row = "| `" + name + "` | `" + cls + "` | `" + header + "` |";
+        table += row + "\n";
+        if (doc.str().find(row + "\n") == std::string::npos)
+            missing += "  " + row + "\n";
+    }
+    EXPECT_TRUE(missing.empty()) << "docs/planner_classes.md lacks these rows:\n"
+                                 << missing << "the whole table:\n"
+                                 << table;
 }

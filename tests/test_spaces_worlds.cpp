@@ -255,6 +255,17 @@ TEST(SpacesWorlds, SmokeCampaignAndReport)
             "DESC, cost ASC LIMIT 1) - r.path_length) > 1e-9 * r.path_length"),
         "0");
 
+    // The machine's load while each experiment ran (benchmarks/README.md), stated by the report.
+    EXPECT_EQ(
+        sql(db,
+            "SELECT count(*) FROM experiments WHERE cpu_share > 0 AND cpu_share < 2 AND load_average >= 0 "
+            "AND cores_available >= 1"),
+        "3");
+    // Paths with the robot's heading: three numbers per point ("x y yaw;").
+    EXPECT_EQ(sql(db, "SELECT count(*) FROM paths WHERE length(substr(points, 1, instr(points, ';'))) - "
+                      "length(replace(substr(points, 1, instr(points, ';')), ' ', '')) != 2"),
+              "0");
+    EXPECT_NE(sql(db, "SELECT count(*) FROM paths"), "0");
     const auto report = runCli("report " + db + " -o " + (dir / "report").string());
     ASSERT_EQ(report.code, 0) << report.out;
     std::ifstream in(dir / "report" / "index.html");
@@ -262,6 +273,8 @@ TEST(SpacesWorlds, SmokeCampaignAndReport)
     html << in.rdbuf();
     EXPECT_TRUE(contains(html.str(), "gaps are to the best found cost")) << "the ranking names its reference";
     EXPECT_TRUE(contains(html.str(), "median gap to best found"));
+    EXPECT_TRUE(contains(html.str(), "Machine load recorded by the campaign: the planners had "));
+    EXPECT_TRUE(contains(html.str(), "The robot's footprint is drawn along each planner's best path"));
     EXPECT_TRUE(fs::exists(dir / "report" / "box_reeds_shepp_parking-default.png"));
     fs::remove_all(dir);
 }

@@ -101,6 +101,7 @@ def problem_section(database, exp, optimum):
 
 
 TAUS = np.logspace(0, 2, 121)
+LEGEND_FONTSIZE = 11
 GAP_TAUS = np.concatenate([[0.0], np.logspace(-2, 2, 120)])
 
 
@@ -155,7 +156,11 @@ def profile_figure(database, exps, optimum_of, outdir, colors):
         ax.set_ylabel("share of problems" if ratio else "share of runs")
         ax.set_title(title, fontsize=10)
         ax.grid(alpha=0.3, which="both")
-    axes[0, -1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    # The legend is read beside three panels: the report's body text size, thick colour keys.
+    legend = axes[0, -1].legend(fontsize=LEGEND_FONTSIZE, loc="center left", bbox_to_anchor=(1.01, 0.5),
+                                frameon=False, handlelength=2.5)
+    for line in legend.get_lines():
+        line.set_linewidth(3.0)
     fig.tight_layout()
     path = os.path.join(outdir, "profiles.png")
     fig.savefig(path, dpi=110, bbox_inches="tight")

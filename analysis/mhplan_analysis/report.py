@@ -18,7 +18,8 @@ from . import comparisons, movingai, paper_tables, papers, quality, scaling, sim
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
-    ("time", ["time"], "time [s]"),
+    ("time", ["time"], "wall time [s]"),
+    ("cpu_time", ["cpu_time"], "CPU time [s]"),
     ("length", ["path_length", "solution_length"], "path length [m]"),
     ("gap", ["optimality_gap"], "optimality gap [%]"),
     ("clearance", ["min_clearance", "solution_clearance"], "minimum clearance [m]"),
@@ -153,7 +154,7 @@ def box_plots(database, exp, outdir):
         for p in planners:
             runs = database.runs_of(exp.id, p)
             # Quality attributes over exact runs only; time over all runs.
-            chosen = runs if key == "time" else [r for r in runs if r.outcome == "exact"]
+            chosen = runs if key in ("time", "cpu_time") else [r for r in runs if r.outcome == "exact"]
             vals = [dbmod.run_value(r, col) for r in chosen]
             if key == "gap" and _best_found(database, exp):
                 vals = _best_found_gaps(database, exp, p, chosen)
@@ -167,11 +168,7 @@ def box_plots(database, exp, outdir):
         ax.set_xticks(range(1, len(names) + 1))
         ax.set_xticklabels(names, rotation=60, ha="right", fontsize=8)
         ax.set_title(label, fontsize=10)
-        if key == "time":
-            ax.set_yscale("log")
-        elif key == "smoothness":
-            # Heavy-tailed (one sharp turn dominates): a symmetric log scale keeps the boxes readable.
-            ax.set_yscale("symlog", linthresh=1.0)
+        attribute_scale(ax, key, [v for d in data for v in d])
         if key == "length" and _optimum(exp):
             ax.axhline(_optimum(exp), color="#1f77b4", linestyle="--", linewidth=1, label="exact optimum")
             ax.legend(fontsize=7, loc="upper right")
@@ -179,12 +176,36 @@ def box_plots(database, exp, outdir):
             ax.axhline(_best_found(database, exp), color="#1f77b4", linestyle=":", linewidth=1, label="best found")
             ax.legend(fontsize=7, loc="upper right")
         ax.grid(axis="y", alpha=0.3)
+    # Wall and CPU time side by side on one scale: a CPU box below its wall box is time the planner waited
+    # for a core.
+    timed = [ax for ax, (key, _, _) in zip(axes[0], present) if key in ("time", "cpu_time")]
+    if len(timed) == 2:
+        lo = min(a.get_ylim()[0] for a in timed)
+        hi = max(a.get_ylim()[1] for a in timed)
+        for a in timed:
+            a.set_ylim(lo, hi)
     fig.suptitle(exp.name, fontsize=11)
     fig.tight_layout()
     path = os.path.join(outdir, "box_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return os.path.basename(path), missing
+
+
+def attribute_scale(ax, key, values):
+    """The value axis of one box plot: time on a log scale; smoothness (never negative, heavy-tailed: one
+    sharp turn dominates) on a symmetric log scale from 0, so no negative tick appears even when every path
+    is straight (all values 0)."""
+    if key in ("time", "cpu_time"):
+        ax.set_yscale("log")
+    elif key == "smoothness":
+        finite = [v for v in values if v is not None and math.isfinite(v)]
+        top = max(finite) if finite else 0.0
+        if top <= 1.0:
+            ax.set_ylim(0.0, 1.05)  # linear: a symmetric log axis up to 1 would have no tick at all
+        else:
+            ax.set_yscale("symlog", linthresh=1.0)
+            ax.set_ylim(0.0, top * 1.3)
 
 
 def success_bars(database, outdir, exps=None):
@@ -218,51 +239,91 @@ def success_bars(database, outdir, exps=None):
     return os.path.basename(path)
 
 
-def convergence_plot(database, exp, outdir, colors):
-    """Best cost against time per optimizing planner: median and 95% CI over runs, log time axis."""
+def convergence_samples(database, exp, planner):
+    """(samples, source) of one planner's runs: runid -> [(time, cost), ...]. From mhplan's improvements table
+    when the database has one (every improvement at the exact time it happened, benchmarks/Improvements.h),
+    else from OMPL's progress samples ('best cost', a sampling interval late at most)."""
+    runs = database.runs_of(exp.id, planner)
+    if database.improvements is not None:
+        return {r.id: [(t, c) for t, c, _ in database.improvements.get(r.id, [])] for r in runs}, "improvements"
     if "best_cost" not in database.progress_columns:
+        return {}, None
+    return {r.id: [(t, dbmod.to_float(v.get("best_cost"))) for t, v in database.progress.get(r.id, [])] for r in runs}, "progress"
+
+
+def convergence_series(database, exp, planner, tmax):
+    """The planner's best cost over time: (times, median, lo, hi, source), a step function that holds each
+    value from its time to the next (draw with steps-post). The times are exactly the recorded improvements'
+    times of all its runs (the median of step functions changes only there), plus tmax; a run without a
+    solution yet counts as +inf (stats.median_band). None when no run recorded a cost."""
+    samples, source = convergence_samples(database, exp, planner)
+    finite = [(t, c) for s in samples.values() for t, c in s if t is not None and c is not None and math.isfinite(c)]
+    if not finite:
         return None
+    times = sorted({max(t, 1e-6) for t, _ in finite} | {max(tmax, max(t for t, _ in finite))})
+    grid = np.array(times)
+    runs = database.runs_of(exp.id, planner)
+    matrix = np.array([stats.step_series([(max(t, 1e-6), c) for t, c in samples[r.id] if t is not None], grid) for r in runs])
+    med, lo, hi = stats.median_band(matrix)
+    if np.all(np.isnan(med)):
+        return None
+    return grid, med, lo, hi, source
+
+
+def convergence_figure(database, exp, colors):
+    """The convergence figure (a matplotlib figure; None when nothing was recorded): per planner the median
+    best cost (95 % CI band) over a log time axis, from the recorded improvements. With a reference (the
+    exact optimum, else the best cost found in the campaign) the y axis is the gap to it in % on a symmetric
+    log scale, so lines that converge stay apart; the reference (gap 0) is a thin grey line drawn beneath
+    every planner's line, and the planners' lines get thinner in drawing order, so a line on top of another
+    leaves the one beneath visible as its outline."""
+    tmax = max((dbmod.to_float(exp.params.get("timelimit")) or 1.0), 1e-3)
     series = {}
     for p in database.planners_of(exp.id):
-        runs = database.runs_of(exp.id, p)
-        samples = {r.id: [(t, dbmod.to_float(v.get("best_cost"))) for t, v in database.progress.get(r.id, [])] for r in runs}
-        if not any(any(c is not None for _, c in s) for s in samples.values()):
-            continue
-        series[p] = (runs, samples)
+        s = convergence_series(database, exp, p, tmax)
+        if s is not None:
+            series[p] = s
     if not series:
         return None
-    tmax = max((dbmod.to_float(exp.params.get("timelimit")) or 1.0), 1e-3)
-    tmin = tmax
-    for runs, samples in series.values():
-        for s in samples.values():
-            for t, c in s:
-                if t is not None and t > 0 and c is not None:
-                    tmin = min(tmin, t)
-    tmin = max(min(tmin, tmax / 10.0), 1e-5)
-    grid = np.logspace(math.log10(tmin), math.log10(tmax), 120)
-    fig, ax = plt.subplots(figsize=(8, 5))
-    for p, (runs, samples) in series.items():
-        matrix = np.array([stats.step_series(samples[r.id], grid) for r in runs])
-        med, lo, hi = stats.median_band(matrix)
-        if np.all(np.isnan(med)):
-            continue
-        ax.plot(grid, med, color=colors[p], label=p, linewidth=1.6)
-        ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.18, linewidth=0)
     opt = _optimum(exp)
-    if opt:
-        ax.axhline(opt, color="black", linestyle="--", linewidth=1, label="exact optimum %.4f" % opt)
-        top = ax.get_ylim()[1]
-        ax.set_ylim(opt * 0.995, min(top, opt * 1.6))
-    elif _best_found(database, exp):
-        best = _best_found(database, exp)
-        ax.axhline(best, color="black", linestyle=":", linewidth=1, label="best found %.4f (no exact optimum)" % best)
+    best = None if opt else _best_found(database, exp)
+    ref = opt or best
+    fig, ax = plt.subplots(figsize=(8, 5))
+    n = len(series)
+    lowest, highest = 0.0, 0.0
+    for i, (p, (grid, med, lo, hi, _)) in enumerate(series.items()):
+        if ref:
+            med, lo, hi = (100.0 * (v - ref) / ref for v in (med, lo, hi))
+            lowest = min(lowest, float(np.nanmin(med)))
+            highest = max(highest, float(np.nanmax(med)))
+        width = 3.2 - 2.0 * i / max(n - 1, 1)
+        ax.plot(grid, med, color=colors[p], label=p, linewidth=width, drawstyle="steps-post", zorder=3 + i / n)
+        ax.fill_between(grid, lo, np.where(np.isnan(hi), med, hi), color=colors[p], alpha=0.15, linewidth=0, step="post", zorder=2)
+    if ref:
+        label = ("exact optimum %.4f" % opt) if opt else ("best found %.4f (no exact optimum)" % best)
+        ax.axhline(0.0, color="#555555", linestyle="--", linewidth=0.8, label=label, zorder=1, gid="reference")
+        ax.set_yscale("symlog", linthresh=0.1)
+        # Room above the highest median (a line along the frame would be hidden by it).
+        ax.set_ylim(min(lowest * 1.2, 0.0) if lowest < 0 else 0.0, max(highest * 2.0, 1.0))
+        ax.set_ylabel("gap to the %s [%%] (median, 95%% CI)" % ("exact optimum" if opt else "best found"))
+    else:
+        ax.set_ylabel("best cost (median, 95% CI)")
     ax.set_xscale("log")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("best cost (median, 95% CI)")
+    ax.set_xlim(min(float(s[0][0]) for s in series.values()), max(float(s[0][-1]) for s in series.values()))
+    ax.set_xlabel("time [s] (every recorded improvement)" if any(s[4] == "improvements" for s in series.values())
+                  else "time [s] (progress samples)")
     ax.set_title(exp.name)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    ax.legend(fontsize=9, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
+    return fig
+
+
+def convergence_plot(database, exp, outdir, colors):
+    """convergence_figure saved as convergence_EXPERIMENT.png; its file name, None without data."""
+    fig = convergence_figure(database, exp, colors)
+    if fig is None:
+        return None
     path = os.path.join(outdir, "convergence_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
@@ -283,6 +344,32 @@ def experiment_query(exp, world):
     return None
 
 
+def experiment_yaws(exp, world):
+    """(start yaw, goal yaw) of the experiment's query in an SE(2)-based world: from its recorded
+    query_points, else from the world's query of that name; None when neither tells."""
+    q = worlds.parse_query_poses(dbmod.experiment_value(exp, "query_points"))
+    if q and len(q[0]) == 3:
+        return q[0][2], q[1][2]
+    name = dbmod.experiment_value(exp, "query")
+    if name is not None and str(name) in world.query_yaws:
+        return world.query_yaws[str(name)]
+    if name is None and len(world.query_yaws) == 1:
+        return next(iter(world.query_yaws.values()))
+    return None
+
+
+def _reach(world):
+    return max(math.hypot(x, y) for x, y in world.robot_polygon)
+
+
+def _footprint(ax, world, pose, color, gid, alpha=0.12):
+    """The robot's polygon at pose (x, y, yaw), filled translucent with an outline, beneath the paths."""
+    from matplotlib.patches import Polygon
+
+    ax.add_patch(Polygon(worlds.place(world.robot_polygon, pose), closed=True, facecolor=color, alpha=alpha,
+                         edgecolor=color, linewidth=0.8, zorder=3, gid=gid))
+
+
 def path_figure(database, exp, paths, world_file, outdir, colors):
     """The world with each planner's best and median exact path."""
     if not world_file or not os.path.exists(world_file):
@@ -292,6 +379,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
     except (OSError, ValueError, KeyError) as e:
         return None, "cannot draw %s: %s" % (world_file, e)
     query_unknown = None
+    footprints = 0
     fig, ax = plt.subplots(figsize=(8.5, 7))
     worlds.draw_world(ax, world)
     drawn = 0
@@ -302,30 +390,44 @@ def path_figure(database, exp, paths, world_file, outdir, colors):
             continue
         best = exact[0][1]
         med = exact[len(exact) // 2][1]
-        xs, ys = zip(*paths[best.id])
-        ax.plot(xs, ys, color=colors[p], linewidth=1.8, label="%s best %.3f" % (p, exact[0][0]))
+        xs, ys = [v[0] for v in paths[best.id]], [v[1] for v in paths[best.id]]
+        ax.plot(xs, ys, color=colors[p], linewidth=1.8, label="%s best %.3f" % (p, exact[0][0]), zorder=4)
         if med.id != best.id:
-            xs, ys = zip(*paths[med.id])
-            ax.plot(xs, ys, color=colors[p], linewidth=1.0, linestyle="--", alpha=0.8)
+            xs, ys = [v[0] for v in paths[med.id]], [v[1] for v in paths[med.id]]
+            ax.plot(xs, ys, color=colors[p], linewidth=1.0, linestyle="--", alpha=0.8, zorder=4)
+        # A polygon robot (SE(2)-based worlds, paths stored with headings): its footprint along the best
+        # path, so one sees where it turned.
+        if world.robot_polygon and all(len(v) == 3 for v in paths[best.id]):
+            for pose in worlds.footprint_poses(paths[best.id], _reach(world)):
+                _footprint(ax, world, pose, colors[p], "footprint")
+            footprints += 1
         drawn += 1
     q = experiment_query(exp, world)
     if q:
         ax.plot(*q[0], "o", color="#2ca02c", markersize=8, clip_on=False, zorder=5)
         ax.plot(*q[1], "*", color="#1f77b4", markersize=13, clip_on=False, zorder=5)
+        yaws = experiment_yaws(exp, world)
+        if world.robot_polygon and yaws:
+            _footprint(ax, world, q[0] + (yaws[0],), "#2ca02c", "footprint-start", 0.3)
+            _footprint(ax, world, q[1] + (yaws[1],), "#1f77b4", "footprint-goal", 0.3)
     else:
         query_unknown = "no start and goal markers (the experiment's query is not recorded)"
-    ax.set_title("%s: best (solid) and median (dashed) paths" % exp.name, fontsize=10)
+    title = "%s: best (solid) and median (dashed) paths" % exp.name
+    if footprints:
+        title += "; the robot along each best path"
+    ax.set_title(title, fontsize=10)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
     path = os.path.join(outdir, "paths_%s.png" % _slug(exp.name))
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
+    path_figure.footprints = footprints  # how many best paths show the robot (the page says so)
     return os.path.basename(path), query_unknown if drawn else "no saved exact paths"
 
 
 def load_paths(database_path):
     """Saved solution paths, runid -> [(x, y), ...], from the database's 'paths' table (runid, points as
-    "x y;x y;...") when present."""
+    "x y;x y;...") when present; in SE(2)-based worlds [(x, y, yaw), ...] ("x y yaw;...")."""
     import sqlite3
 
     conn = dbmod.connect_readonly(database_path)
@@ -485,6 +587,44 @@ def moving_worlds_section(database, exps, outdir, notes):
     return out
 
 
+def load_summary(database, exps):
+    """What the campaign recorded about the machine's load over experiments \\p exps: the share of a core the
+    planners had while they planned (sum of the runs' cpu_time over the sum of their wall time; OMPL's
+    'time'), the 1-minute load averages at the experiments' ends (experiment column load_average) and the
+    cores available (cores_available). A dict with share, load_min, load_max, cores (each None when not
+    recorded) and runs (runs with both times)."""
+    cpu = wall = 0.0
+    runs = 0
+    ids = {e.id for e in exps}
+    if "cpu_time" in database.run_columns:
+        for r in database.runs:
+            c, w = dbmod.run_value(r, "cpu_time"), dbmod.run_value(r, "time")
+            if r.experiment in ids and c is not None and w is not None and w > 0:
+                cpu, wall, runs = cpu + c, wall + w, runs + 1
+    loads = [dbmod.to_float(dbmod.experiment_value(e, "load_average")) for e in exps]
+    loads = [v for v in loads if v is not None]
+    cores = [dbmod.to_float(dbmod.experiment_value(e, "cores_available")) for e in exps]
+    cores = sorted({int(v) for v in cores if v is not None})
+    return {"share": cpu / wall if wall > 0 else None, "runs": runs, "load_min": min(loads) if loads else None,
+            "load_max": max(loads) if loads else None, "cores": cores or None}
+
+
+def load_text(summary):
+    """One sentence (HTML) stating load_summary()."""
+    parts = []
+    if summary["share"] is not None:
+        parts.append("the planners had %.0f %% of a core while they planned (CPU time over wall time of "
+                     "solve(), %d runs)" % (100.0 * summary["share"], summary["runs"]))
+    if summary["load_min"] is not None:
+        load = ("%.2f" % summary["load_min"] if summary["load_min"] == summary["load_max"]
+                else "%.2f to %.2f" % (summary["load_min"], summary["load_max"]))
+        cores = " on %s core(s) available" % "/".join(str(c) for c in summary["cores"]) if summary["cores"] else ""
+        parts.append("the system's 1-minute load average at the experiments' ends was %s%s" % (load, cores))
+    if not parts:
+        return None
+    return "Machine load recorded by the campaign: " + "; ".join(parts) + "."
+
+
 def write_report(database_path, outdir, world_dir=None):
     """Write index.html and its figures into outdir; returns the index path."""
     os.makedirs(outdir, exist_ok=True)
@@ -500,6 +640,18 @@ def write_report(database_path, outdir, world_dir=None):
     moving = [e for e in database.experiments if simulations.is_simulation(e)]
     if not paths and planning:
         notes.append("The database has no saved paths: no path figures.")
+    if planning:
+        load = load_summary(database, planning)
+        sentence = load_text(load)
+        if sentence:
+            parts.append("<p class='load'>%s</p>" % sentence)
+        else:
+            notes.append("The database records neither CPU times nor the machine's load (an older campaign): "
+                         "whether the planners had their cores is unknown.")
+        if load["share"] is not None and load["share"] < 0.8:
+            notes.append("The planners had only %.0f %% of a core while they planned (other load on the cores): "
+                         "time-limited planners did that much less work (campaign time_limit_kind: cpu bounds "
+                         "CPU time instead)." % (100.0 * load["share"]))
 
     # Ranking and success first: what a reader wants.
     if planning:
@@ -563,6 +715,9 @@ def write_report(database_path, outdir, world_dir=None):
     # Per problem: figures and the full table.
     for exp in planning:
         parts.append("<h2>%s</h2>" % html.escape(exp.name))
+        sentence = load_text(load_summary(database, [exp]))
+        if sentence:
+            parts.append("<p class='load'>%s</p>" % sentence.replace("by the campaign", "for this problem"))
         box, missing = box_plots(database, exp, outdir)
         if box:
             parts.append("<img src='%s' alt='box plots'>" % box)
@@ -572,14 +727,19 @@ def write_report(database_path, outdir, world_dir=None):
         if conv:
             parts.append("<img src='%s' alt='convergence'>" % conv)
         else:
-            notes.append("%s: no convergence plot (no planner recorded 'best cost' progress)." % exp.name)
+            notes.append("%s: no convergence plot (no planner recorded an improvement or 'best cost' progress)." % exp.name)
         world_file = dbmod.experiment_value(exp, "world_file")
         if world_file and world_dir and not os.path.isabs(str(world_file)):
             world_file = os.path.join(world_dir, str(world_file))
         if paths:
             pf, why = path_figure(database, exp, paths, world_file, outdir, colors)
             if pf:
-                parts.append("<img src='%s' alt='paths'>" % pf)
+                shown = getattr(path_figure, "footprints", 0)
+                parts.append("<img class='paths' src='%s' alt='paths' data-footprints='%d'>" % (pf, shown))
+                if shown:
+                    parts.append("<p class='footprints'>The robot's footprint is drawn along each planner's best "
+                                 "path (at start, goal, every 1.5 robot reaches of travel and every 30&deg; of "
+                                 "turn), green at the start, blue at the goal.</p>")
             if why:
                 notes.append("%s: %s." % (exp.name, why))
         rows = per_exp_tables[exp.id]

@@ -16,6 +16,7 @@
 
 #include <ompl/util/Time.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -24,6 +25,52 @@ namespace og = ompl::geometric;
 
 namespace mhplan::cli
 {
+    namespace
+    {
+        std::vector<Vec2> placed(const World &world, const Pose2 &pose)
+        {
+            std::vector<Vec2> out;
+            for (const Vec2 &v : world.robotPolygon)
+                out.push_back(placePoint(pose, v));
+            return out;
+        }
+
+        /** The polygon robot's outline at the query's start and goal and along the driven poses \e dense:
+            a pose every \e spacing metres of travel, and wherever the heading turned by 30 degrees since the
+            last one drawn (a rotation in place shows), at most about 80 (docs/cli.md, "plan"). */
+        std::vector<SvgFootprint> pathFootprints(const World &world, const Query &query,
+                                                 const std::vector<Pose2> &dense, const std::string &color)
+        {
+            std::vector<SvgFootprint> out;
+            if (world.robotPolygon.empty())
+                return out;
+            double travel = 0.0;
+            for (std::size_t i = 1; i < dense.size(); ++i)
+                travel += std::hypot(dense[i].x - dense[i - 1].x, dense[i].y - dense[i - 1].y);
+            const double spacing = std::max(1.5 * world.robotReach(), travel / 60.0);
+            const double turn = M_PI / 6.0;
+            const Pose2 *last = nullptr;
+            double since = 0.0;
+            for (std::size_t i = 0; i < dense.size(); ++i)
+            {
+                if (i > 0)
+                    since += std::hypot(dense[i].x - dense[i - 1].x, dense[i].y - dense[i - 1].y);
+                const bool turned =
+                    last != nullptr && std::abs(std::remainder(dense[i].yaw - last->yaw, 2.0 * M_PI)) >= turn;
+                if (last == nullptr || since >= spacing || turned || i + 1 == dense.size())
+                {
+                    out.push_back({placed(world, dense[i]), color, "pose " + std::to_string(out.size())});
+                    last = &dense[i];
+                    since = 0.0;
+                }
+            }
+            out.push_back(
+                {placed(world, {query.start.x, query.start.y, query.startYaw}), "#2ca02c", "start"});
+            out.push_back({placed(world, {query.goal.x, query.goal.y, query.goalYaw}), "#1f77b4", "goal"});
+            return out;
+        }
+    } // namespace
+
     const CommandDoc &planDoc()
     {
         static const CommandDoc doc{
@@ -48,7 +95,8 @@ namespace mhplan::cli
              {"--backend", "NAME",
               "collision model: auto (default: the exact model of the world's type), analytic, fcl, grid or "
               "hash"},
-             options::svg("the world, the query and the path"),
+             options::svg("the world, the query and the path; a polygon robot's footprint at the start, the "
+                          "goal and along the path"),
              options::json("the run (world, query, planner parameters, status, length, optimum, gap, path)"),
              {"--quiet", "", "leave out the list of the path's states (text output)"}},
             {"plan bfo_case1 --planner SMA --time 2 --seed 7",
@@ -157,9 +205,10 @@ namespace mhplan::cli
         const bool withGap = optimum.result.found && exactPath && collisionFree;
         const int code = status == ob::PlannerStatus::EXACT_SOLUTION && collisionFree ? 0 : 3;
         if (args.has("svg") && havePath)
-            writeTextFile(
-                args.get("svg"),
-                worldSvg(world, &query, {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}));
+            writeTextFile(args.get("svg"),
+                          worldSvg(world, &query,
+                                   {{pts, plannerName + " (" + status.asString() + ")", "#d62728"}}, 0.0,
+                                   pathFootprints(world, query, rigid.poses, "#d62728")));
 
         if (json)
         {

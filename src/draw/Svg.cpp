@@ -38,7 +38,7 @@ namespace mhplan
     } // namespace
 
     std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
-                         double pixelsPerMetre)
+                         double pixelsPerMetre, const std::vector<SvgFootprint> &footprints)
     {
         const Box &b = world.bounds;
         if (pixelsPerMetre <= 0.0)
@@ -57,6 +57,15 @@ namespace mhplan
         s << "<title>" << escape(world.name) << "</title>\n";
         s << "<rect x=\"0\" y=\"0\" width=\"" << w << "\" height=\"" << h << "\" fill=\"white\"/>\n";
         s << worldSvgShapes(world, pixelsPerMetre, margin);
+        for (const SvgFootprint &f : footprints)
+        {
+            s << "<polygon class=\"footprint\" fill=\"" << escape(f.color)
+              << "\" fill-opacity=\"0.15\" stroke=\"" << escape(f.color)
+              << "\" stroke-width=\"1.2\" points=\"";
+            for (const auto &v : f.vertices)
+                s << X(v.x) << "," << Y(v.y) << " ";
+            s << "\"><title>" << escape(f.title) << "</title></polygon>\n";
+        }
         for (std::size_t i = 0; i < paths.size(); ++i)
         {
             const SvgPath &p = paths[i];

@@ -18,10 +18,19 @@ namespace mhplan
         std::string color{"#d62728"};
     };
 
-    /** \brief An SVG document of the world (bounds, obstacles, the query's start and goal) and paths, y up.
-     */
+    /** \brief A robot's outline placed in the world (world-frame vertices), drawn filled and translucent. */
+    struct SvgFootprint
+    {
+        std::vector<Vec2> vertices;
+        std::string color{"#d62728"};
+        std::string title; ///< the element's tooltip ("start", "goal", "pose 3", ...)
+    };
+
+    /** \brief An SVG document of the world (bounds, obstacles, the query's start and goal) and paths, y up;
+        \e footprints (a polygon robot's outline at poses along the path, docs/cli.md "plan") are drawn
+        beneath the paths, as elements \c polygon of class \c footprint. */
     std::string worldSvg(const World &world, const Query *query, const std::vector<SvgPath> &paths,
-                         double pixelsPerMetre = 0.0);
+                         double pixelsPerMetre = 0.0, const std::vector<SvgFootprint> &footprints = {});
 
     /** \brief The world's SVG elements (bounds, grid cells, obstacles) without a document around them, in
         worldSvg's coordinates: x' = margin + (x - xmin) * pixelsPerMetre, y' = margin + (ymax - y) *

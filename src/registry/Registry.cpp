@@ -42,9 +42,11 @@
 #include <ompl/geometric/planners/stride/STRIDE.h>
 
 #include <ompl/base/spaces/RealVectorStateProjections.h>
+#include <ompl/geometric/SimpleSetup.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 
 #include <numeric>
+#include <utility>
 #include <set>
 
 namespace ob = ompl::base;
@@ -212,17 +214,112 @@ namespace mhplan
         return builtinPlanners().create(name, si, params);
     }
 
-    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark, const std::vector<std::string> &names)
+    BenchmarkPlanner::BenchmarkPlanner(const char *text) : BenchmarkPlanner(std::string(text)) {}
+
+    BenchmarkPlanner::BenchmarkPlanner(const std::string &text)
+    {
+        *this = parseBenchmarkPlanner(text);
+    }
+
+    BenchmarkPlanner::BenchmarkPlanner(std::string name, std::map<std::string, std::string> params,
+                                       std::string displayName)
+        : name(std::move(name)), params(std::move(params)), displayName(std::move(displayName))
+    {
+    }
+
+    BenchmarkPlanner parseBenchmarkPlanner(const std::string &text)
+    {
+        const std::string accepted = "expected NAME, NAME[key=value,...], NAME@DISPLAY or "
+                                     "NAME[key=value,...]@DISPLAY";
+        auto refuse = [&](const std::string &why)
+        { throw InputError("planner '" + text + "': " + why + " (" + accepted + ")"); };
+        BenchmarkPlanner out;
+        std::string rest = text;
+        const auto at = rest.find('@', rest.rfind(']') == std::string::npos ? 0 : rest.rfind(']'));
+        if (at != std::string::npos)
+        {
+            out.displayName = rest.substr(at + 1);
+            rest = rest.substr(0, at);
+            if (out.displayName.empty())
+                refuse("empty display name after '@'");
+            if (out.displayName.find_first_of("@[]") != std::string::npos)
+                refuse("the display name holds '@', '[' or ']'");
+        }
+        const auto open = rest.find('[');
+        if (open != std::string::npos)
+        {
+            if (rest.back() != ']')
+                refuse("'[' without a closing ']' at the end");
+            const std::string list = rest.substr(open + 1, rest.size() - open - 2);
+            rest = rest.substr(0, open);
+            std::size_t from = 0;
+            while (from <= list.size() && !list.empty())
+            {
+                const auto comma = list.find(',', from);
+                const std::string item =
+                    list.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+                if (item.find('=') == std::string::npos || item.front() == '=')
+                    refuse("parameter '" + item + "' is not key=value");
+                parseKeyValue(item, out.params);
+                if (comma == std::string::npos)
+                    break;
+                from = comma + 1;
+            }
+        }
+        else if (rest.find(']') != std::string::npos)
+            refuse("']' without '['");
+        out.name = rest;
+        if (out.name.empty())
+            refuse("no planner name");
+        return out;
+    }
+
+    namespace
+    {
+        /** The geometric SimpleSetup of an OMPL benchmark (OMPL 1.5.2 keeps it protected; reached through a
+            pointer to the member, the legal way a derived class offers); null for a control benchmark. */
+        struct BenchmarkAccess : ompl::tools::Benchmark
+        {
+            static og::SimpleSetup *setup(ompl::tools::Benchmark &b)
+            {
+                return b.*(&BenchmarkAccess::gsetup_);
+            }
+        };
+    } // namespace
+
+    void addPlannersToBenchmark(ompl::tools::Benchmark &benchmark,
+                                const std::vector<BenchmarkPlanner> &chosen)
     {
         const PlannerRegistry &reg = builtinPlanners();
-        std::vector<std::string> chosen = names;
-        if (chosen.empty())
+        std::vector<BenchmarkPlanner> planners = chosen;
+        if (planners.empty())
             for (const auto &n : reg.names())
                 if (reg.get(n).origin == "mhplan")
-                    chosen.push_back(n);
-        for (const auto &n : chosen)
-            reg.get(n); // refuse unknown names before adding anything
-        for (const auto &n : chosen)
-            benchmark.addPlannerAllocator(reg.get(n).allocate);
+                    planners.push_back({n, {}, ""});
+        og::SimpleSetup *setup = BenchmarkAccess::setup(benchmark);
+        if (setup == nullptr)
+            throw InputError(
+                "addPlannersToBenchmark: the benchmark plans with controls; mhplan's registry holds "
+                "geometric planners (ompl::tools::Benchmark(geometric::SimpleSetup &, ...))");
+        // Check everything on the benchmark's own space before adding anything.
+        std::set<std::string> shown;
+        for (const BenchmarkPlanner &p : planners)
+        {
+            const ob::PlannerPtr probe = reg.create(p.name, setup->getSpaceInformation(), p.params);
+            const std::string display = p.displayName.empty() ? probe->getName() : p.displayName;
+            if (!shown.insert(display).second)
+                throw InputError("addPlannersToBenchmark: two planners named '" + display +
+                                 "' (their runs would merge): give one a display name, NAME@DISPLAY");
+        }
+        for (const BenchmarkPlanner &p : planners)
+            benchmark.addPlannerAllocator(
+                [p](const ob::SpaceInformationPtr &si)
+                {
+                    ob::PlannerPtr planner = builtinPlanners().create(p.name, si, p.params);
+                    if (!p.displayName.empty())
+                        planner->setName(p.displayName);
+                    return planner;
+                });
     }
+
 } // namespace mhplan
