@@ -31,7 +31,11 @@ grep -q "int main" "$work/consumer_src/readme_example.cpp"
 cmake -S "$work/consumer_src" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/consumer" -j 2 >/dev/null
 "$work/consumer/consumer"
-"$work/consumer/readme_example" | grep -q "allocated LRSMA"
+# (Into a file, not a pipe: grep -q stops reading at the first match and the example, still writing, would
+# die of SIGPIPE.)
+"$work/consumer/readme_example" >"$work/readme_example.out"
+grep -q "allocated LRSMA" "$work/readme_example.out"
+grep -q "exact set-up: SMA path length" "$work/readme_example.out"
 # The Debian package, with its dependencies.
 (cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" >/dev/null)
 deb=$(ls "$work"/mhplan_*.deb)

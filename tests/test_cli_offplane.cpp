@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -216,4 +218,55 @@ TEST(CliOffPlane, PlanSvgDrawsThePolygonRobotAtStartGoalAndAlongThePath)
     EXPECT_GE(lying, 1) << "no footprint shows the bar turned to pass the gap";
     EXPECT_GE(standing, 1);
     fs::remove_all(dir);
+}
+
+TEST(CliOffPlane, ACampaignRefusesAnInapplicablePairOrSkipsItWhenToldAndTheReportSaysSo)
+{
+    // GA plans on R^2 only: paired with an SE(2) world, the campaign is refused when it is read, naming the
+    // line, the pair and a planner that runs there; nothing is written. With skip_inapplicable the pair is
+    // not run (no run recorded, GA still runs on the planar world) and the report lists it as skipped.
+    const std::string dir = tempDir("skip");
+    const std::string campaign = dir + "/c.yaml";
+    const std::string body =
+        "campaign: skiptest\ndatabase: " + dir + "/out/skip.db\nlogs: " + dir +
+        "/out/logs\ntime_limit: 0.05\nruns: 1\nseed: 3\nworlds:\n  - se2_narrow_passage\n"
+        "  - bfo_case1\nplanners:\n  - GA\n  - RRTstar\n";
+    write(campaign, body);
+    const auto refused = runCli("bench " + campaign);
+    EXPECT_EQ(refused.code, 1) << refused.out;
+    EXPECT_TRUE(contains(refused.out, "c.yaml:11: planners[0] (GA) on worlds[0] 'se2_narrow_passage'"))
+        << refused.out;
+    EXPECT_TRUE(contains(refused.out, "skip_inapplicable: true")) << refused.out;
+    EXPECT_FALSE(fs::exists(dir + "/out/skip.db"));
+
+    write(campaign, "skip_inapplicable: true\n" + body);
+    const auto ran = runCli("bench " + campaign);
+    ASSERT_EQ(ran.code, 0) << ran.out;
+    EXPECT_TRUE(contains(ran.out, "skip_inapplicable")) << ran.out;
+    const std::string db = dir + "/out/skip.db";
+    const auto runs = [&](const std::string &world, const std::string &planner)
+    {
+        const std::string cmd =
+            "sqlite3 " + db +
+            " \"select count(*) from runs r join plannerConfigs p on r.plannerid = p.id join "
+            "experiments e on r.experimentid = e.id where e.name = '" +
+            world + "-default' and p.name = 'geometric_" + planner + "'\"";
+        FILE *pipe = popen(cmd.c_str(), "r");
+        char buf[64] = {0};
+        const bool got = pipe != nullptr && std::fgets(buf, sizeof buf, pipe) != nullptr;
+        if (pipe != nullptr)
+            pclose(pipe);
+        return got ? std::atoi(buf) : -1;
+    };
+    EXPECT_EQ(runs("se2_narrow_passage", "GA"), 0);
+    EXPECT_EQ(runs("se2_narrow_passage", "RRTstar"), 1);
+    EXPECT_EQ(runs("bfo_case1", "GA"), 1);
+    EXPECT_EQ(runs("bfo_case1", "RRTstar"), 1);
+
+    const auto report = runCli("report " + db + " -o " + dir + "/report");
+    ASSERT_EQ(report.code, 0) << report.out;
+    std::ifstream in(dir + "/report/index.html");
+    std::stringstream html;
+    html << in.rdbuf();
+    EXPECT_TRUE(contains(html.str(), "skipped by the campaign's skip_inapplicable, not a failure): GA."));
 }
