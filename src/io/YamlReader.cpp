@@ -3,6 +3,9 @@
 
 #include "mhplan/base/World.h"
 
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -58,6 +61,54 @@ namespace mhplan
                     return it->second;
             return -1;
         }
+
+        /** \brief Counts the documents a yaml-cpp parser reports, and where the second one starts. */
+        class DocumentCounter : public YAML::EventHandler
+        {
+          public:
+            void OnDocumentStart(const YAML::Mark &mark) override
+            {
+                if (++documents == 2)
+                    second = mark;
+            }
+            void OnDocumentEnd() override {}
+            void OnNull(const YAML::Mark &, YAML::anchor_t) override {}
+            void OnAlias(const YAML::Mark &, YAML::anchor_t) override {}
+            void OnScalar(const YAML::Mark &, const std::string &, YAML::anchor_t,
+                          const std::string &) override
+            {
+            }
+            void OnSequenceStart(const YAML::Mark &, const std::string &, YAML::anchor_t,
+                                 YAML::EmitterStyle::value) override
+            {
+            }
+            void OnSequenceEnd() override {}
+            void OnMapStart(const YAML::Mark &, const std::string &, YAML::anchor_t,
+                            YAML::EmitterStyle::value) override
+            {
+            }
+            void OnMapEnd() override {}
+            int documents{0};
+            YAML::Mark second{YAML::Mark::null_mark()};
+        };
+
+        /** \brief True when \e text holds a second YAML document; \e line is its line (1-based, 0 unknown).
+            Another document needs a marker line ("---" or "...") after the first character; without one the
+            text is a single document and is not parsed twice. Otherwise at most two documents are parsed:
+            yaml-cpp 0.7's LoadAll never ends on some malformed inputs (",\xf2SM" yields documents forever,
+            growing memory; found by the world_yaml fuzz target). */
+        bool secondDocument(const std::string &text, int &line)
+        {
+            if (text.find("\n---") == std::string::npos && text.find("\n...") == std::string::npos)
+                return false;
+            std::istringstream in(text);
+            YAML::Parser parser(in);
+            DocumentCounter counter;
+            if (!parser.HandleNextDocument(counter) || !parser.HandleNextDocument(counter))
+                return false;
+            line = counter.second.line >= 0 ? counter.second.line + 1 : 0;
+            return true;
+        }
     } // namespace
 
     YAML::Node loadYamlMapping(const std::string &text, const std::string &fileName, const std::string &what,
@@ -70,19 +121,18 @@ namespace mhplan
         YAML::Node root;
         try
         {
-            // Every document is parsed: a second one ("---") would otherwise be ignored silently.
-            const std::vector<YAML::Node> docs = YAML::LoadAll(text);
-            if (docs.size() > 1)
+            root = YAML::Load(text);
+            // A second document ("---") would otherwise be ignored silently.
+            int line = 0;
+            if (secondDocument(text, line))
             {
                 std::ostringstream msg;
                 msg << fileName;
-                if (docs[1].Mark().line >= 0)
-                    msg << ":" << docs[1].Mark().line + 1;
+                if (line > 0)
+                    msg << ":" << line;
                 msg << ": a " << what << " holds one YAML document; a second one (after '---') is not read";
                 throw InputError(msg.str());
             }
-            if (!docs.empty())
-                root = docs.front();
         }
         catch (const YAML::ParserException &e)
         {
