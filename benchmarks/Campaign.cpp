@@ -5,6 +5,7 @@
 #include "mhplan/collision/Collision.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/collision/Problem.h"
+#include "mhplan/collision/RigidBody.h"
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/base/World.h"
 #include "mhplan/io/InputFile.h"
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -568,6 +570,10 @@ namespace mhplan::bench
             }
             const CollisionModelPtr model =
                 makeCollisionModel(world, parseCollisionBackend(campaign.collision));
+            // An SE(2)-based world's robot model, built once for all its queries (validateQuery would build
+            // one per query).
+            const std::unique_ptr<const RigidBodyModel> rigid =
+                world.isRigid() ? std::make_unique<const RigidBodyModel>(world) : nullptr;
             std::vector<const Query *> queries;
             if (spec.queries.empty())
                 for (const auto &q : world.queries)
@@ -597,6 +603,7 @@ namespace mhplan::bench
             prefix.add("world ");
             prefix.add(worldText);
             const std::string inputHash = fingerprint(worldText);
+            out.reserve(out.size() + queries.size());
             for (const Query *qp : queries)
             {
                 const Query &q = *qp;
@@ -605,7 +612,10 @@ namespace mhplan::bench
                         campaign.file + ": worlds[" + std::to_string(wi) + "]: query name '" + q.name +
                         "' of world '" + world.name + "' (" + file +
                         ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
-                validateQuery(world, q, *model);
+                if (rigid)
+                    validateRigidQuery(world, q, *rigid);
+                else
+                    validateQuery(world, q, *model);
                 Experiment e;
                 e.index = out.size();
                 e.name = world.name + "-" + q.name;
@@ -716,6 +726,7 @@ namespace mhplan::bench
             throw InputError("shard " + std::to_string(part) + "/" + std::to_string(parts) +
                              ": expected i/N with 1 <= i <= N");
         std::vector<Experiment> out;
+        out.reserve(all.size() / parts + 1);
         for (const auto &e : all)
             if (e.index % parts == part - 1)
                 out.push_back(e);

@@ -160,9 +160,11 @@ namespace mhplan::cli
             "interrupted campaign resumes where it stopped. Shards split the experiments between machines; "
             "one final --merge-only builds the database from all logs. An OMPL.app problem file "
             "(PROBLEM.cfg, docs/omplapp.md) runs its own benchmark (its planners, parameters, run_count, "
-            "time_limit, mem_limit, save_paths) in this process; it takes --runs, --time, --seed, --database, "
+            "time_limit, mem_limit, save_paths) in this process; it takes --runs, --time, --seed, "
+            "--database, "
             "--logs, --no-progress and --validator certified|discrete.",
-            {{"CAMPAIGN", "a campaign file (e.g. benchmarks/seeds.yaml), or an OMPL.app problem file (.cfg)"}},
+            {{"CAMPAIGN",
+              "a campaign file (e.g. benchmarks/seeds.yaml), or an OMPL.app problem file (.cfg)"}},
             {{"--jobs", "N", "experiments run in parallel, 1..256 (default 1)"},
              {"--shard", "i/N",
               "run only the i-th of N shares of the experiments (writes logs, no database)"},
@@ -294,12 +296,17 @@ namespace mhplan::cli
         if (args.has("list"))
         {
             const auto all = bench::enumerateExperiments(campaign, options.resolveWorld);
-            const auto mine = bench::shardExperiments(all, options.shardIndex, options.shardCount);
-            for (const auto &e : mine)
+            // Unsharded, the list is all of them (not copied: a world may have 10^5 queries).
+            const auto shard = options.shardCount > 1
+                                   ? bench::shardExperiments(all, options.shardIndex, options.shardCount)
+                                   : std::vector<bench::Experiment>{};
+            for (const auto &e : options.shardCount > 1 ? shard : all)
+            {
+                const std::string log = bench::logFile(campaign, e);
                 std::cout << e.index << "\t" << e.name << "\t"
-                          << (bench::logIsComplete(bench::logFile(campaign, e), e.configHash) ? "complete"
-                                                                                              : "to do")
-                          << "\t" << bench::logFile(campaign, e) << "\n";
+                          << (bench::logIsComplete(log, e.configHash) ? "complete" : "to do") << "\t" << log
+                          << "\n";
+            }
             return 0;
         }
 

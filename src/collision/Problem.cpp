@@ -23,14 +23,18 @@ namespace mhplan
         void checkEndpoint(const World &world, const Query &query, const CollisionModel &model, const Vec2 &p,
                            const char *field)
         {
-            std::ostringstream where;
-            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
-                  << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
+            const auto where = [&] // only for a message: a campaign checks every query of every world
+            {
+                std::ostringstream out;
+                out << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                    << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
+                return out.str();
+            };
             if (!model.inBounds(p))
-                throw InputError(where.str() + " is out of bounds: the robot disc (radius " +
+                throw InputError(where() + " is out of bounds: the robot disc (radius " +
                                  std::to_string(world.robotRadius) + ") must lie inside the world's bounds");
             if (!model.isValid(p))
-                throw InputError(where.str() + " is in collision (clearance " +
+                throw InputError(where() + " is in collision (clearance " +
                                  std::to_string(model.clearance(p)) + ")");
         }
     } // namespace
@@ -40,14 +44,17 @@ namespace mhplan
         void checkPose(const World &world, const Query &query, const RigidBodyModel &model, const Pose2 &p,
                        const char *field)
         {
-            std::ostringstream where;
-            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
-                  << "' field '" << field << "' (" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+            const auto where = [&]
+            {
+                std::ostringstream out;
+                out << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                    << "' field '" << field << "' (" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+                return out.str();
+            };
             if (!model.inBounds(p))
-                throw InputError(where.str() +
-                                 " is out of bounds: the robot must lie inside the world's bounds");
+                throw InputError(where() + " is out of bounds: the robot must lie inside the world's bounds");
             if (!model.isValid(p))
-                throw InputError(where.str() + " is in collision (the robot overlaps an obstacle)");
+                throw InputError(where() + " is in collision (the robot overlaps an obstacle)");
         }
     } // namespace
 
