@@ -149,11 +149,12 @@ namespace mhplan
 
     namespace
     {
-        og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query)
+        og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query,
+                                          const SimpleSetupFactory &make)
         {
             auto rigid = std::make_shared<const RigidBodyModel>(world);
             validateRigidQuery(world, query, *rigid);
-            auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+            og::SimpleSetupPtr ss = make(makeStateSpace(world));
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
             si->setStateValidityChecker(std::make_shared<RigidValidityChecker>(si, rigid));
             si->setMotionValidator(std::make_shared<CertifiedMotionValidator>(
@@ -187,14 +188,22 @@ namespace mhplan
 
     og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
     {
+        return makeSimpleSetup(world, query, model,
+                               [](const ob::StateSpacePtr &space)
+                               { return std::make_shared<og::SimpleSetup>(space); });
+    }
+
+    og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model,
+                                       const SimpleSetupFactory &make)
+    {
         if (world.isRigid())
         {
-            og::SimpleSetupPtr rigid = makeRigidSetup(world, query);
+            og::SimpleSetupPtr rigid = makeRigidSetup(world, query, make);
             registerIntermediateCallback(rigid);
             return rigid;
         }
         validateQuery(world, query, *model);
-        auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+        og::SimpleSetupPtr ss = make(makeStateSpace(world));
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
         si->setStateValidityChecker(std::make_shared<WorldValidityChecker>(si, model));
         si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, model));
