@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -628,12 +629,13 @@ namespace mhplan::bench
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");
                 e.seed = deriveSeed(campaign.seed, e.name, 0);
-                std::ostringstream tail; // after the world's bytes (the same fingerprint as before)
-                tail.precision(17);
-                tail << "\nquery " << q.name << " " << q.start.x << " " << q.start.y << " " << q.goal.x << " "
-                     << q.goal.y << "\n";
+                // After the world's bytes (the same fingerprint as before): the query's name and points as
+                // an ostream of precision 17 writes them ("%.17g"; a world may have 10^5 queries).
+                char points[4 * 32];
+                std::snprintf(points, sizeof points, " %.17g %.17g %.17g %.17g\n", q.start.x, q.start.y,
+                              q.goal.x, q.goal.y);
                 Fingerprint all = prefix;
-                all.add(tail.str());
+                all.add("\nquery " + q.name + points);
                 e.configHash = all.hex();
                 e.inputHash = inputHash;
                 out.push_back(std::move(e));

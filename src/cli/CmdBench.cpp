@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <iostream>
 
 namespace mhplan::cli
@@ -300,12 +301,25 @@ namespace mhplan::cli
             const auto shard = options.shardCount > 1
                                    ? bench::shardExperiments(all, options.shardIndex, options.shardCount)
                                    : std::vector<bench::Experiment>{};
+            // The log directory is read once: only the logs in it are opened (not 10^5 missing files).
+            std::set<std::string> present;
+            bool listed = true; // else (a directory that cannot be listed) every log is opened
+            std::error_code ec;
+            if (std::filesystem::exists(campaign.logDir, ec))
+            {
+                for (std::filesystem::directory_iterator it(campaign.logDir, ec), end; !ec && it != end;
+                     it.increment(ec))
+                    present.insert(it->path().filename().string());
+                listed = !ec;
+            }
             for (const auto &e : options.shardCount > 1 ? shard : all)
             {
                 const std::string log = bench::logFile(campaign, e);
-                std::cout << e.index << "\t" << e.name << "\t"
-                          << (bench::logIsComplete(log, e.configHash) ? "complete" : "to do") << "\t" << log
-                          << "\n";
+                const bool complete =
+                    (!listed || present.count(std::filesystem::path(log).filename().string()) != 0) &&
+                    bench::logIsComplete(log, e.configHash);
+                std::cout << e.index << "\t" << e.name << "\t" << (complete ? "complete" : "to do") << "\t"
+                          << log << "\n";
             }
             return 0;
         }

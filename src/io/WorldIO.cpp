@@ -338,7 +338,7 @@ namespace mhplan
         };
 
         World readWorld(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys,
-                        const SplitQueries *split);
+                        SplitQueries *split);
     } // namespace
 
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
@@ -373,7 +373,7 @@ namespace mhplan
     namespace
     {
         World readWorld(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys,
-                        const SplitQueries *split)
+                        SplitQueries *split)
         {
             const std::string &fileName = r.file();
             std::set<std::string> keys{"name",    "description", "source",        "assumptions",
@@ -454,7 +454,7 @@ namespace mhplan
             {
                 if (split->headings && !world.isRigid())
                     throw ReadWithTree{}; // refused, with the line, by readPose
-                world.queries = split->queries;
+                world.queries = std::move(split->queries);
             }
             // A query's start or goal that is out of bounds or in collision: refused with its line.
             const auto failQuery = [&](std::size_t i, const char *key, const std::string &what)
