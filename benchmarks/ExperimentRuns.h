@@ -53,6 +53,11 @@ namespace mhplan::bench::detail
         const Campaign *campaign{nullptr};
         const Experiment *experiment{nullptr};
         const PlannerRegistry *registry{nullptr};
+        /** The world as the campaign's process parsed it, and the fingerprint of the bytes parsed (or null):
+            the experiment process reads the file's bytes and takes this world when they are the same,
+            instead of parsing them again (a world of 10^5 queries, 0.7 s per experiment). */
+        const World *parsed{nullptr};
+        std::string parsedHash;
         World world;
         Query query;
         CollisionModelPtr model;

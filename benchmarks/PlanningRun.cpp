@@ -10,6 +10,7 @@
 #include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
+#include "mhplan/io/InputFile.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/registry/Registry.h"
@@ -344,7 +345,22 @@ namespace mhplan::bench::detail
         const Experiment &e = *xs.experiment;
         machineCpuInfo(); // once here, inherited by every run process
         std::string bytes;
-        xs.world = loadWorld(e.worldFile, &bytes);
+        bool reused = false;
+        if (xs.parsed)
+        {
+            try
+            {
+                bytes = readInputFile(e.worldFile, kMaxGridFileBytes, "world file");
+                reused = fingerprint(bytes) == xs.parsedHash;
+            }
+            catch (const InputError &)
+            {
+            }
+        }
+        if (reused)
+            xs.world = *xs.parsed; // the same bytes, parsed by the campaign's process
+        else
+            xs.world = loadWorld(e.worldFile, &bytes);
         checkInputUnchanged(e, bytes, e.worldFile);
         xs.query = experimentQuery(xs.world, e); // a MovingAI problem: from its .scen line
         xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));
