@@ -5,6 +5,7 @@
 #include "mhplan/collision/Collision.h"
 #include "mhplan/sim/Controllers.h"
 #include "mhplan/collision/Problem.h"
+#include "mhplan/collision/RigidBody.h"
 #include "mhplan/sim/ScenarioIO.h"
 #include "mhplan/base/World.h"
 #include "mhplan/io/InputFile.h"
@@ -17,9 +18,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -568,6 +571,10 @@ namespace mhplan::bench
             }
             const CollisionModelPtr model =
                 makeCollisionModel(world, parseCollisionBackend(campaign.collision));
+            // An SE(2)-based world's robot model, built once for all its queries (validateQuery would build
+            // one per query).
+            const std::unique_ptr<const RigidBodyModel> rigid =
+                world.isRigid() ? std::make_unique<const RigidBodyModel>(world) : nullptr;
             std::vector<const Query *> queries;
             if (spec.queries.empty())
                 for (const auto &q : world.queries)
@@ -597,6 +604,7 @@ namespace mhplan::bench
             prefix.add("world ");
             prefix.add(worldText);
             const std::string inputHash = fingerprint(worldText);
+            out.reserve(out.size() + queries.size());
             for (const Query *qp : queries)
             {
                 const Query &q = *qp;
@@ -605,7 +613,10 @@ namespace mhplan::bench
                         campaign.file + ": worlds[" + std::to_string(wi) + "]: query name '" + q.name +
                         "' of world '" + world.name + "' (" + file +
                         ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
-                validateQuery(world, q, *model);
+                if (rigid)
+                    validateRigidQuery(world, q, *rigid);
+                else
+                    validateQuery(world, q, *model);
                 Experiment e;
                 e.index = out.size();
                 e.name = world.name + "-" + q.name;
@@ -618,12 +629,13 @@ namespace mhplan::bench
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");
                 e.seed = deriveSeed(campaign.seed, e.name, 0);
-                std::ostringstream tail; // after the world's bytes (the same fingerprint as before)
-                tail.precision(17);
-                tail << "\nquery " << q.name << " " << q.start.x << " " << q.start.y << " " << q.goal.x << " "
-                     << q.goal.y << "\n";
+                // After the world's bytes (the same fingerprint as before): the query's name and points as
+                // an ostream of precision 17 writes them ("%.17g"; a world may have 10^5 queries).
+                char points[4 * 32];
+                std::snprintf(points, sizeof points, " %.17g %.17g %.17g %.17g\n", q.start.x, q.start.y,
+                              q.goal.x, q.goal.y);
                 Fingerprint all = prefix;
-                all.add(tail.str());
+                all.add("\nquery " + q.name + points);
                 e.configHash = all.hex();
                 e.inputHash = inputHash;
                 out.push_back(std::move(e));
@@ -716,6 +728,7 @@ namespace mhplan::bench
             throw InputError("shard " + std::to_string(part) + "/" + std::to_string(parts) +
                              ": expected i/N with 1 <= i <= N");
         std::vector<Experiment> out;
+        out.reserve(all.size() / parts + 1);
         for (const auto &e : all)
             if (e.index % parts == part - 1)
                 out.push_back(e);

@@ -12,7 +12,11 @@
 #include "mhplan/collision/Collision.h"
 #include "mhplan/sim/Simulation.h"
 
+#include <ompl/geometric/SimpleSetup.h>
+
 #include <limits>
+#include <optional>
+#include <ostream>
 #include <map>
 #include <string>
 #include <vector>
@@ -49,6 +53,11 @@ namespace mhplan::bench::detail
         const Campaign *campaign{nullptr};
         const Experiment *experiment{nullptr};
         const PlannerRegistry *registry{nullptr};
+        /** The world as the campaign's process parsed it, and the fingerprint of the bytes parsed (or null):
+            the experiment process reads the file's bytes and takes this world when they are the same,
+            instead of parsing them again (a world of 10^5 queries, 0.7 s per experiment). */
+        const World *parsed{nullptr};
+        std::string parsedHash;
         World world;
         Query query;
         CollisionModelPtr model;
@@ -69,6 +78,34 @@ namespace mhplan::bench::detail
 
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs);
+
+    /** The SimpleSetup of a benchmark run (benchmarks/README.md, "Overhead"). OMPL's Benchmark prints its
+        setup before every run (SimpleSetup::print), and SpaceInformation::printProperties in it measures the
+        space: sanity checks, 1000 validity checks, 1000 motions and 3000 samples timed, about 1 ms per run,
+        for a text that a run process throws away (the log's setup text is printed once by the experiment
+        process). With printSeeds(n) set, print() leaves that measuring out and instead makes \e n of OMPL's
+        random number generators and drops them: the measuring's only effect on what follows is the
+        generators its samplers make, each taking the next seed of OMPL's seed sequence, so every later
+        generator (the planner's samplers, the path simplifier's) gets the same seed, and the run the same
+        random numbers, as under OMPL's own print. Without it, print() is OMPL's. */
+    class RunSetup : public ompl::geometric::SimpleSetup
+    {
+      public:
+        explicit RunSetup(const ompl::base::StateSpacePtr &space) : ompl::geometric::SimpleSetup(space) {}
+
+        void print(std::ostream &out) const override;
+
+        /** \brief Leave the space's measuring out of print() (see above), taking \e seeds seeds instead. */
+        void printSeeds(std::size_t seeds) { printSeeds_ = seeds; }
+
+        /** \brief The seeds to take: how many more seeds OMPL's print() takes on this setup than the print()
+            without measuring (measured here, by the seeds of the generators made after either; the caller
+            seeds its runs afterwards). std::nullopt when that cannot be told: OMPL's print() then stays. */
+        std::optional<std::size_t> measurePrintSeeds();
+
+      private:
+        std::optional<std::size_t> printSeeds_;
+    };
 
     /** Experiment process of a planning experiment: every planner of the campaign, every run in its own
         child process; then the log and the sidecars. Reports each run to \e progressFd; returns the exit

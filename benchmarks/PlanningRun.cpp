@@ -10,6 +10,7 @@
 #include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
+#include "mhplan/io/InputFile.h"
 #include "mhplan/io/WorldIO.h"
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/registry/Registry.h"
@@ -24,6 +25,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <iostream>
 #include <sstream>
 
@@ -107,6 +110,36 @@ namespace mhplan::bench::detail
             std::uint32_t seed;
         };
 
+        /** How many seeds of OMPL's seed sequence \e f takes: the seed of the generator made after it, found
+            among those made after the same starting seed. std::nullopt beyond \e most. */
+        std::optional<std::size_t> seedsTaken(const std::function<void()> &f, std::size_t most)
+        {
+            constexpr std::uint32_t kStart = 20240611;
+            seedRunProcess(kStart);
+            f();
+            const auto after = ompl::RNG().getLocalSeed();
+            seedRunProcess(kStart);
+            for (std::size_t n = 0; n <= most; ++n)
+                if (ompl::RNG().getLocalSeed() == after)
+                    return n;
+            return std::nullopt;
+        }
+
+        /** The seeds RunSetup::print takes instead of OMPL's measuring on this experiment's setup, measured
+            once per run process (before its first run sets its seed). */
+        std::optional<std::size_t> runPrintSeeds(const ExperimentSetup &xs)
+        {
+            static const std::optional<std::size_t> seeds = [&]
+            {
+                const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model,
+                                                              [](const ob::StateSpacePtr &space)
+                                                              { return std::make_shared<RunSetup>(space); });
+                ss->getSpaceInformation()->setup();
+                return static_cast<RunSetup &>(*ss).measurePrintSeeds();
+            }();
+            return seeds;
+        }
+
         /** In the run process: run \e spec once (run \e runIndex) through ompl::tools::Benchmark and send
             the run's properties, path and progress to \e fd, every message with the run's position \e slot
             in the experiment's sequence, the last one 'E'. Everything the run makes (the SimpleSetup, the
@@ -115,12 +148,17 @@ namespace mhplan::bench::detail
                             std::uint32_t seed, std::size_t slot, int fd)
         {
             ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+            const std::optional<std::size_t> printSeeds = runPrintSeeds(xs);
             // The seed before any random number generator of the run exists (ChildProcess.h).
             seedRunProcess(seed);
             const Campaign &c = *xs.campaign;
             // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
             // generator (its path simplifier's).
-            const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+            const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model,
+                                                          [](const ob::StateSpacePtr &space)
+                                                          { return std::make_shared<RunSetup>(space); });
+            if (printSeeds)
+                static_cast<RunSetup &>(*ss).printSeeds(*printSeeds);
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
             ob::PlannerPtr inner = xs.registry->create(spec.planner, si, spec.params);
             inner->setName(spec.displayName);
@@ -271,6 +309,40 @@ namespace mhplan::bench::detail
         }
     } // namespace
 
+    void RunSetup::print(std::ostream &out) const
+    {
+        if (!printSeeds_)
+        {
+            og::SimpleSetup::print(out);
+            return;
+        }
+        // OMPL's print (SimpleSetup::print) without SpaceInformation::printProperties' measuring, whose
+        // generators are made and dropped.
+        for (std::size_t i = 0; i < *printSeeds_; ++i)
+            ompl::RNG();
+        si_->printSettings(out);
+        if (planner_)
+        {
+            planner_->printProperties(out);
+            planner_->printSettings(out);
+        }
+        pdef_->print(out);
+    }
+
+    std::optional<std::size_t> RunSetup::measurePrintSeeds()
+    {
+        std::ostringstream sink;
+        const std::optional<std::size_t> saved = printSeeds_;
+        printSeeds_.reset();
+        const std::optional<std::size_t> omplPrint = seedsTaken([&] { print(sink); }, 1000);
+        printSeeds_ = 0;
+        const std::optional<std::size_t> without = seedsTaken([&] { print(sink); }, 1000);
+        printSeeds_ = saved;
+        if (!omplPrint || !without || *without > *omplPrint)
+            return std::nullopt;
+        return *omplPrint - *without;
+    }
+
     double runWallBound(const Campaign &c)
     {
         return c.cpuTimeLimit ? kCpuLimitWallFactor * c.timeLimit + 10.0 : c.timeLimit;
@@ -288,7 +360,22 @@ namespace mhplan::bench::detail
         const Experiment &e = *xs.experiment;
         machineCpuInfo(); // once here, inherited by every run process
         std::string bytes;
-        xs.world = loadWorld(e.worldFile, &bytes);
+        bool reused = false;
+        if (xs.parsed)
+        {
+            try
+            {
+                bytes = readInputFile(e.worldFile, kMaxGridFileBytes, "world file");
+                reused = fingerprint(bytes) == xs.parsedHash;
+            }
+            catch (const InputError &)
+            {
+            }
+        }
+        if (reused)
+            xs.world = *xs.parsed; // the same bytes, parsed by the campaign's process
+        else
+            xs.world = loadWorld(e.worldFile, &bytes);
         checkInputUnchanged(e, bytes, e.worldFile);
         xs.query = experimentQuery(xs.world, e); // a MovingAI problem: from its .scen line
         xs.model = makeCollisionModel(xs.world, parseCollisionBackend(c.collision));

@@ -332,11 +332,31 @@ namespace mhplan::bench
             std::map<pid_t, Active> active;
             std::size_t nextTodo = 0, expDone = 0, runsDone = 0;
             ::signal(SIGPIPE, SIG_IGN);
+            std::string parsedFile; // the world file parsed last, its world and fingerprint
+            std::unique_ptr<const World> parsedWorld;
+            std::string parsedHash;
             while (nextTodo < todo.size() || !active.empty())
             {
                 while (nextTodo < todo.size() && active.size() < options.jobs)
                 {
                     const Experiment *e = todo[nextTodo++];
+                    if (e->simulation == Experiment::kNoSimulation && e->worldFile != parsedFile)
+                    {
+                        // Parsed once here for the experiments of this world (they come in world order);
+                        // a file that does not load is left to the experiment process, which says why.
+                        parsedFile = e->worldFile;
+                        parsedWorld.reset();
+                        try
+                        {
+                            std::string bytes;
+                            World w = loadWorld(parsedFile, &bytes);
+                            parsedHash = fingerprint(bytes);
+                            parsedWorld = std::make_unique<const World>(std::move(w));
+                        }
+                        catch (const std::exception &)
+                        {
+                        }
+                    }
                     std::vector<int> others;
                     for (const auto &kv : active)
                         others.push_back(kv.second.process->fd());
@@ -354,6 +374,8 @@ namespace mhplan::bench
                                     xs.campaign = &campaign;
                                     xs.experiment = e;
                                     xs.registry = &registry;
+                                    xs.parsed = parsedWorld.get();
+                                    xs.parsedHash = parsedHash;
                                     prepareExperiment(xs);
                                     code = runPlanningExperiment(xs, fd, solve);
                                 }

@@ -17,8 +17,14 @@
 #include "mhplan/sim/Simulation.h"
 #include "mhplan/base/World.h"
 #include "mhplan/bench/Improvements.h"
+#include "mhplan/bench/ExperimentRuns.h"
+#include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/io/WorldIO.h"
 
 #include <ompl/base/Planner.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Exception.h>
 
 #include <gtest/gtest.h>
@@ -146,6 +152,60 @@ TEST(Campaign, ParsesAndRefusesBadInput)
     EXPECT_EQ(p.planners[0].progress, std::vector<std::string>{"best cost"});
     EXPECT_NE(error("worlds: [a]\nplanners:\n  - {planner: RRT, name: 'a b'}\n").find("blanks"),
               std::string::npos);
+}
+
+// A benchmark run's RunSetup leaves OMPL's measuring out of the setup print before every run and takes as
+// many seeds instead (benchmarks/README.md, "Overhead"): every generator made after it, so every random
+// number of the run, is the same as under OMPL's own print, on every kind of space and with the planner set
+// as OMPL's Benchmark sets it. One seed more or less would change them.
+TEST(RunSetup, TakesTheSeedsOfOmplsPrint)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const PlannerRegistry &registry = builtinPlanners();
+    for (const char *file :
+         {"bfo_case2", "gms_grid10", "se2_narrow_passage", "dubins_circles", "reeds_shepp_parking"})
+    {
+        const World world = loadWorld(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/" + file + ".yaml");
+        const Query query = world.queries.front();
+        const CollisionModelPtr model = makeCollisionModel(world);
+        const auto runSetup = [](const ob::StateSpacePtr &space)
+        { return std::make_shared<detail::RunSetup>(space); };
+        // Measured as a run process does: on a fresh setup, before the run's seed.
+        std::optional<std::size_t> seeds;
+        {
+            const auto ss = makeSimpleSetup(world, query, model, runSetup);
+            ss->getSpaceInformation()->setup();
+            seeds = static_cast<detail::RunSetup &>(*ss).measurePrintSeeds();
+        }
+        ASSERT_TRUE(seeds.has_value()) << file;
+        EXPECT_GT(*seeds, 0u) << file;
+        for (const char *planner : {"RRTConnect", "RRTstar", "PRMstar"})
+        {
+            // The seed of the first generator made after the print, as in OMPL's Benchmark::benchmark: the
+            // planner set up, the print, the setup (its path simplifier's generator), then the next one.
+            const auto next = [&](std::optional<std::size_t> take)
+            {
+                detail::seedRunProcess(4711);
+                const auto ss = take ? makeSimpleSetup(world, query, model, runSetup)
+                                     : makeSimpleSetup(world, query, model);
+                const ob::PlannerPtr p = registry.create(planner, ss->getSpaceInformation());
+                ss->setPlanner(p);
+                ss->getSpaceInformation()->setup();
+                p->setProblemDefinition(ss->getProblemDefinition());
+                p->setup();
+                if (take)
+                    static_cast<detail::RunSetup &>(*ss).printSeeds(*take);
+                std::ostringstream out;
+                ss->print(out);
+                ss->setup();
+                return ompl::RNG().getLocalSeed();
+            };
+            const auto ompls = next(std::nullopt);
+            EXPECT_EQ(next(*seeds), ompls) << file << " " << planner;
+            EXPECT_NE(next(*seeds + 1), ompls) << file << " " << planner;
+            EXPECT_NE(next(*seeds - 1), ompls) << file << " " << planner;
+        }
+    }
 }
 
 TEST(Campaign, SeedsAndShardsAreDeterministic)

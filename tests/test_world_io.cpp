@@ -3,11 +3,15 @@
  */
 #include "mhplan/collision/Collision.h"
 #include "mhplan/io/Generators.h"
+#include "mhplan/io/QueryList.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/io/YamlReader.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace mhplan;
 
@@ -233,4 +237,121 @@ TEST(WorldIO, BfoCase2MatchesTheSpecification)
     EXPECT_EQ(w.queries[0].start, Vec2(0, 0));
     EXPECT_EQ(w.queries[0].goal, Vec2(10, 10));
     EXPECT_NE(w.assumptions.find("assumed"), std::string::npos);
+}
+
+namespace
+{
+    /** What the world reader makes of \e text: the world as YAML with its queries (or the error), and whether
+        it took the quick reading of the queries (QueryList.h). */
+    std::string readBoth(const std::string &text, bool &quick)
+    {
+        const std::size_t before = splitQueriesCount();
+        std::string out;
+        try
+        {
+            out = worldToYaml(parseWorldYaml(text, "w.yaml"));
+        }
+        catch (const InputError &e)
+        {
+            out = std::string("error: ") + e.what();
+        }
+        quick = splitQueriesCount() > before;
+        return out;
+    }
+
+    /** The same with yaml-cpp's tree only (the reader before the quick reading). */
+    std::string readTree(const std::string &text)
+    {
+        try
+        {
+            const YAML::Node root = loadYamlMapping(text, "w.yaml", "world file", "environments/README.md");
+            return worldToYaml(readWorldNode(YamlReader("w.yaml"), root));
+        }
+        catch (const InputError &e)
+        {
+            return std::string("error: ") + e.what();
+        }
+    }
+} // namespace
+
+// The quick reading of the queries (src/io/QueryList.cpp) reads what yaml-cpp's tree reads, and leaves every
+// other form and every problem to the tree: same worlds, same errors with the same lines.
+TEST(WorldIO, QuickQueryReadingReadsWhatTheTreeReads)
+{
+    const std::string se2 =
+        "space: se2\nrobot: {polygon: [[-0.2, -0.1], [0.2, -0.1], [0.2, 0.1], [-0.2, 0.1]]}\n";
+    struct Case
+    {
+        std::string text;
+        bool quick; // the quick reading takes it
+    };
+    const std::vector<Case> cases = {
+        {std::string(kHeader) +
+             "queries:\n  - {start: [1, 1], goal: [9, 9]}\n  - {name: b, start: [1, 2], goal: [9, 8]}\n",
+         true},
+        // the list first, then more keys (their lines must stay), comments and blank lines inside
+        {"queries:\n  # first\n  - start: [1, 1]\n    goal: [9, 9]\n\n  - {name: 'x y', start: ['1.5', 2e0], "
+         "goal: "
+         "[9.25, -0]}\nname: t\n# c\nbounds: {xmin: 0, xmax: 10, ymin: 0, ymax: 10}\nobstacles:\n  - circle: "
+         "{center: [5, 5], radius: 1}\n",
+         true},
+        {"name: t\nqueries: [{start: [1, 1], goal: [9, 9]}, {name: z, goal: [2, 2], start: [3, 3]}]\nbounds: "
+         "[0, 10, 0, "
+         "10]\n",
+         true},
+        {"name: t\r\nbounds: [0, 10, 0, 10]\r\nqueries:\r\n  - {start: [1, 1], goal: [9, 9]}\r\n", true},
+        {std::string(kHeader) + se2 + "queries:\n  - {start: [1, 1, 0.5], goal: [9, 9]}\n", true},
+        // forms left to the tree (all read, or refused, as before)
+        {std::string(kHeader) + "queries:\n- {start: [1, 1], goal: [9, 9]}\n", false},    // indentless
+        {std::string(kHeader) + "queries:\n  - {start: [.5, 1], goal: [9, 9]}\n", false}, // ".5"
+        {std::string(kHeader) + "queries:\n  - {start: [+1, 1], goal: [9, 9]}\n", false},
+        {std::string(kHeader) +
+             "queries:\n  - {start: &a [1, 1], goal: [9, 9]}\n  - {start: *a, goal: [8, 8]}\n",
+         false},
+        {std::string(kHeader) + "queries:\n  - {start: [!!float 1, 1], goal: [9, 9]}\n", false},
+        {"{name: t, bounds: [0, 10, 0, 10], queries: [{start: [1, 1], goal: [9, 9]}]}\n", false},
+        // problems: the same message as the tree's
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1, 0.5], goal: [9, 9]}\n", true},
+        {std::string(kHeader) +
+             "queries:\n  - {start: [1, 1], goal: [9, 9]}\n  - {start: [1, 1], goal: [11, 9]}\n",
+         true},
+        {std::string(kHeader) +
+             "obstacles:\n  - circle: {center: [9, 9], radius: 0.5}\nqueries:\n  - {start: [1, 1], "
+             "goal: [9, 9]}\n",
+         true},
+        {std::string(kHeader) +
+             "queries:\n  - {name: a, start: [1, 1], goal: [9, 9]}\n  - {name: a, start: [1, 2], "
+             "goal: [9, 9]}\n",
+         false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1], goal: [9, 9], via: [2, 2]}\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1]}\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1], start: [2, 2], goal: [9, 9]}\n", false},
+        {std::string(kHeader) + "queries:\n  - {name: ~, start: [1, 1], goal: [9, 9]}\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1e400, 1], goal: [9, 9]}\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1], goal: [9, 9]}\nqueries: []\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1], goal: [9, 9]\n", false},
+        {std::string(kHeader) + "queries:\n  - {start: [1, 1], goal: [9, 9]}\n---\nname: u\n", false},
+        {std::string(kHeader) + "bounds: [0, 1, 0, 1]\nqueries:\n  - {start: [1, 1], goal: [9, 9]}\n", true},
+        {"name: t\nqueries:\n  - {start: [1, 1], goal: [9, 9]}\nbounds: {xmin: 0, xmax: -10, ymin: 0, ymax: "
+         "10}\n",
+         true},
+    };
+    for (const Case &c : cases)
+    {
+        bool quick = false;
+        const std::string got = readBoth(c.text, quick);
+        EXPECT_EQ(got, readTree(c.text)) << c.text;
+        EXPECT_EQ(quick, c.quick) << c.text << got;
+    }
+    // Every shipped world with queries: the same world either way.
+    for (const auto &e : std::filesystem::directory_iterator(MHPLAN_ENVIRONMENTS_DIR))
+    {
+        if (e.path().extension() != ".yaml")
+            continue;
+        std::ifstream in(e.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        bool quick = false;
+        EXPECT_EQ(readBoth(text.str(), quick), readTree(text.str())) << e.path();
+    }
 }

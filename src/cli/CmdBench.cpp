@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <iostream>
 
 namespace mhplan::cli
@@ -160,9 +161,11 @@ namespace mhplan::cli
             "interrupted campaign resumes where it stopped. Shards split the experiments between machines; "
             "one final --merge-only builds the database from all logs. An OMPL.app problem file "
             "(PROBLEM.cfg, docs/omplapp.md) runs its own benchmark (its planners, parameters, run_count, "
-            "time_limit, mem_limit, save_paths) in this process; it takes --runs, --time, --seed, --database, "
+            "time_limit, mem_limit, save_paths) in this process; it takes --runs, --time, --seed, "
+            "--database, "
             "--logs, --no-progress and --validator certified|discrete.",
-            {{"CAMPAIGN", "a campaign file (e.g. benchmarks/seeds.yaml), or an OMPL.app problem file (.cfg)"}},
+            {{"CAMPAIGN",
+              "a campaign file (e.g. benchmarks/seeds.yaml), or an OMPL.app problem file (.cfg)"}},
             {{"--jobs", "N", "experiments run in parallel, 1..256 (default 1)"},
              {"--shard", "i/N",
               "run only the i-th of N shares of the experiments (writes logs, no database)"},
@@ -294,12 +297,30 @@ namespace mhplan::cli
         if (args.has("list"))
         {
             const auto all = bench::enumerateExperiments(campaign, options.resolveWorld);
-            const auto mine = bench::shardExperiments(all, options.shardIndex, options.shardCount);
-            for (const auto &e : mine)
-                std::cout << e.index << "\t" << e.name << "\t"
-                          << (bench::logIsComplete(bench::logFile(campaign, e), e.configHash) ? "complete"
-                                                                                              : "to do")
-                          << "\t" << bench::logFile(campaign, e) << "\n";
+            // Unsharded, the list is all of them (not copied: a world may have 10^5 queries).
+            const auto shard = options.shardCount > 1
+                                   ? bench::shardExperiments(all, options.shardIndex, options.shardCount)
+                                   : std::vector<bench::Experiment>{};
+            // The log directory is read once: only the logs in it are opened (not 10^5 missing files).
+            std::set<std::string> present;
+            bool listed = true; // else (a directory that cannot be listed) every log is opened
+            std::error_code ec;
+            if (std::filesystem::exists(campaign.logDir, ec))
+            {
+                for (std::filesystem::directory_iterator it(campaign.logDir, ec), end; !ec && it != end;
+                     it.increment(ec))
+                    present.insert(it->path().filename().string());
+                listed = !ec;
+            }
+            for (const auto &e : options.shardCount > 1 ? shard : all)
+            {
+                const std::string log = bench::logFile(campaign, e);
+                const bool complete =
+                    (!listed || present.count(std::filesystem::path(log).filename().string()) != 0) &&
+                    bench::logIsComplete(log, e.configHash);
+                std::cout << e.index << "\t" << e.name << "\t" << (complete ? "complete" : "to do") << "\t"
+                          << log << "\n";
+            }
             return 0;
         }
 

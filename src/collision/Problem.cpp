@@ -23,14 +23,18 @@ namespace mhplan
         void checkEndpoint(const World &world, const Query &query, const CollisionModel &model, const Vec2 &p,
                            const char *field)
         {
-            std::ostringstream where;
-            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
-                  << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
+            const auto where = [&] // only for a message: a campaign checks every query of every world
+            {
+                std::ostringstream out;
+                out << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                    << "' field '" << field << "' (" << p.x << ", " << p.y << ")";
+                return out.str();
+            };
             if (!model.inBounds(p))
-                throw InputError(where.str() + " is out of bounds: the robot disc (radius " +
+                throw InputError(where() + " is out of bounds: the robot disc (radius " +
                                  std::to_string(world.robotRadius) + ") must lie inside the world's bounds");
             if (!model.isValid(p))
-                throw InputError(where.str() + " is in collision (clearance " +
+                throw InputError(where() + " is in collision (clearance " +
                                  std::to_string(model.clearance(p)) + ")");
         }
     } // namespace
@@ -40,14 +44,17 @@ namespace mhplan
         void checkPose(const World &world, const Query &query, const RigidBodyModel &model, const Pose2 &p,
                        const char *field)
         {
-            std::ostringstream where;
-            where << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
-                  << "' field '" << field << "' (" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+            const auto where = [&]
+            {
+                std::ostringstream out;
+                out << (world.file.empty() ? world.name : world.file) << ": query '" << query.name
+                    << "' field '" << field << "' (" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+                return out.str();
+            };
             if (!model.inBounds(p))
-                throw InputError(where.str() +
-                                 " is out of bounds: the robot must lie inside the world's bounds");
+                throw InputError(where() + " is out of bounds: the robot must lie inside the world's bounds");
             if (!model.isValid(p))
-                throw InputError(where.str() + " is in collision (the robot overlaps an obstacle)");
+                throw InputError(where() + " is in collision (the robot overlaps an obstacle)");
         }
     } // namespace
 
@@ -142,11 +149,12 @@ namespace mhplan
 
     namespace
     {
-        og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query)
+        og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query,
+                                          const SimpleSetupFactory &make)
         {
             auto rigid = std::make_shared<const RigidBodyModel>(world);
             validateRigidQuery(world, query, *rigid);
-            auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+            og::SimpleSetupPtr ss = make(makeStateSpace(world));
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
             si->setStateValidityChecker(std::make_shared<RigidValidityChecker>(si, rigid));
             si->setMotionValidator(std::make_shared<CertifiedMotionValidator>(
@@ -180,14 +188,22 @@ namespace mhplan
 
     og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
     {
+        return makeSimpleSetup(world, query, model,
+                               [](const ob::StateSpacePtr &space)
+                               { return std::make_shared<og::SimpleSetup>(space); });
+    }
+
+    og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model,
+                                       const SimpleSetupFactory &make)
+    {
         if (world.isRigid())
         {
-            og::SimpleSetupPtr rigid = makeRigidSetup(world, query);
+            og::SimpleSetupPtr rigid = makeRigidSetup(world, query, make);
             registerIntermediateCallback(rigid);
             return rigid;
         }
         validateQuery(world, query, *model);
-        auto ss = std::make_shared<og::SimpleSetup>(makeStateSpace(world));
+        og::SimpleSetupPtr ss = make(makeStateSpace(world));
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
         si->setStateValidityChecker(std::make_shared<WorldValidityChecker>(si, model));
         si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, model));

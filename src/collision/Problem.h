@@ -7,6 +7,8 @@
 
 #include <ompl/geometric/SimpleSetup.h>
 
+#include <functional>
+
 namespace mhplan
 {
     class RigidBodyModel;
@@ -39,6 +41,16 @@ namespace mhplan
         in every command (RRT* skips samples equal to their nearest tree state only with a callback). */
     ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
                                                     const CollisionModelPtr &model);
+
+    /** \brief Makes the SimpleSetup object (a subclass of it) over a state space. */
+    using SimpleSetupFactory =
+        std::function<ompl::geometric::SimpleSetupPtr(const ompl::base::StateSpacePtr &space)>;
+
+    /** \brief makeSimpleSetup, configuring the object \e make returns (the benchmark's runs use a subclass,
+        benchmarks/README.md "Overhead"). */
+    ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
+                                                    const CollisionModelPtr &model,
+                                                    const SimpleSetupFactory &make);
 
     /** \brief Euclidean length of a polyline (independent of OMPL's distance function). */
     double polylineLength(const std::vector<Vec2> &points);

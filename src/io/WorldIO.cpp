@@ -5,6 +5,7 @@
 
 #include "mhplan/collision/Collision.h"
 #include "mhplan/io/GridIO.h"
+#include "mhplan/io/QueryList.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidBody.h"
 #include "mhplan/io/YamlReader.h"
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -327,138 +329,198 @@ namespace mhplan
         return "";
     }
 
+    namespace
+    {
+        /** The quick reading of the queries (QueryList.h) cannot stand for yaml-cpp's tree here: read the
+            whole file with the tree, which names the problem. */
+        struct ReadWithTree
+        {
+        };
+
+        World readWorld(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys,
+                        SplitQueries *split);
+    } // namespace
+
     World parseWorldYaml(const std::string &textIn, const std::string &fileName)
     {
+        // A world's queries are read from yaml-cpp's parse events, the rest of the file as a tree
+        // (QueryList.h): a list of 10^5 queries as a tree takes 470 MB. Whatever that reading does not take,
+        // and every problem, is read again with the whole tree, whose errors name file, line and field.
+        if (std::optional<SplitQueries> split = splitQueries(textIn))
+        {
+            try
+            {
+                const YAML::Node root =
+                    loadYamlMapping(split->rest, fileName, "world file", "environments/README.md");
+                return readWorld(YamlReader(fileName), root, {}, &*split);
+            }
+            catch (const ReadWithTree &)
+            {
+            }
+            catch (const InputError &)
+            {
+            }
+        }
         const YAML::Node root = loadYamlMapping(textIn, fileName, "world file", "environments/README.md");
         return readWorldNode(YamlReader(fileName), root);
     }
 
     World readWorldNode(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys)
     {
-        const std::string &fileName = r.file();
-        std::set<std::string> keys{"name",    "description", "source",        "assumptions",
-                                   "bounds",  "robot",       "obstacles",     "grid",
-                                   "queries", "space",       "turning_radius"};
-        keys.insert(extraKeys.begin(), extraKeys.end());
-        r.allowKeys(root, "", keys);
+        return readWorld(r, root, extraKeys, nullptr);
+    }
 
-        World world;
-        world.file = fileName;
-        world.name = root["name"].IsDefined() ? r.name(root["name"], "name") : fileName;
-        if (root["description"].IsDefined())
-            world.description = r.text(root["description"], "description");
-        if (root["source"].IsDefined())
-            world.source = r.text(root["source"], "source");
-        if (root["assumptions"].IsDefined())
-            world.assumptions = r.text(root["assumptions"], "assumptions");
-        if (root["space"].IsDefined())
+    namespace
+    {
+        World readWorld(const YamlReader &r, const YAML::Node &root, const std::set<std::string> &extraKeys,
+                        SplitQueries *split)
         {
-            try
+            const std::string &fileName = r.file();
+            std::set<std::string> keys{"name",    "description", "source",        "assumptions",
+                                       "bounds",  "robot",       "obstacles",     "grid",
+                                       "queries", "space",       "turning_radius"};
+            keys.insert(extraKeys.begin(), extraKeys.end());
+            r.allowKeys(root, "", keys);
+
+            World world;
+            world.file = fileName;
+            world.name = root["name"].IsDefined() ? r.name(root["name"], "name") : fileName;
+            if (root["description"].IsDefined())
+                world.description = r.text(root["description"], "description");
+            if (root["source"].IsDefined())
+                world.source = r.text(root["source"], "source");
+            if (root["assumptions"].IsDefined())
+                world.assumptions = r.text(root["assumptions"], "assumptions");
+            if (root["space"].IsDefined())
             {
-                world.space = parseSpaceType(r.text(root["space"], "space"));
+                try
+                {
+                    world.space = parseSpaceType(r.text(root["space"], "space"));
+                }
+                catch (const InputError &e)
+                {
+                    r.fail(root["space"], "space", e.what());
+                }
             }
-            catch (const InputError &e)
+            const bool car = world.space == SpaceType::Dubins || world.space == SpaceType::ReedsShepp;
+            if (root["turning_radius"].IsDefined())
             {
-                r.fail(root["space"], "space", e.what());
+                if (!car)
+                    r.fail(root["turning_radius"], "turning_radius",
+                           "applies only to 'space: dubins' or 'reeds_shepp' (this world's space is " +
+                               toString(world.space) + ")");
+                world.turningRadius =
+                    r.number(root["turning_radius"], "turning_radius", -kMaxCoordinate, kMaxCoordinate);
+                if (!(world.turningRadius > 0.0))
+                    r.fail(root["turning_radius"], "turning_radius",
+                           "must be > 0 (got " + root["turning_radius"].Scalar() + ")");
             }
-        }
-        const bool car = world.space == SpaceType::Dubins || world.space == SpaceType::ReedsShepp;
-        if (root["turning_radius"].IsDefined())
-        {
-            if (!car)
-                r.fail(root["turning_radius"], "turning_radius",
-                       "applies only to 'space: dubins' or 'reeds_shepp' (this world's space is " +
-                           toString(world.space) + ")");
-            world.turningRadius =
-                r.number(root["turning_radius"], "turning_radius", -kMaxCoordinate, kMaxCoordinate);
-            if (!(world.turningRadius > 0.0))
-                r.fail(root["turning_radius"], "turning_radius",
-                       "must be > 0 (got " + root["turning_radius"].Scalar() + ")");
-        }
-        else if (car)
-            r.fail(root["space"], "turning_radius",
-                   "'space: " + toString(world.space) + "' needs 'turning_radius: R' (R > 0, metres)");
-        if (root["robot"].IsDefined())
-            readRobot(r, root["robot"], world);
+            else if (car)
+                r.fail(root["space"], "turning_radius",
+                       "'space: " + toString(world.space) + "' needs 'turning_radius: R' (R > 0, metres)");
+            if (root["robot"].IsDefined())
+                readRobot(r, root["robot"], world);
 
-        if (root["grid"].IsDefined())
-        {
-            if (root["obstacles"].IsDefined())
-                r.fail(root["obstacles"], "obstacles", "a grid world cannot also list geometric obstacles");
-            if (root["bounds"].IsDefined())
-                r.fail(root["bounds"], "bounds", "a grid world's bounds come from its grid; remove 'bounds'");
-            world.grid = readGrid(r, root["grid"]);
-            world.bounds = world.grid->bounds();
-        }
-        else
-        {
-            world.bounds = readBounds(r, r.require(root, "bounds", ""));
-            if (root["obstacles"].IsDefined() && !root["obstacles"].IsNull())
+            if (root["grid"].IsDefined())
             {
-                const YAML::Node obs = root["obstacles"];
-                if (!obs.IsSequence())
-                    r.fail(obs, "obstacles", "expected a list");
-                for (std::size_t i = 0; i < obs.size(); ++i)
-                    readObstacle(r, obs[i], i, world);
+                if (root["obstacles"].IsDefined())
+                    r.fail(root["obstacles"], "obstacles",
+                           "a grid world cannot also list geometric obstacles");
+                if (root["bounds"].IsDefined())
+                    r.fail(root["bounds"], "bounds",
+                           "a grid world's bounds come from its grid; remove 'bounds'");
+                world.grid = readGrid(r, root["grid"]);
+                world.bounds = world.grid->bounds();
             }
-        }
-        if (2.0 * world.robotRadius >= std::min(world.bounds.width(), world.bounds.height()))
-            r.fail(root["robot"], "robot.radius", "the robot does not fit inside the bounds");
+            else
+            {
+                world.bounds = readBounds(r, r.require(root, "bounds", ""));
+                if (root["obstacles"].IsDefined() && !root["obstacles"].IsNull())
+                {
+                    const YAML::Node obs = root["obstacles"];
+                    if (!obs.IsSequence())
+                        r.fail(obs, "obstacles", "expected a list");
+                    for (std::size_t i = 0; i < obs.size(); ++i)
+                        readObstacle(r, obs[i], i, world);
+                }
+            }
+            if (2.0 * world.robotRadius >= std::min(world.bounds.width(), world.bounds.height()))
+                r.fail(root["robot"], "robot.radius", "the robot does not fit inside the bounds");
 
-        std::vector<YAML::Node> queryNodes;
-        if (root["queries"].IsDefined())
-            readQueries(r, root["queries"], world, queryNodes);
+            std::vector<YAML::Node> queryNodes;
+            if (root["queries"].IsDefined())
+                readQueries(r, root["queries"], world, queryNodes);
+            if (split)
+            {
+                if (split->headings && !world.isRigid())
+                    throw ReadWithTree{}; // refused, with the line, by readPose
+                world.queries = std::move(split->queries);
+            }
+            // A query's start or goal that is out of bounds or in collision: refused with its line.
+            const auto failQuery = [&](std::size_t i, const char *key, const std::string &what)
+            {
+                if (split)
+                    throw ReadWithTree{};
+                r.fail(queryNodes[i][key], "queries[" + std::to_string(i) + "]." + key, what);
+            };
 
-        if (world.isRigid())
-        {
-            // Start and goal poses must be valid for the robot at its heading.
-            const RigidBodyModel rigid(world);
+            if (world.isRigid())
+            {
+                // Start and goal poses must be valid for the robot at its heading.
+                const RigidBodyModel rigid(world);
+                for (std::size_t i = 0; i < world.queries.size(); ++i)
+                {
+                    const Query &q = world.queries[i];
+                    for (const bool start : {true, false})
+                    {
+                        const char *key = start ? "start" : "goal";
+                        const Pose2 p{start ? q.start.x : q.goal.x, start ? q.start.y : q.goal.y,
+                                      start ? q.startYaw : q.goalYaw};
+                        const auto at = [&]
+                        {
+                            std::ostringstream out;
+                            out << "(" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
+                            return out.str();
+                        };
+                        if (!rigid.inBounds(p))
+                            failQuery(i, key,
+                                      at() +
+                                          " is out of bounds (the whole robot must lie inside the bounds)");
+                        if (!rigid.isValid(p))
+                            failQuery(i, key, at() + " is in collision (the robot overlaps an obstacle)");
+                    }
+                }
+                return world;
+            }
+            // Start and goal must be valid for the world's own collision model.
+            const CollisionModelPtr model = makeCollisionModel(world);
             for (std::size_t i = 0; i < world.queries.size(); ++i)
             {
                 const Query &q = world.queries[i];
-                for (const char *key : {"start", "goal"})
+                for (const bool start : {true, false})
                 {
-                    const bool start = std::string(key) == "start";
-                    const Pose2 p{start ? q.start.x : q.goal.x, start ? q.start.y : q.goal.y,
-                                  start ? q.startYaw : q.goalYaw};
-                    const std::string field = "queries[" + std::to_string(i) + "]." + key;
-                    std::ostringstream at;
-                    at << "(" << p.x << ", " << p.y << ", yaw " << p.yaw << ")";
-                    if (!rigid.inBounds(p))
-                        r.fail(queryNodes[i][key], field,
-                               at.str() + " is out of bounds (the whole robot must lie inside the bounds)");
-                    if (!rigid.isValid(p))
-                        r.fail(queryNodes[i][key], field,
-                               at.str() + " is in collision (the robot overlaps an obstacle)");
+                    const char *key = start ? "start" : "goal";
+                    const Vec2 p = start ? q.start : q.goal;
+                    const auto at = [&]
+                    {
+                        std::ostringstream out;
+                        out << "(" << p.x << ", " << p.y << ")";
+                        return out.str();
+                    };
+                    if (!model->inBounds(p))
+                        failQuery(i, key,
+                                  at() + " is out of bounds (the robot disc must lie inside the bounds)");
+                    if (!model->isValid(p))
+                    {
+                        std::ostringstream c;
+                        c << std::setprecision(6) << model->clearance(p);
+                        failQuery(i, key, at() + " is in collision (clearance " + c.str() + ")");
+                    }
                 }
             }
             return world;
         }
-        // Start and goal must be valid for the world's own collision model.
-        const CollisionModelPtr model = makeCollisionModel(world);
-        for (std::size_t i = 0; i < world.queries.size(); ++i)
-        {
-            const Query &q = world.queries[i];
-            for (const char *key : {"start", "goal"})
-            {
-                const Vec2 p = std::string(key) == "start" ? q.start : q.goal;
-                const std::string field = "queries[" + std::to_string(i) + "]." + key;
-                std::ostringstream at;
-                at << "(" << p.x << ", " << p.y << ")";
-                if (!model->inBounds(p))
-                    r.fail(queryNodes[i][key], field,
-                           at.str() + " is out of bounds (the robot disc must lie inside the bounds)");
-                if (!model->isValid(p))
-                {
-                    std::ostringstream c;
-                    c << std::setprecision(6) << model->clearance(p);
-                    r.fail(queryNodes[i][key], field,
-                           at.str() + " is in collision (clearance " + c.str() + ")");
-                }
-            }
-        }
-        return world;
-    }
+    } // namespace
 
     World loadWorld(const std::string &path, std::string *contents)
     {
