@@ -11,7 +11,8 @@
 
    mhplan_ompl_app [--time S] [--queries N] [--count C] [--resolution R] [--planners A,B,...]
                    [--params KEY=VALUE,...] [--seed N] [--verbose 1]
-   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks). */
+   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks).
+ */
 #include "mhplan/bench/WorldFamilies.h"
 
 #include "mhplan/io/Generators.h"
@@ -307,9 +308,9 @@ int main(int argc, char **argv)
             }
             if (verbose)
                 std::cout << "run: query " << q << " " << name << " gap " << fixed(row.gaps.back(), 3)
-                          << " % first " << fixed(firstTime, 4) << " s within-1% " << fixed(within, 4)
-                          << " s state checks " << stateChecks.load() << " motion checks " << motionChecks.load()
-                          << "\n";
+                          << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4) << " s within-1% " << fixed(within, 4)
+                          << " s state checks " << stateChecks.load() << " motion checks "
+                          << motionChecks.load() << "\n";
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))

@@ -226,6 +226,17 @@ namespace mhplan
         /** \brief The population is complete, or cut short by the fill budget, or all the lattice offers. */
         bool readyToStart() const;
         static constexpr unsigned long kFillBudget = 3000000;
+        /** \brief Samples of the first roadmap, and the most a roadmap draws per epoch. */
+        static constexpr unsigned int kRoadmapSamples = 1500;
+        static constexpr unsigned int kRoadmapFirst = 200;
+        static constexpr unsigned int kRoadmapMaxSamples = 8000;
+        /** \brief The next route of the lazy roadmap as a new path (planar); false when it has none. */
+        bool roadmapIndividual(Individual &out);
+        /** \brief The first path is reported at once; then the coarse local search and the evaluation. */
+        bool finishWalk(Individual &out);
+        /** \brief The incumbent's cost when the objective is path length (then the informed set bounds
+            every shorter path), else infinity. */
+        double informedBound() const;
         void polishElite();
         /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
         void eliteRewalks();
@@ -284,6 +295,11 @@ namespace mhplan
         unsigned long sinceImprovement_{0};
         unsigned long generationInEpoch_{0};
         unsigned long restarts_{0};
+        unsigned int roadmapSamples_{kRoadmapSamples};
+        unsigned int roadmapPaths_{0};
+        bool roadmapAlive_{true};
+        bool roadmapStale_{true};
+        bool smallRoadmap_{false};
 
         bool haveSolution_{false};
         ompl::base::Cost bestCostObj_;
