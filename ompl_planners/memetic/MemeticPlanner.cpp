@@ -500,30 +500,31 @@ namespace mhplan
         // roadmapSamples_ new samples inside the first path's informed set.
         if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
             return false;
-        for (int attempt = 0; attempt < 2; ++attempt)
+        const bool first = toolkit_->roadmapSize() == 0;
+        if (roadmapStale_)
         {
-            const bool first = toolkit_->roadmapSize() == 0;
-            if (roadmapStale_)
-            {
-                toolkit_->roadmapGrow(first ? kRoadmapFirst : roadmapSamples_, start_, goal_,
-                                      informedBound());
-                roadmapStale_ = false;
-                smallRoadmap_ = first;
-            }
-            const auto maxInvalid = static_cast<unsigned int>(2 * toolkit_->roadmapSize());
-            if (toolkit_->roadmapPath(out.path, maxInvalid, stop_))
-            {
-                ++roadmapPaths_;
-                ++walks_;
-                if (smallRoadmap_)
-                    roadmapStale_ = true; // the next route from the full roadmap
-                return true;
-            }
-            if (stopRequested())
-                return false;
-            if (!smallRoadmap_)
-                break;
-            roadmapStale_ = true; // the small roadmap had no route: the full one now
+            toolkit_->roadmapGrow(first ? kRoadmapFirst : roadmapSamples_, start_, goal_, informedBound());
+            roadmapStale_ = false;
+            smallRoadmap_ = first;
+        }
+        // Refused routes before the roadmap is given up (a roadmap cut in two refuses route after route).
+        const unsigned int maxInvalid = smallRoadmap_ ? 20 : 100;
+        if (toolkit_->roadmapPath(out.path, maxInvalid, stop_))
+        {
+            ++roadmapPaths_;
+            ++walks_;
+            if (smallRoadmap_)
+                roadmapStale_ = true; // the next route from the full roadmap
+            return true;
+        }
+        if (stopRequested())
+            return false;
+        if (smallRoadmap_)
+        {
+            // The small roadmap had no route (cluttered worlds): a walk this time, the full roadmap next.
+            roadmapStale_ = true;
+            smallRoadmap_ = false;
+            return false;
         }
         roadmapAlive_ = false;
         roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
@@ -601,9 +602,9 @@ namespace mhplan
             if (walkIndividual(ind))
             {
                 pop_.push_back(std::move(ind));
-                // The first path is polished at once (the time to a near-optimal path matters more than
+                // A new best path is polished at once (the time to a near-optimal path matters more than
                 // a full population).
-                if (pop_.size() == 1 && !started_)
+                if (!started_ && bestIndex() == pop_.size() - 1)
                     polishElite();
             }
             else if (stopRequested())
