@@ -269,7 +269,7 @@ namespace mhplan
         double coarseTurn_{0.35};
         double fineTurn_{0.05};
         unsigned int polishPasses_{8};
-        unsigned int stagnation_{40};
+        unsigned int stagnation_{3};
         unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
