@@ -48,8 +48,10 @@ namespace mhplan
                                            "local-search passes of the elite polish per generation"};
         constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000,
                                            "re-walk trials on the best individual per generation"};
-        constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000,
-                                         "generations without improvement before a restart (the elite kept)"};
+        constexpr ParamRange kStagnation{
+            "stagnation", 0, 1, 1000000,
+            "generations without improvement before a restart (the elite kept); 0 = auto: 3 planar, 40 "
+            "other spaces"};
         constexpr ParamRange kBisections{"bisections", 4, 1, 40, "bisection steps of each pull move"};
         constexpr ParamRange kValidatorMargin{
             "validator_margin", 0, 0.05, 4,
@@ -602,9 +604,9 @@ namespace mhplan
             if (walkIndividual(ind))
             {
                 pop_.push_back(std::move(ind));
-                // A new best path is polished at once (the time to a near-optimal path matters more than
-                // a full population).
-                if (!started_ && bestIndex() == pop_.size() - 1)
+                // Planar: a new best path is polished at once (the time to a near-optimal path matters more
+                // than a full population).
+                if (!stateMode_ && !started_ && bestIndex() == pop_.size() - 1)
                     polishElite();
             }
             else if (stopRequested())
@@ -750,7 +752,10 @@ namespace mhplan
                 sinceImprovement_ = 0;
             else
                 ++sinceImprovement_;
-            if (started_ && sinceImprovement_ >= stagnation_ && !noPath_)
+            // 0 = auto: 3 generations in the planar mode, whose restarts rebuild a denser informed roadmap
+            // (docs/variants.md), 40 in the state mode, whose restarts refill with walks.
+            const unsigned int stagnation = stagnation_ != 0 ? stagnation_ : (stateMode_ ? 40u : 3u);
+            if (started_ && sinceImprovement_ >= stagnation && !noPath_)
             {
                 restart();
                 fillCut_ = false;

@@ -124,7 +124,8 @@ namespace mhplan
         /** \brief Re-walk trials on the best individual per generation (0..1000). */
         void setEliteRewalks(unsigned int n);
         unsigned int getEliteRewalks() const { return eliteRewalks_; }
-        /** \brief Generations without improvement before a restart with elitism (1..1000000). */
+        /** \brief Generations without improvement before a restart with elitism (1..1000000; 0 = auto: 3 in
+            the planar mode, 40 in the state mode). */
         void setStagnation(unsigned int n);
         unsigned int getStagnation() const { return stagnation_; }
         /** \brief Bisection steps of each pull move (4..40). */
@@ -269,7 +270,7 @@ namespace mhplan
         double coarseTurn_{0.35};
         double fineTurn_{0.05};
         unsigned int polishPasses_{8};
-        unsigned int stagnation_{3};
+        unsigned int stagnation_{0};
         unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
