@@ -10,7 +10,9 @@
    for the memetic planners, per improvement of the best cost.
 
    mhplan_ompl_app [--time S] [--queries N] [--count C] [--resolution R] [--planners A,B,...]
-                   [--params KEY=VALUE,...] [--seed N] */
+                   [--params KEY=VALUE,...] [--seed N] [--verbose 1]
+   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks).
+ */
 #include "mhplan/bench/WorldFamilies.h"
 
 #include "mhplan/io/Generators.h"
@@ -138,6 +140,7 @@ int main(int argc, char **argv)
     double timeLimit = 1.0, resolution = 0.002;
     unsigned int queries = 20, count = 70;
     std::uint64_t seed = 31;
+    bool verbose = false;
     std::vector<std::string> planners = {"GA-MEM",          "SMA-MEM", "LRSMA-MEM", "MGO-MEM",
                                          "InformedRRTstar", "RRTstar", "ABITstar"};
     std::map<std::string, std::string> extra;
@@ -154,6 +157,8 @@ int main(int argc, char **argv)
             resolution = std::atof(value.c_str());
         else if (key == "--planners")
             planners = splitList(value);
+        else if (key == "--verbose")
+            verbose = value != "0";
         else if (key == "--seed")
             seed = static_cast<std::uint64_t>(std::atoll(value.c_str()));
         else if (key == "--params")
@@ -171,7 +176,7 @@ int main(int argc, char **argv)
         {
             std::cerr << "mhplan_ompl_app: unknown option '" << key
                       << "'; accepted: --time S, --queries N, --count C, --resolution R, --planners A,B,..., "
-                         "--params KEY=VALUE,..., --seed N\n";
+                         "--params KEY=VALUE,..., --seed N, --verbose 0|1\n";
             return 1;
         }
     }
@@ -301,6 +306,11 @@ int main(int argc, char **argv)
                 ++row.within;
                 row.toOnePercent.push_back(within);
             }
+            if (verbose)
+                std::cout << "run: query " << q << " " << name << " gap " << fixed(row.gaps.back(), 3)
+                          << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4) << " s within-1% " << fixed(within, 4)
+                          << " s state checks " << stateChecks.load() << " motion checks "
+                          << motionChecks.load() << "\n";
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))

@@ -265,6 +265,66 @@ TEST(MemeticToolkit, TightenNeverLengthensAndStaysValid)
     EXPECT_GT(spliced, 0);
 }
 
+TEST(MemeticToolkit, SegmentCacheAnswersRepeatedChecksAndClears)
+{
+    const World w = circles100();
+    const CollisionModelPtr model = makeCollisionModel(w);
+    og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
+    ss->setup();
+    ompl::RNG rng(4);
+    MemeticToolkit tk(ss->getSpaceInformation(), rng);
+    tk.setBounds(w.bounds);
+    const Vec2 a = w.queries[0].start, b = w.queries[0].goal, c(a.x + 0.5, a.y);
+    const bool straight = tk.motionValid(a, b), shortOne = tk.motionValid(a, c);
+    EXPECT_EQ(tk.motionChecks(), 2u);
+    // The same segments again: the same verdicts (valid and invalid alike) from the cache, no new check.
+    EXPECT_EQ(tk.motionValid(a, b), straight);
+    EXPECT_EQ(tk.motionValid(a, c), shortOne);
+    EXPECT_EQ(tk.motionChecks(), 2u);
+    EXPECT_EQ(tk.cacheHits(), 2u);
+    tk.clearCache();
+    EXPECT_EQ(tk.motionValid(a, b), straight);
+    EXPECT_EQ(tk.motionChecks(), 3u);
+}
+
+TEST(MemeticToolkit, LazyRoadmapGivesValidRoutesThatDiffer)
+{
+    const World w = circles100();
+    const CollisionModelPtr model = makeCollisionModel(w);
+    og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
+    ss->setup();
+    ompl::RNG rng(4);
+    MemeticToolkit tk(ss->getSpaceInformation(), rng);
+    tk.setBounds(w.bounds);
+    const Vec2 start = w.queries[0].start, goal = w.queries[0].goal;
+    const std::function<bool()> never = [] { return false; };
+    tk.roadmapGrow(1000, start, goal, std::numeric_limits<double>::infinity());
+    EXPECT_GT(tk.roadmapSize(), 2u);
+    EXPECT_LE(tk.roadmapSize(), 1002u);
+    MemeticPath first, second;
+    ASSERT_TRUE(tk.roadmapPath(first, 4000, never));
+    ASSERT_TRUE(tk.roadmapPath(second, 4000, never));
+    for (const MemeticPath *p : {&first, &second})
+    {
+        EXPECT_TRUE(denseValid(*model, w.bounds, *p));
+        EXPECT_EQ(p->front(), start);
+        EXPECT_EQ(p->back(), goal);
+    }
+    // The penalties send the second route elsewhere: its interior points are not all those of the first.
+    EXPECT_NE(first, second);
+    // Informed pruning: with a bound, every kept sample lies inside the ellipse |start q| + |q goal| < bound.
+    const double bound = 1.1 * distance(start, goal);
+    tk.roadmapGrow(500, start, goal, bound);
+    MemeticPath inside;
+    if (tk.roadmapPath(inside, 4000, never))
+    {
+        for (const Vec2 &q : inside)
+            EXPECT_LT(distance(start, q) + distance(q, goal), bound + 1e-9);
+    }
+    // A stop request ends the search.
+    EXPECT_FALSE(tk.roadmapPath(inside, 4000, [] { return true; }));
+}
+
 TEST(MemeticToolkit, WalkIsExhaustedBehindAWall)
 {
     World w;

@@ -8,6 +8,7 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Exception.h>
@@ -47,8 +48,10 @@ namespace mhplan
                                            "local-search passes of the elite polish per generation"};
         constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000,
                                            "re-walk trials on the best individual per generation"};
-        constexpr ParamRange kStagnation{"stagnation", 1, 1, 1000000,
-                                         "generations without improvement before a restart (the elite kept)"};
+        constexpr ParamRange kStagnation{
+            "stagnation", 0, 1, 1000000,
+            "generations without improvement before a restart (the elite kept); 0 = auto: 3 planar, 40 "
+            "other spaces"};
         constexpr ParamRange kBisections{"bisections", 4, 1, 40, "bisection steps of each pull move"};
         constexpr ParamRange kValidatorMargin{
             "validator_margin", 0, 0.05, 4,
@@ -263,7 +266,15 @@ namespace mhplan
         generationInEpoch_ = 0;
         restarts_ = 0;
         if (toolkit_)
+        {
             toolkit_->resetCounts();
+            toolkit_->clearCache();
+            toolkit_->roadmapClear();
+        }
+        roadmapSamples_ = kRoadmapSamples;
+        roadmapPaths_ = 0;
+        roadmapAlive_ = true;
+        roadmapStale_ = true;
         if (stateToolkit_)
             stateToolkit_->resetCounts();
         stateChecks_ = 0;
@@ -303,6 +314,8 @@ namespace mhplan
         toolkit_->setMargin(marginDistance());
         toolkit_->setFixedPoints(start_, goal_);
         toolkit_->resetCounts();
+        toolkit_->clearCache(); // the margin and the fixed points are part of every cached verdict
+        toolkit_->roadmapClear();
         if (costA_ == nullptr)
         {
             costA_ = si_->allocState();
@@ -415,6 +428,10 @@ namespace mhplan
             return false;
         if (stateMode_)
             return walkStateIndividual(out);
+        if (roadmapIndividual(out))
+            return finishWalk(out);
+        if (stopRequested())
+            return false;
         const double noise = walks_ == 0 ? 0.0 : rng_.uniformReal(0.0, walkNoise_);
         const Box &box = toolkit_->bounds();
         toolkit_->randomiseField(std::hypot(box.width(), box.height()));
@@ -464,6 +481,60 @@ namespace mhplan
         }
         if (r != MemeticToolkit::WalkResult::Found)
             return false;
+        return finishWalk(out);
+    }
+
+    double MemeticPlanner::informedBound() const
+    {
+        // Path length only: then no path through q is shorter than |start q| + |q goal| (docs/variants.md).
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        const bool length =
+            !opt || dynamic_cast<const ob::PathLengthOptimizationObjective *>(opt.get()) != nullptr;
+        return length && haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+    }
+
+    bool MemeticPlanner::roadmapIndividual(Individual &out)
+    {
+        // First paths from a lazy roadmap (docs/variants.md, "First paths: a lazy roadmap"): up to 2 N
+        // routes per (re)start, each another way round (penalties); the lattice walks take over when the
+        // roadmap has no route, and the next epoch's roadmap has twice the samples. The very first route
+        // comes from a small roadmap (kRoadmapFirst samples, a few milliseconds); then the roadmap grows to
+        // roadmapSamples_ new samples inside the first path's informed set.
+        if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
+            return false;
+        const bool first = toolkit_->roadmapSize() == 0;
+        if (roadmapStale_)
+        {
+            toolkit_->roadmapGrow(first ? kRoadmapFirst : roadmapSamples_, start_, goal_, informedBound());
+            roadmapStale_ = false;
+            smallRoadmap_ = first;
+        }
+        // Refused routes before the roadmap is given up (a roadmap cut in two refuses route after route).
+        const unsigned int maxInvalid = smallRoadmap_ ? 20 : 100;
+        if (toolkit_->roadmapPath(out.path, maxInvalid, stop_))
+        {
+            ++roadmapPaths_;
+            ++walks_;
+            if (smallRoadmap_)
+                roadmapStale_ = true; // the next route from the full roadmap
+            return true;
+        }
+        if (stopRequested())
+            return false;
+        if (smallRoadmap_)
+        {
+            // The small roadmap had no route (cluttered worlds): a walk this time, the full roadmap next.
+            roadmapStale_ = true;
+            smallRoadmap_ = false;
+            return false;
+        }
+        roadmapAlive_ = false;
+        roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
+        return false;
+    }
+
+    bool MemeticPlanner::finishWalk(Individual &out)
+    {
         if (!haveSolution_ && toolkit_->pathValid(out.path))
         {
             // The first path is reported at once: on huge worlds its local search takes a while.
@@ -531,7 +602,13 @@ namespace mhplan
             }
             Individual ind;
             if (walkIndividual(ind))
+            {
                 pop_.push_back(std::move(ind));
+                // Planar: a new best path is polished at once (the time to a near-optimal path matters more
+                // than a full population).
+                if (!stateMode_ && !started_ && bestIndex() == pop_.size() - 1)
+                    polishElite();
+            }
             else if (stopRequested())
                 return false;
             else if (pop_.empty() || noPath_)
@@ -604,6 +681,12 @@ namespace mhplan
         pop_.push_back(std::move(elite));
         sinceImprovement_ = 0;
         generationInEpoch_ = 0;
+        // Restarts with memory: the next roadmap keeps the samples inside the incumbent's informed set and
+        // adds twice as many as the last epoch drew.
+        roadmapPaths_ = 0;
+        roadmapAlive_ = true;
+        roadmapStale_ = true;
+        roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
     }
 
     ob::PlannerStatus MemeticPlanner::solve(const ob::PlannerTerminationCondition &ptc)
@@ -669,7 +752,10 @@ namespace mhplan
                 sinceImprovement_ = 0;
             else
                 ++sinceImprovement_;
-            if (started_ && sinceImprovement_ >= stagnation_ && !noPath_)
+            // 0 = auto: 3 generations in the planar mode, whose restarts rebuild a denser informed roadmap
+            // (docs/variants.md), 40 in the state mode, whose restarts refill with walks.
+            const unsigned int stagnation = stagnation_ != 0 ? stagnation_ : (stateMode_ ? 40u : 3u);
+            if (started_ && sinceImprovement_ >= stagnation && !noPath_)
             {
                 restart();
                 fillCut_ = false;
@@ -704,6 +790,8 @@ namespace mhplan
     void MemeticPlanner::publishCounts()
     {
         motionChecks_ = motionCheckTotal();
+        if (!stateMode_ && toolkit_)
+            cacheHits_ = toolkit_->cacheHits();
         if (stateMode_ && stateToolkit_)
         {
             stateChecks_ = stateToolkit_->stateChecks();

@@ -124,7 +124,8 @@ namespace mhplan
         /** \brief Re-walk trials on the best individual per generation (0..1000). */
         void setEliteRewalks(unsigned int n);
         unsigned int getEliteRewalks() const { return eliteRewalks_; }
-        /** \brief Generations without improvement before a restart with elitism (1..1000000). */
+        /** \brief Generations without improvement before a restart with elitism (1..1000000; 0 = auto: 3 in
+            the planar mode, 40 in the state mode). */
         void setStagnation(unsigned int n);
         unsigned int getStagnation() const { return stagnation_; }
         /** \brief Bisection steps of each pull move (4..40). */
@@ -226,6 +227,17 @@ namespace mhplan
         /** \brief The population is complete, or cut short by the fill budget, or all the lattice offers. */
         bool readyToStart() const;
         static constexpr unsigned long kFillBudget = 3000000;
+        /** \brief Samples of the first roadmap, and the most a roadmap draws per epoch. */
+        static constexpr unsigned int kRoadmapSamples = 1500;
+        static constexpr unsigned int kRoadmapFirst = 200;
+        static constexpr unsigned int kRoadmapMaxSamples = 8000;
+        /** \brief The next route of the lazy roadmap as a new path (planar); false when it has none. */
+        bool roadmapIndividual(Individual &out);
+        /** \brief The first path is reported at once; then the coarse local search and the evaluation. */
+        bool finishWalk(Individual &out);
+        /** \brief The incumbent's cost when the objective is path length (then the informed set bounds
+            every shorter path), else infinity. */
+        double informedBound() const;
         void polishElite();
         /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
         void eliteRewalks();
@@ -258,7 +270,7 @@ namespace mhplan
         double coarseTurn_{0.35};
         double fineTurn_{0.05};
         unsigned int polishPasses_{8};
-        unsigned int stagnation_{40};
+        unsigned int stagnation_{0};
         unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
@@ -284,6 +296,11 @@ namespace mhplan
         unsigned long sinceImprovement_{0};
         unsigned long generationInEpoch_{0};
         unsigned long restarts_{0};
+        unsigned int roadmapSamples_{kRoadmapSamples};
+        unsigned int roadmapPaths_{0};
+        bool roadmapAlive_{true};
+        bool roadmapStale_{true};
+        bool smallRoadmap_{false};
 
         bool haveSolution_{false};
         ompl::base::Cost bestCostObj_;

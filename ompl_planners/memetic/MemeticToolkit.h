@@ -91,7 +91,33 @@ namespace mhplan
         /** \brief The validity checker's verdict on a point inside the bounds. */
         bool pointValid(const Vec2 &p);
         unsigned long motionChecks() const { return motionChecks_; }
-        void resetCounts() { motionChecks_ = 0; }
+        /** \brief Verdicts of motionValid(a, b) answered from the segment cache (not counted as checks). */
+        unsigned long cacheHits() const { return cacheHits_; }
+        void resetCounts()
+        {
+            motionChecks_ = 0;
+            cacheHits_ = 0;
+        }
+        /** \brief Forget every cached segment verdict (a new problem, clear()). The cache is keyed by the
+            exact coordinates of the segment's two ends and holds valid and invalid verdicts (margin
+            included), up to 2^20 entries, then starts over (docs/variants.md, "Checks"). */
+        void clearCache() { cache_.clear(); }
+
+        /** \brief Lazy roadmap (docs/variants.md, "First paths: a lazy roadmap"): forget every sample. */
+        void roadmapClear();
+        /** \brief Rebuild the roadmap on \e start, \e goal, the kept samples and \e n new ones drawn
+            uniformly in the bounds, keeping only samples q with |start q| + |q goal| < \e bound (the
+            informed set of the incumbent: a point outside it lies on no shorter path; infinity keeps all);
+            each sample costs one validity check, the edges (k nearest, k = 4.1 ln n) none until used.
+            Penalties restart. */
+        void roadmapGrow(unsigned int n, const Vec2 &start, const Vec2 &goal, double bound);
+        /** \brief The next path of the roadmap: the shortest under the penalties (A*), its unknown edges
+            checked in order (motion validator, cached); an invalid edge is removed and the search repeated
+            (lazy PRM). On success the path's nodes and their neighbours are penalised, so that the next
+            call returns another route (the penalty method for alternative routes). False when the start is
+            cut off from the goal in the roadmap, after \e maxInvalid refused edges, or when stopped. */
+        bool roadmapPath(MemeticPath &path, unsigned int maxInvalid, const std::function<bool()> &stop);
+        std::size_t roadmapSize() const { return rmPoints_.size(); }
 
         enum class WalkResult
         {
@@ -171,6 +197,34 @@ namespace mhplan
         ompl::base::State *b_{nullptr};
         ompl::base::State *c_{nullptr};
         unsigned long motionChecks_{0};
+        unsigned long cacheHits_{0};
+
+        struct SegmentKey
+        {
+            double ax, ay, bx, by;
+            bool operator==(const SegmentKey &o) const
+            {
+                return ax == o.ax && ay == o.ay && bx == o.bx && by == o.by;
+            }
+        };
+        struct SegmentHash
+        {
+            std::size_t operator()(const SegmentKey &k) const;
+        };
+        std::unordered_map<SegmentKey, bool, SegmentHash> cache_;
+        bool checkSegment(const Vec2 &a, const Vec2 &b);
+
+        // The lazy roadmap: points (0 = start, 1 = goal), edges with a state (0 unknown, 1 valid, 2 invalid).
+        struct RoadmapEdge
+        {
+            std::uint32_t a, b;
+            double length;
+            char state;
+        };
+        MemeticPath rmPoints_;
+        std::vector<RoadmapEdge> rmEdges_;
+        std::vector<std::vector<std::uint32_t>> rmAdjacent_; ///< edge ids per point
+        std::vector<double> rmPenalty_;
 
         // Walk buffers (reused).
         struct Node
