@@ -188,6 +188,9 @@ TEST_P(Capabilities, TheDeclaredSpacesAreExactlyTheOnesSetupAccepts)
     for (const SpaceCase &c : spaceCases())
     {
         SCOPED_TRACE(c.label);
+        // Seeded before the planner and its sampler exist: OMPL 1.5.2's LBTRRT aborts on an assertion of its
+        // DynamicSSSP (an edge of zero weight) in about 1 of 8 unseeded runs of this test (docs/omplapp.md).
+        ompl::RNG::setSeed(7);
         og::SimpleSetupPtr ss = c.make();
         EXPECT_EQ(spaceFlag(*ss->getStateSpace()), c.flag);
         const std::string why = builtinPlanners().whyNotApplicable(name, *ss->getSpaceInformation());
