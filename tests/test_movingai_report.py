@@ -4,6 +4,7 @@
 database: grouping by map and bucket, success counts, length / octile optimum, gap to the any-angle optimum."""
 import os
 import sys
+import types
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -40,11 +41,10 @@ class MovingAISection(unittest.TestCase):
         self.assertAlmostEqual(rows[1][7], 25.0)  # 10 vs 8 and 20 vs 16: 25 % longer than any-angle
         self.assertAlmostEqual(rows[2][6], 0.9)   # 9 / 10
         self.assertAlmostEqual(rows[2][7], 12.5)  # 9 vs 8
-        html = "".join(movingai.section(database, exps, lambda r: r.values["solution_length"],
-                                        lambda h, rs: "|".join(h) + "".join("/".join(map(str, r)) for r in rs),
-                                        lambda v, d, s="": "-" if v is None else ("%." + str(d) + "f%s") % (v, s)))
+        data = types.SimpleNamespace(database=database, planning=exps, length=lambda r: r.values["solution_length"])
+        html = "".join(movingai.render(data, None))
         self.assertIn("by bucket", html)
-        self.assertIn("rooms/1/B/2/1/2/0.9000/12.50%", html)
+        self.assertIn("<td>rooms</td><td>1</td><td>B</td><td>2</td><td>1/2</td><td>0.9000</td><td>12.50%</td>", html)
         self.assertNotIn("bfo_case1", html)
 
 

@@ -5,12 +5,12 @@ share of runs within tau % of the optimum."""
 
 import html
 import math
-import os
 
 import numpy as np
 
 from . import db as dbmod
 from . import pairwise, profiles, quality
+from .page import plt, save
 
 
 def _valid_exact(database, run):
@@ -135,8 +135,6 @@ def campaign_costs(database, exps, optimum_of):
 def profile_figure(database, exps, optimum_of, outdir, colors):
     """Three panels: Dolan-More profiles of the time to within 1 % and of the median length, and the share
     of runs within tau % of the optimum. None with fewer than two planners."""
-    import matplotlib.pyplot as plt
-
     times, lengths, gaps = campaign_costs(database, exps, optimum_of)
     if len(lengths) < 2:
         return None
@@ -162,15 +160,15 @@ def profile_figure(database, exps, optimum_of, outdir, colors):
     for line in legend.get_lines():
         line.set_linewidth(3.0)
     fig.tight_layout()
-    path = os.path.join(outdir, "profiles.png")
-    fig.savefig(path, dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    return os.path.basename(path)
+    return save(fig, outdir, "profiles.png")
 
 
-def campaign_section(database, exps, optimum_of, outdir, colors):
-    """HTML of the campaign's performance profiles."""
-    fig = profile_figure(database, exps, optimum_of, outdir, colors)
+def render(data, ctx):
+    """Report section: the campaign's performance profiles over its planning experiments."""
+    exps = data.planning
+    if not exps:
+        return []
+    fig = profile_figure(data.database, exps, data.optimum, ctx.outdir, ctx.colors)
     if not fig:
         return []
     return [
@@ -183,6 +181,3 @@ def campaign_section(database, exps, optimum_of, outdir, colors):
         "as not solving it.</p>" % len(exps),
         "<img src='%s' alt='performance profiles'>" % fig,
     ]
-
-
-

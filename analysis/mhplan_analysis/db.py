@@ -71,15 +71,26 @@ class Database:
     improvements: dict = None
     notes: list = field(default_factory=list)  # plain-language gaps found while reading
 
+    def _index(self):
+        """experiment id -> planner -> runs (in id order, planners in first-seen order), built once from the
+        runs read (again only when the list of runs was replaced or grew)."""
+        key = (id(self.runs), len(self.runs))
+        if getattr(self, "_index_key", None) != key:
+            index, every = {}, {}
+            for r in self.runs:
+                index.setdefault(r.experiment, {}).setdefault(r.planner, []).append(r)
+                every.setdefault(r.experiment, []).append(r)
+            self._by_experiment, self._all_of, self._index_key = index, every, key
+        return self._by_experiment
+
     def runs_of(self, experiment_id, planner=None):
-        return [r for r in self.runs if r.experiment == experiment_id and (planner is None or r.planner == planner)]
+        by_planner = self._index().get(experiment_id, {})
+        if planner is not None:
+            return list(by_planner.get(planner, []))
+        return list(self._all_of.get(experiment_id, []))
 
     def planners_of(self, experiment_id):
-        seen = []
-        for r in self.runs:
-            if r.experiment == experiment_id and r.planner not in seen:
-                seen.append(r.planner)
-        return seen
+        return list(self._index().get(experiment_id, {}))
 
 
 def _columns(cur, table):

@@ -9,6 +9,7 @@ import html
 
 from . import db as dbmod
 from . import stats
+from .page import fmt, table
 
 
 def is_movingai(exp):
@@ -53,9 +54,10 @@ def bucket_rows(database, exps, length_of):
     return rows
 
 
-def section(database, exps, length_of, table, fmt):
-    """HTML of the MovingAI part (a list of strings); empty without MovingAI experiments."""
-    exps = [e for e in exps if is_movingai(e)]
+def render(data, ctx):
+    """Report section: the MovingAI part (a list of strings); empty without MovingAI experiments."""
+    database, length_of = data.database, data.length
+    exps = [e for e in data.planning if is_movingai(e)]
     if not exps:
         return []
     out = ["<h2>MovingAI benchmark sets, by bucket</h2>"]

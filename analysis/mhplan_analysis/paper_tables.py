@@ -3,10 +3,10 @@
 [LRSMA] Table 3 both ways (fitness S of every run, lengths of the exact runs) and [BFO]'s best lengths."""
 
 import html
-import os
 
 from . import db as dbmod
 from . import papers, stats, worlds
+from .page import fmt, table
 
 
 def _world_name(exp):
@@ -16,11 +16,9 @@ def _world_name(exp):
     return exp.name.split("/")[0]
 
 
-def _experiment_world(exp, world_dir):
+def _experiment_world(data, exp):
     """The experiment's world (worlds.World) or None when its file cannot be read."""
-    world_file = dbmod.experiment_value(exp, "world_file")
-    if world_file and world_dir and not os.path.isabs(str(world_file)):
-        world_file = os.path.join(world_dir, str(world_file))
+    world_file = data.world_file(exp)
     try:
         return worlds.load_world(str(world_file)) if world_file else None
     except (OSError, ValueError):
@@ -44,25 +42,26 @@ def fitness_rows(database, exp, paths, world):
     return out
 
 
-def paper_tables(database, planning, per_exp_tables, paths, world_dir, _table, _fmt):
-    """The [LRSMA] Table 3 and [BFO] sections: our runs (per_exp_tables: report.table_rows per experiment) with
-    the papers' numbers beside, printed as the papers print them; _table and _fmt are the report's HTML helpers."""
+def render(data, ctx):
+    """Report section: [LRSMA] Table 3 and [BFO]: our runs (data.table_rows per experiment) with the papers'
+    numbers beside, printed as the papers print them."""
+    database, planning, paths = data.database, data.planning, data.paths
     parts = []
     lrsma_exps = [(papers.LRSMA_WORLDS[_world_name(e)], e) for e in planning if _world_name(e) in papers.LRSMA_WORLDS]
     if lrsma_exps:
         parts.append("<h2>[LRSMA] Table 3 layout (our runs; the paper's numbers beside)</h2>")
         parts.append("<p class='note'>%s</p>" % html.escape(papers.LRSMA_NOTE))
         for scenario, exp in sorted(lrsma_exps, key=lambda se: se[0]):
-            fit = fitness_rows(database, exp, paths, _experiment_world(exp, world_dir))
+            fit = fitness_rows(database, exp, paths, _experiment_world(data, exp))
             ours = {}
-            for r in per_exp_tables[exp.id]:
+            for r in data.table_rows(exp):
                 n, fmin, fmean, fstd = fit.get(r["planner"], (0, None, None, None))
                 ours[r["planner"]] = (
                     "%s (ours)" % html.escape(r["planner"]),
                     "%d / %d" % (r["counts"]["exact"], r["runs"]),
-                    _fmt(fmin, 2), _fmt(fmean, 2), _fmt(fstd, 2),
-                    _fmt(r["min"], 2), _fmt(r["mean"], 2), _fmt(r["std"], 2),
-                    _fmt(r["best_time"], 4), _fmt(r["mean_time"], 4),
+                    fmt(fmin, 2), fmt(fmean, 2), fmt(fstd, 2),
+                    fmt(r["min"], 2), fmt(r["mean"], 2), fmt(r["std"], 2),
+                    fmt(r["best_time"], 4), fmt(r["mean_time"], 4),
                 )
             # Table 3's five rows in the paper's order, each of ours (run under identical conditions in the
             # campaign) directly above the paper's; then our other planners.
@@ -74,7 +73,7 @@ def paper_tables(database, planning, per_exp_tables, paths, world_dir, _table, _
             rows.extend(ours.values())
             parts.append("<h3>Scenario %d: %s</h3>" % (scenario, html.escape(exp.name)))
             parts.append(
-                _table(
+                table(
                     ["algorithm", "exact / runs", "all runs: S min", "S mean", "S std", "exact runs: length min", "length mean", "length std", "time of best run [s]", "mean time [s]"],
                     rows,
                 )
@@ -85,11 +84,11 @@ def paper_tables(database, planning, per_exp_tables, paths, world_dir, _table, _
         parts.append("<p class='note'>%s</p>" % html.escape(papers.BFO_NOTE))
         for exp in bfo_exps:
             rows = []
-            for r in per_exp_tables[exp.id]:
+            for r in data.table_rows(exp):
                 times = [dbmod.run_value(x, "time") for x in database.runs_of(exp.id, r["planner"])]
                 times = [t for t in times if t is not None]
-                rows.append(("%s (ours)" % html.escape(r["planner"]), _fmt(r["min"], 4), _fmt(r["best_time"], 4), _fmt(min(times) if times else None, 4)))
+                rows.append(("%s (ours)" % html.escape(r["planner"]), fmt(r["min"], 4), fmt(r["best_time"], 4), fmt(min(times) if times else None, 4)))
             rows += [("%s (paper)" % html.escape(n), l, "&ndash;", t if t else "&ndash;") for n, l, t in papers.BFO_REPORTED[_world_name(exp)]]
             parts.append("<h3>%s</h3>" % html.escape(exp.name))
-            parts.append(_table(["algorithm", "best length", "time of the best-length run [s]", "time of the fastest run [s]"], rows))
+            parts.append(table(["algorithm", "best length", "time of the best-length run [s]", "time of the fastest run [s]"], rows))
     return parts

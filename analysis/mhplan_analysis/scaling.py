@@ -11,14 +11,13 @@ interval of the exact-solution rate."""
 
 import html
 import math
-import os
 import re
 
-import matplotlib.pyplot as plt
 import numpy as np
 
 from . import db as dbmod
-from . import quality
+from . import page, quality
+from .page import plt
 from .simulations import median_with_ci
 
 FAMILY_RE = re.compile(r"^(circles|rectangles|polygons|maze|grid)_(\d+)_s\d+$")
@@ -155,10 +154,7 @@ def figure(label, fam, outdir, colors):
     fig.suptitle("Scaling: %s" % label, fontsize=11)
     fig.tight_layout()
     slug = "".join(c if c.isalnum() else "_" for c in label)
-    path = os.path.join(outdir, "scaling_%s.png" % slug)
-    fig.savefig(path, dpi=100, bbox_inches="tight")
-    plt.close(fig)
-    return os.path.basename(path)
+    return page.save(fig, outdir, "scaling_%s.png" % slug, dpi=100)
 
 
 def _fmt_median(m, digits):
@@ -169,10 +165,10 @@ def _fmt_median(m, digits):
     return ("%." + str(digits) + "f") % m["median"]
 
 
-def scaling_section(database, exps, outdir, colors, notes, make_table):
-    """HTML parts of the Scaling section (empty when no experiment belongs to a scaling family);
-    make_table(headers, rows) writes an HTML table."""
-    table = scaling_table(database, exps)
+def render(data, ctx):
+    """Report section: Scaling (empty when no experiment belongs to a scaling family)."""
+    database, outdir, colors, notes = data.database, ctx.outdir, ctx.colors, ctx.notes
+    table = scaling_table(database, data.planning)
     if not table:
         return []
     parts = ["<h2>Scaling</h2>",
@@ -194,7 +190,7 @@ def scaling_section(database, exps, outdir, colors, notes, make_table):
                                                                            _fmt_median(c["gap"], 2),
                                                                            _fmt_median(c["t1"], 3)))
             rows.append(row)
-        parts.append(make_table(head, rows))
+        parts.append(page.table(head, rows))
     if database.improvements is None:
         notes.append("Scaling: times to within 1 % come from progress samples (no improvements table).")
     return parts

@@ -9,7 +9,6 @@ finish has no finite median; the box plots show finished runs only and count the
 """
 
 import math
-import os
 
 import numpy as np
 
@@ -219,35 +218,3 @@ def distinct_starts(database, exp):
     if jitter == 0.0 and heading == 0.0:
         return 1
     return len({r.values.get("start_seed") for r in database.runs if r.experiment == exp.id})
-
-
-def box_plots(database, exp, outdir, slug):
-    """Makespan and flowtime per controller over the finished runs; unfinished runs counted above."""
-    import matplotlib.pyplot as plt
-
-    planners = database.planners_of(exp.id)
-    if not planners:
-        return None
-    panels = [("makespan", "makespan [s]"), ("flowtime", "flowtime [s]")]
-    fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels) + 1.0, 4.6), squeeze=False)
-    for ax, (column, label) in zip(axes[0], panels):
-        data, unfinished = [], []
-        for p in planners:
-            runs = database.runs_of(exp.id, p)
-            vals = [dbmod.run_value(r, column) for r in runs if finished(r)]
-            data.append([v for v in vals if v is not None])
-            unfinished.append(len(runs) - len(data[-1]))
-        ax.boxplot([d if d else [np.nan] for d in data], widths=0.6, showfliers=True)
-        ax.set_xticks(range(1, len(planners) + 1))
-        names = []
-        for p, d, u in zip(planners, data, unfinished):
-            names.append(controller_name(p) + ("\n%d of %d not finished" % (u, len(d) + u) if u else ""))
-        ax.set_xticklabels(names, rotation=30, ha="right", fontsize=8)
-        ax.set_title(label + " (finished runs)", fontsize=10)
-        ax.grid(axis="y", alpha=0.3)
-    fig.suptitle(exp.name, fontsize=11)
-    fig.tight_layout()
-    path = os.path.join(outdir, "sim_box_%s.png" % slug)
-    fig.savefig(path, dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    return os.path.basename(path)
