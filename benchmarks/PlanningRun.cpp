@@ -7,11 +7,11 @@
 #include "mhplan/bench/CampaignRunner.h"
 
 #include "mhplan/base/Version.h"
-#include "mhplan/collision/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/io/InputFile.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/metrics/MetricList.h"
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/registry/Registry.h"
 
@@ -57,14 +57,13 @@ namespace mhplan::bench::detail
             return out;
         }
 
-        /** The metrics of a path of an SE(2)-based world (docs/spaces.md, "Rigid-body and car worlds"): the
-            length in the space's metric, the independent dense check along the space's interpolation, the
-            FCL clearance, the Reeds-Shepp cusps; smoothness and curvature of the waypoints (se2) or of the
+        /** The path of an SE(2)-based world prepared for the metrics (docs/spaces.md, "Rigid-body and car
+            worlds"): the length in the space's metric, the independent dense check along the space's
+            interpolation, the FCL clearance; the shape metrics are taken on the waypoints (se2) or on the
             driven curve sampled every eighth of the turning radius (cars). The stored path is what the robot
             drives, with the robot's heading: the waypoints (se2) or the sampled curve (cars). */
-        void rigidRunProperties(const ExperimentSetup &xs, const ob::SpaceInformation &si,
-                                const og::PathGeometric &path, ot::Benchmark::RunProperties &run,
-                                std::vector<Pose2> &poses)
+        MetricPath rigidRunPath(const ExperimentSetup &xs, const ob::SpaceInformation &si,
+                                const og::PathGeometric &path, bool exact, std::vector<Pose2> &poses)
         {
             const RigidBodyModel model(xs.world);
             const RigidPathMetrics m = rigidPathMetrics(xs.world, si, path, model, xs.metricStep);
@@ -84,16 +83,24 @@ namespace mhplan::bench::detail
             std::vector<Vec2> drawn;
             for (const Pose2 &p : poses)
                 drawn.emplace_back(p.x, p.y);
-            const std::vector<Vec2> shape = withoutDuplicates(drawn);
-            run["path length REAL"] = num(m.length);
-            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
-            run["min clearance REAL"] = num(m.minClearance);
-            run["mean clearance REAL"] = num(m.meanClearance);
-            run["smoothness REAL"] = num(smoothness(shape));
-            run["max curvature REAL"] = num(maxCurvature(shape));
-            run["angle over length REAL"] = num(angleOverLength(shape));
-            run["cusps INTEGER"] =
-                std::to_string(xs.world.space == SpaceType::SE2 ? cuspCount(shape) : m.cusps);
+            return rigidMetricPath(xs.world, si, path, m, withoutDuplicates(drawn), exact, xs.optimum);
+        }
+
+        /** Every registered metric (MetricList.h) as a run property. */
+        void storeMetrics(const MetricPath &path, ot::Benchmark::RunProperties &run)
+        {
+            for (const auto &[property, value] : evaluatePathMetrics(path))
+            {
+                if (!value)
+                    continue;
+                const std::string type = property.substr(property.rfind(' ') + 1);
+                if (type == "BOOLEAN")
+                    run[property] = *value != 0.0 ? "1" : "0";
+                else if (type == "INTEGER")
+                    run[property] = std::to_string(static_cast<long long>(*value));
+                else
+                    run[property] = num(*value);
+            }
         }
 
         struct WorkerInfo
@@ -236,28 +243,19 @@ namespace mhplan::bench::detail
                     if (pdef->hasSolution() && run["status ENUM"] != crash)
                     {
                         const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
+                        const bool exact = pdef->hasExactSolution();
                         if (xs.world.isRigid())
                         {
                             std::vector<Pose2> poses;
-                            rigidRunProperties(xs, *si, *geo, run, poses);
-                            if (pdef->hasExactSolution())
-                                run["optimality gap REAL"] = num(std::nan(""));
+                            storeMetrics(rigidRunPath(xs, *si, *geo, exact, poses), run);
                             path = encodePoses(poses);
                         }
                         else
                         {
                             const std::vector<Vec2> pts = pathPoints(*geo);
-                            const PathMetrics m = computePathMetrics(pts, *xs.model, xs.metricStep);
-                            run["path length REAL"] = num(m.length);
-                            run["collision free BOOLEAN"] = m.collisionFree ? "1" : "0";
-                            run["min clearance REAL"] = num(m.minClearance);
-                            run["mean clearance REAL"] = num(m.meanClearance);
-                            run["smoothness REAL"] = num(m.smoothness);
-                            run["max curvature REAL"] = num(m.maxCurvature);
-                            run["angle over length REAL"] = num(m.angleOverLength);
-                            run["cusps INTEGER"] = std::to_string(m.cusps);
-                            if (pdef->hasExactSolution())
-                                run["optimality gap REAL"] = num(optimalityGapPercent(m.length, xs.optimum));
+                            storeMetrics(
+                                planarMetricPath(xs.world, pts, *xs.model, xs.metricStep, exact, xs.optimum),
+                                run);
                             path = encodePath(pts);
                         }
                     }

@@ -8,7 +8,7 @@
 
    mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...]
                       [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3] */
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/io/WorldIO.h"

@@ -21,6 +21,7 @@
 #include "mhplan/collision/Collision.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/metrics/MetricList.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Console.h>
@@ -276,6 +277,12 @@ class TinyCampaign : public ::testing::Test
         if (campaign_ == nullptr)
         {
             campaign_ = new Campaign(tinyCampaign("full"));
+            // A metric of the test's own (docs/conventions.md, "Adding a metric"): registered here, stored by
+            // the campaign like the built-in ones (RegisteredMetricIsStored).
+            if (std::none_of(pathMetrics().begin(), pathMetrics().end(),
+                             [](const PathMetric &m) { return m.property == "waypoints INTEGER"; }))
+                registerPathMetric({"waypoints INTEGER", [](const MetricPath &p)
+                                    { return static_cast<double>(p.points.size()); }});
             // What the experiment processes say about crashed runs (CrashingPlanners... reads it).
             StderrToFile capture(campaign_->logDir + ".stderr.txt");
             summary_ = new CampaignSummary(runCampaign(*campaign_, options(2)));
@@ -449,6 +456,19 @@ TEST_F(TinyCampaign, SolutionPathsAreSavedPerRun)
     EXPECT_EQ(last.size(), 6u);
     for (const auto &r : last)
         EXPECT_NEAR(std::atof(r[1].c_str()), std::atof(r[0].c_str()), 1e-9 * std::atof(r[0].c_str()));
+}
+
+TEST_F(TinyCampaign, RegisteredMetricIsStored)
+{
+    // Every run with a path stores the test's metric: the number of points of the path it saved.
+    const Sql sql(campaign_->database);
+    ASSERT_TRUE(sql.columns("runs").count("waypoints"));
+    const auto rows =
+        sql.rows("SELECT paths.points, runs.waypoints FROM paths JOIN runs ON paths.runid = runs.id");
+    ASSERT_FALSE(rows.empty());
+    for (const auto &r : rows)
+        EXPECT_EQ(std::to_string(std::count(r[0].begin(), r[0].end(), ';')), r[1]) << r[0];
+    EXPECT_EQ(sql.count("SELECT count(*) FROM runs WHERE path_length IS NULL AND waypoints IS NOT NULL"), 0);
 }
 
 TEST_F(TinyCampaign, EveryImprovementIsStoredPerRunAndEndsAtTheSolution)

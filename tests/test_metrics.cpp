@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* Path metrics (src/collision/Metrics.h) against hand computations.
+/* Path metrics (src/metrics/Metrics.h) against hand computations, and the registration list of the metrics a
+   campaign stores (src/metrics/MetricList.h).
 
    The clearance world:            y
                                   10 +----------------------+
@@ -10,12 +11,17 @@
                                    0 +----------------------+ x
                                      0                     10                                      */
 #include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/MetricList.h"
+#include "mhplan/metrics/Metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
 
 using namespace mhplan;
 
@@ -129,4 +135,61 @@ TEST(Metrics, ClearanceAlongAPath)
     EXPECT_NEAR(m.minClearance, 1.5, 1e-9);
     EXPECT_EQ(m.cusps, 0u);
     EXPECT_DOUBLE_EQ(defaultMetricStep(w), std::min(std::hypot(10.0, 10.0) / 2000.0, 0.125));
+}
+
+TEST(MetricList, BuiltInMetricsUnderTheirDatabaseNames)
+{
+    // The run properties existing databases and the report read (benchmarks/README.md), in this order.
+    const std::vector<std::string> expected{
+        "path length REAL",       "collision free BOOLEAN", "min clearance REAL",
+        "mean clearance REAL",    "smoothness REAL",        "max curvature REAL",
+        "angle over length REAL", "cusps INTEGER",          "optimality gap REAL"};
+    std::vector<std::string> names;
+    for (const PathMetric &m : pathMetrics())
+        names.push_back(m.property);
+    ASSERT_GE(names.size(), expected.size());
+    EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + static_cast<long>(expected.size())),
+              expected);
+
+    // A right-angle path of length 8 in the circle world, reported exact, optimum 7.5.
+    const World w = circleWorld();
+    const CollisionModelPtr model = makeCollisionModel(w, CollisionBackend::Analytic);
+    const MetricPath p = planarMetricPath(w, {{1, 2}, {9, 2}, {9, 2}, {9, 9}}, *model, 0.01, true, 7.5);
+    std::map<std::string, std::optional<double>> v;
+    for (const auto &kv : evaluatePathMetrics(p))
+        v[kv.first] = kv.second;
+    EXPECT_NEAR(*v["path length REAL"], 15.0, 1e-12);
+    EXPECT_EQ(*v["cusps INTEGER"], 1.0); // 90 > 60 degrees
+    EXPECT_NEAR(*v["optimality gap REAL"], 100.0, 1e-12);
+    EXPECT_EQ(*v["collision free BOOLEAN"], 1.0);
+    // Not exact: no gap stored.
+    const MetricPath approximate = planarMetricPath(w, {{1, 2}, {9, 2}}, *model, 0.01, false, 7.5);
+    for (const auto &kv : evaluatePathMetrics(approximate))
+        EXPECT_EQ(kv.second.has_value(), kv.first != "optimality gap REAL") << kv.first;
+}
+
+TEST(MetricList, ANewMetricIsOneFunctionAndOneRegistration)
+{
+    // docs/conventions.md, "Adding a metric": the function, its registration, and it is evaluated.
+    registerPathMetric({"straight share REAL", [](const MetricPath &p)
+                        { return distance(p.points.front(), p.points.back()) / p.length; }});
+    const World w = circleWorld();
+    const CollisionModelPtr model = makeCollisionModel(w, CollisionBackend::Analytic);
+    const auto values =
+        evaluatePathMetrics(planarMetricPath(w, {{0, 0}, {3, 0}, {3, 4}}, *model, 0.01, true, 5.0));
+    ASSERT_EQ(values.back().first, "straight share REAL");
+    EXPECT_NEAR(*values.back().second, 5.0 / 7.0, 1e-12);
+    // Refused: a duplicate name (whatever its type), a malformed property, no function.
+    EXPECT_THROW(registerPathMetric({"straight share INTEGER", [](const MetricPath &) { return 0.0; }}),
+                 std::invalid_argument);
+    EXPECT_THROW(registerPathMetric({"cusps REAL", [](const MetricPath &) { return 0.0; }}),
+                 std::invalid_argument);
+    EXPECT_THROW(registerPathMetric({"Bad-Name REAL", [](const MetricPath &) { return 0.0; }}),
+                 std::invalid_argument);
+    EXPECT_THROW(registerPathMetric({"no type", [](const MetricPath &) { return 0.0; }}),
+                 std::invalid_argument);
+    EXPECT_THROW(registerPathMetric({"empty REAL", nullptr}), std::invalid_argument);
+    EXPECT_FALSE(unregisterPathMetric("cusps INTEGER")); // built-in metrics stay
+    EXPECT_TRUE(unregisterPathMetric("straight share REAL"));
+    EXPECT_EQ(pathMetrics().back().property, "optimality gap REAL");
 }

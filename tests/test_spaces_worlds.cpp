@@ -7,7 +7,7 @@
 
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/io/WorldIO.h"

@@ -3,7 +3,6 @@
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/ProblemDefinition.h>
-#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
@@ -127,33 +126,6 @@ namespace mhplan
         callback(planner, view, cost);
         for (ob::State *s : states)
             si.freeState(s);
-    }
-
-    unsigned int countCusps(const ompl::geometric::PathGeometric &path)
-    {
-        const auto *space =
-            dynamic_cast<const ob::ReedsSheppStateSpace *>(path.getSpaceInformation()->getStateSpace().get());
-        if (space == nullptr)
-            throw std::invalid_argument("countCusps: needs a path on a ReedsSheppStateSpace; got the state "
-                                        "space '" +
-                                        path.getSpaceInformation()->getStateSpace()->getName() + "'");
-        unsigned int cusps = 0;
-        int direction = 0; // +1 forward, -1 reverse, 0 not yet known
-        for (std::size_t i = 1; i < path.getStateCount(); ++i)
-        {
-            const ob::ReedsSheppStateSpace::ReedsSheppPath rs =
-                space->reedsShepp(path.getState(i - 1), path.getState(i));
-            for (int k = 0; k < 5; ++k)
-            {
-                if (rs.type_[k] == ob::ReedsSheppStateSpace::RS_NOP || std::abs(rs.length_[k]) < 1e-9)
-                    continue;
-                const int d = rs.length_[k] > 0.0 ? 1 : -1;
-                if (direction != 0 && d != direction)
-                    ++cusps;
-                direction = d;
-            }
-        }
-        return cusps;
     }
 
     std::string formatCost(double cost)

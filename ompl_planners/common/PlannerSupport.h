@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* mhplan: small pieces every mhplan planner shares (planner data of a path, progress formatting, the cusps of
-   a Reeds-Shepp path). */
+/* mhplan: small pieces every mhplan planner shares (planner data of a path, progress formatting). The cusps
+   of a path are a metric (src/metrics/Metrics.h, docs/metrics.md). */
 #ifndef MHPLAN_PLANNER_SUPPORT_H
 #define MHPLAN_PLANNER_SUPPORT_H
 
@@ -48,14 +48,6 @@ namespace mhplan
                      const ompl::base::SpaceInformationPtr &si, std::size_t count,
                      const std::function<void(ompl::base::State *, std::size_t)> &fill, bool exact,
                      const ompl::base::Cost &cost, double approximateDistance);
-
-    /** \brief The cusps of \e path on a ReedsSheppStateSpace: the changes of driving direction (forward /
-        reverse) along the shortest Reeds-Shepp curves that join its consecutive states
-        (ReedsSheppStateSpace::reedsShepp(): signed segment lengths; segments shorter than 1e-9 turning radii
-        are skipped), counted within each curve and across the states where two curves meet
-        (docs/spaces.md). Throws std::invalid_argument when the path's space is not a ReedsSheppStateSpace
-        (other spaces have no driving direction). */
-    unsigned int countCusps(const ompl::geometric::PathGeometric &path);
 
     /** \brief A cost as a progress property value (17 significant digits, "inf" when none). */
     std::string formatCost(double cost);

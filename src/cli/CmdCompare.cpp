@@ -2,7 +2,7 @@
 /* mhplan compare: every planner on every world's first query (or --query); a table (or JSON) of success,
    lengths, the optimum, the gap and time; "n/a" where a planner's declared capabilities exclude the world's
    space (PlannerRegistry::whyNotApplicable). */
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/Metrics.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/cli/Commands.h"
 

@@ -6,7 +6,7 @@
 #include "mhplan/cli/Help.h"
 #include "mhplan/cli/Json.h"
 #include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/Metrics.h"
 #include "mhplan/collision/Problem.h"
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/draw/Svg.h"

@@ -243,47 +243,4 @@ namespace mhplan
                 return false;
         return true;
     }
-
-    RigidPathMetrics rigidPathMetrics(const World &world, const ob::SpaceInformation &si,
-                                      const og::PathGeometric &path, const RigidBodyModel &model, double step)
-    {
-        RigidPathMetrics m;
-        m.length = path.length();
-        m.poses = densePathPoses(world, si, path, step);
-        m.collisionFree = !m.poses.empty() && independentPosesFree(world, m.poses);
-        m.minClearance = std::numeric_limits<double>::infinity();
-        double sum = 0.0;
-        for (const Pose2 &p : m.poses)
-        {
-            const double c = model.clearance(p);
-            m.minClearance = std::min(m.minClearance, c);
-            sum += c;
-        }
-        m.meanClearance = m.poses.empty() ? 0.0 : sum / static_cast<double>(m.poses.size());
-        m.cusps = reedsSheppCusps(si.getStateSpace().get(), path);
-        return m;
-    }
-
-    std::size_t reedsSheppCusps(const ob::StateSpace *space, const og::PathGeometric &path)
-    {
-        const auto *rs = dynamic_cast<const ob::ReedsSheppStateSpace *>(space);
-        if (rs == nullptr)
-            return 0;
-        std::size_t cusps = 0;
-        int last = 0; // sign of the last non-empty segment so far
-        for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
-        {
-            const auto curve = rs->reedsShepp(path.getState(i), path.getState(i + 1));
-            for (double len : curve.length_)
-            {
-                if (std::fabs(len) < 1e-12)
-                    continue;
-                const int sign = len > 0.0 ? 1 : -1;
-                if (last != 0 && sign != last)
-                    ++cusps;
-                last = sign;
-            }
-        }
-        return cusps;
-    }
 } // namespace mhplan

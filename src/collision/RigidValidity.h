@@ -119,37 +119,6 @@ namespace mhplan
 
     /** \brief Independent dense check of a sampled path (independentPoseFree at every pose). */
     bool independentPosesFree(const World &world, const std::vector<Pose2> &poses);
-
-    /** \brief The metrics of one path in an SE(2)-based world. */
-    struct RigidPathMetrics
-    {
-        /** \brief Length in the space's metric (OMPL's PathGeometric::length: the sum of the space's
-         * distances).
-         */
-        double length{0.0};
-        /** \brief The independent dense check (independentPosesFree) of \e poses. */
-        bool collisionFree{false};
-        /** \brief Minimum and mean of RigidBodyModel::clearance over \e poses (+infinity without obstacles).
-         */
-        double minClearance{0.0};
-        double meanClearance{0.0};
-        /** \brief reedsSheppCusps (0 outside reeds_shepp). */
-        std::size_t cusps{0};
-        /** \brief The poses of densePathPoses at the given step. */
-        std::vector<Pose2> poses;
-    };
-
-    /** \brief Every metric of a path of an SE(2)-based world, the dense poses \e step apart (in robot-point
-        displacement). */
-    RigidPathMetrics rigidPathMetrics(const World &world, const ompl::base::SpaceInformation &si,
-                                      const ompl::geometric::PathGeometric &path, const RigidBodyModel &model,
-                                      double step);
-
-    /** \brief Reversals of driving direction along a Reeds-Shepp path: sign changes between consecutive
-        non-empty segments of each motion's Reeds-Shepp curve and between consecutive motions. 0 for any
-        other space. */
-    std::size_t reedsSheppCusps(const ompl::base::StateSpace *space,
-                                const ompl::geometric::PathGeometric &path);
 } // namespace mhplan
 
 #endif

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/* mhplan: path quality metrics shared by the benchmark driver, the reports and the tests. The curvature,
+/* mhplan: the definitions of the path metrics (docs/metrics.md), for planar paths and the paths of
+   SE(2)-based worlds alike; the benchmark driver, the CLI and the tests use these. The curvature,
    angle-over-length and cusp metrics follow Bench-MR's definitions (Heiden et al., "Bench-MR: A Motion
-   Planning Benchmark for Wheeled Mobile Robots", RA-L 2021); every deviation is stated where it is made. */
+   Planning Benchmark for Wheeled Mobile Robots", RA-L 2021); every deviation is stated where it is made. What
+   a campaign stores is the registration list of MetricList.h. */
 #ifndef MHPLAN_METRICS_H
 #define MHPLAN_METRICS_H
 
 #include "mhplan/collision/Collision.h"
+#include "mhplan/collision/RigidBody.h"
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/geometric/PathGeometric.h>
 
 #include <cstddef>
 #include <vector>
@@ -33,10 +39,22 @@ namespace mhplan
     /** \brief Bench-MR's default cusp threshold: 60 degrees. */
     constexpr double kDefaultCuspAngle = 60.0 * 3.14159265358979323846 / 180.0;
 
-    /** \brief Cusps (Bench-MR PathEvaluation::computeCusps): interior vertices whose heading change exceeds
-        \e thresholdRadians (Bench-MR's default 60 degrees). The heading change is normalised to [0, pi]
-        (Bench-MR's fmod leaves a wrap-around at +-pi counted as a cusp; mhplan does not). */
+    /** \brief The one tolerance of the cusp definition (docs/metrics.md, "Cusps"): a piece of a Reeds-Shepp
+        curve shorter than this many turning radii has no driving direction and is skipped. */
+    constexpr double kCuspTolerance = 1e-9;
+
+    /** \brief Cusps of a polyline (docs/metrics.md, "Cusps"; Bench-MR PathEvaluation::computeCusps): interior
+        vertices whose heading change exceeds \e thresholdRadians (Bench-MR's default 60 degrees). The heading
+        change is normalised to [0, pi] (Bench-MR's fmod leaves a wrap-around at +-pi counted as a cusp;
+       mhplan does not). */
     std::size_t cuspCount(const std::vector<Vec2> &points, double thresholdRadians = kDefaultCuspAngle);
+
+    /** \brief Cusps of a path of a car that can reverse (docs/metrics.md, "Cusps"): the changes of driving
+        direction (forward / reverse) along the Reeds-Shepp curves between consecutive states, within one
+       motion and across motions; pieces shorter than kCuspTolerance are skipped. 0 for any other space (a
+       Dubins car never reverses). */
+    std::size_t reedsSheppCusps(const ompl::base::StateSpace *space,
+                                const ompl::geometric::PathGeometric &path);
 
     /** \brief Smoothness as Bench-MR reports it (OMPL's PathGeometric::smoothness, re-implemented): the sum
         over interior vertices of (2 theta / (a + b))^2, with theta the turning angle and a, b the lengths of
@@ -86,6 +104,31 @@ namespace mhplan
     /** \brief A sampling step fine enough for the dense check: a quarter of the robot radius, at most 1/2000
         of the bounds' diagonal (and never 0). */
     double defaultMetricStep(const World &world);
+
+    /** \brief The metrics of one path in an SE(2)-based world (docs/spaces.md, "Rigid-body and car worlds").
+     */
+    struct RigidPathMetrics
+    {
+        /** \brief Length in the space's metric (OMPL's PathGeometric::length: the sum of the space's
+            distances). */
+        double length{0.0};
+        /** \brief The independent dense check (independentPosesFree) of \e poses. */
+        bool collisionFree{false};
+        /** \brief Minimum and mean of RigidBodyModel::clearance over \e poses (+infinity without obstacles).
+         */
+        double minClearance{0.0};
+        double meanClearance{0.0};
+        /** \brief reedsSheppCusps (0 outside reeds_shepp). */
+        std::size_t cusps{0};
+        /** \brief The poses of densePathPoses at the given step. */
+        std::vector<Pose2> poses;
+    };
+
+    /** \brief Every metric of a path of an SE(2)-based world, the dense poses \e step apart (in robot-point
+        displacement). */
+    RigidPathMetrics rigidPathMetrics(const World &world, const ompl::base::SpaceInformation &si,
+                                      const ompl::geometric::PathGeometric &path, const RigidBodyModel &model,
+                                      double step);
 
     /** \brief Optimality gap in percent: 100 (length - optimum) / optimum; NaN when the optimum is not
         positive and finite. */

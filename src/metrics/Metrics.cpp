@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/Metrics.h"
+#include "mhplan/metrics/Metrics.h"
+
+#include "mhplan/collision/RigidValidity.h"
+
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
 
 namespace mhplan
 {
@@ -189,6 +196,50 @@ namespace mhplan
         if (world.robotRadius > 0.0)
             step = std::min(step, 0.25 * world.robotRadius);
         return step > 0.0 ? step : 1e-3;
+    }
+
+    std::size_t reedsSheppCusps(const ob::StateSpace *space, const og::PathGeometric &path)
+    {
+        const auto *rs = dynamic_cast<const ob::ReedsSheppStateSpace *>(space);
+        if (rs == nullptr)
+            return 0;
+        std::size_t cusps = 0;
+        int last = 0; // driving direction of the last piece so far: +1 forward, -1 reverse, 0 none yet
+        for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
+        {
+            const auto curve = rs->reedsShepp(path.getState(i), path.getState(i + 1));
+            for (int k = 0; k < 5; ++k)
+            {
+                if (curve.type_[k] == ob::ReedsSheppStateSpace::RS_NOP ||
+                    std::fabs(curve.length_[k]) < kCuspTolerance)
+                    continue;
+                const int sign = curve.length_[k] > 0.0 ? 1 : -1;
+                if (last != 0 && sign != last)
+                    ++cusps;
+                last = sign;
+            }
+        }
+        return cusps;
+    }
+
+    RigidPathMetrics rigidPathMetrics(const World &world, const ob::SpaceInformation &si,
+                                      const og::PathGeometric &path, const RigidBodyModel &model, double step)
+    {
+        RigidPathMetrics m;
+        m.length = path.length();
+        m.poses = densePathPoses(world, si, path, step);
+        m.collisionFree = !m.poses.empty() && independentPosesFree(world, m.poses);
+        m.minClearance = std::numeric_limits<double>::infinity();
+        double sum = 0.0;
+        for (const Pose2 &p : m.poses)
+        {
+            const double c = model.clearance(p);
+            m.minClearance = std::min(m.minClearance, c);
+            sum += c;
+        }
+        m.meanClearance = m.poses.empty() ? 0.0 : sum / static_cast<double>(m.poses.size());
+        m.cusps = reedsSheppCusps(si.getStateSpace().get(), path);
+        return m;
     }
 
     double optimalityGapPercent(double length, double optimum)
