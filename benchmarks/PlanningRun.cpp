@@ -587,9 +587,9 @@ namespace mhplan::bench::detail
         }
         x.parameters["collision_backend TEXT"] = xs.world.isRigid() ? "fcl-rigid" : xs.model->name();
         // Which validity set-up the runs used (docs/setups.md); the app set-up's resolution.
-        x.parameters["setup TEXT"] = e.setup.name();
+        x.parameters["validity_setup TEXT"] = e.setup.name();
         if (e.setup.app())
-            x.parameters["setup_resolution REAL"] = num(e.setup.resolution);
+            x.parameters["validity_resolution REAL"] = num(e.setup.resolution);
         // The machine's load while the experiment ran (benchmarks/README.md, "Parallel runs"): the share of a
         // core its planners had (CPU seconds over wall seconds of solve(), over all runs), the system's
         // 1-minute load average at its end and the cores this process may use. The report states them.

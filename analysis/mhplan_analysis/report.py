@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import comparisons, movingai, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
+from . import comparisons, movingai, paper_tables, papers, quality, scaling, setups, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -699,6 +699,7 @@ def write_report(database_path, outdir, world_dir=None):
 
     if planning:
         parts.extend(comparisons.campaign_section(database, planning, _optimum, outdir, colors))
+    parts.extend(setups.section(database, planning, _table, _fmt))
 
     # The papers' tables.
     parts.extend(paper_tables.paper_tables(database, planning, per_exp_tables, paths, world_dir, _table, _fmt))
