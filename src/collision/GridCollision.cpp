@@ -532,7 +532,8 @@ namespace mhplan
         // deepest point lies within e / 2 of free space.
         const double pinchTol2 = tol_ * tol_;
         bool pinch = false;
-        const bool hit = forEachBlockedInBand(
+        bool marginal = false; // entered a square, but its clipped part's midpoint lies within e / 2 of its sides
+        const bool deep = forEachBlockedInBand(
             a, b, 0.0,
             [&](int k, int l)
             {
@@ -543,8 +544,10 @@ namespace mhplan
                 if (t1 > t0)
                 {
                     const Vec2 m = a + (b - a) * (0.5 * (t0 + t1));
-                    if (m.x > box.x0 && m.x < box.x1 && m.y > box.y0 && m.y < box.y1)
-                        return true; // enters the open square
+                    const double inside = std::min({m.x - box.x0, box.x1 - m.x, m.y - box.y0, box.y1 - m.y});
+                    if (inside > 0.5 * tol_)
+                        return true; // enters the open square deeper than e / 2: refused at once
+                    marginal = marginal || inside > 0.0;
                 }
                 for (int vy = l; vy <= l + 1; ++vy)
                     for (int vx = k; vx <= k + 1; ++vx)
@@ -553,10 +556,11 @@ namespace mhplan
                             return pinch = true;
                 return false;
             });
-        if (pinch)
+        if (pinch || deep)
             return false;
+        // Measured exactly where the exact tests saw it enter B only by rounding's order.
         const auto shallow = [&] { return maxSegmentPenetration(a, b) <= 0.5 * tol_; };
-        if (hit)
+        if (marginal)
             return shallow();
         // A segment lying on a grid line (up to the contact tolerance: a segment within rounding of the line
         // may not enter the open squares in floating point) needs a free cell on one side of each open edge
