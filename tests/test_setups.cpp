@@ -184,9 +184,10 @@ TEST(ContactRule, TouchingPathsPassTheDenseCheckAndPenetratingOnesFailBoth)
     World grid;
     grid.name = "contact";
     grid.bounds = {0.0, 10.0, 0.0, 10.0};
-    grid.grid = std::make_shared<OccupancyGrid>(10, 10, 1.0, Vec2{0.0, 0.0});
-    grid.grid->setBlocked(4, 4, true); // the square [4, 5] x [4, 5]
-    grid.grid->setBlocked(5, 4, true);
+    auto cells = std::make_shared<OccupancyGrid>(10, 10, 1.0, Vec2{0.0, 0.0});
+    cells->setBlocked(4, 4, true); // the wall [4, 6] x [4, 5]
+    cells->setBlocked(5, 4, true);
+    grid.grid = cells;
     World discs;
     discs.name = "discs";
     discs.bounds = {0.0, 10.0, 0.0, 10.0};

@@ -526,14 +526,14 @@ namespace mhplan
                     return d2 < r2 && std::sqrt(d2) < radius_ - halfTol;
                 });
         }
-        // Point robot: the segment must not enter the interior of B by more than e / 2 (docs/contact.md) nor
-        // pass within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to e),
-        // and so is the segment. A segment the exact tests find entering B is measured: it passes when its
-        // deepest point lies within e / 2 of free space.
+        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor pass
+        // within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to e), and
+        // so is the segment.
         const double pinchTol2 = tol_ * tol_;
         bool pinch = false;
-        bool marginal = false; // entered a square, but its clipped part's midpoint lies within e / 2 of its sides
-        const bool deep = forEachBlockedInBand(
+        const double q = 0.25 * tol_;
+        const auto near = [q](const Vec2 &p, const Vec2 &v) { return squaredNorm(p - v) <= q * q; };
+        const bool hit = forEachBlockedInBand(
             a, b, 0.0,
             [&](int k, int l)
             {
@@ -544,10 +544,27 @@ namespace mhplan
                 if (t1 > t0)
                 {
                     const Vec2 m = a + (b - a) * (0.5 * (t0 + t1));
-                    const double inside = std::min({m.x - box.x0, box.x1 - m.x, m.y - box.y0, box.y1 - m.y});
-                    if (inside > 0.5 * tol_)
-                        return true; // enters the open square deeper than e / 2: refused at once
-                    marginal = marginal || inside > 0.0;
+                    if (m.x > box.x0 && m.x < box.x1 && m.y > box.y0 && m.y < box.y1)
+                    {
+                        // Enters the open square. Accepted only by rounding's order (docs/contact.md): the
+                        // clipped part lies within e / 4 of a side whose neighbour is free, or of a vertex of
+                        // a free cell, so every point of it is within e / 4 of free space.
+                        const Vec2 p0 = a + (b - a) * t0, p1 = a + (b - a) * t1;
+                        const auto band = [&](double u0, double u1, double side, int nk, int nl)
+                        { return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl); };
+                        bool shallow = band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
+                                       band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
+                        for (int vy = l; vy <= l + 1 && !shallow; ++vy)
+                            for (int vx = k; vx <= k + 1 && !shallow; ++vx)
+                            {
+                                const Vec2 v{cellX0(vx), cellY0(vy)};
+                                shallow = near(p0, v) && near(p1, v) &&
+                                          !(g.blocked(vx - 1, vy - 1) && g.blocked(vx, vy - 1) &&
+                                            g.blocked(vx - 1, vy) && g.blocked(vx, vy));
+                            }
+                        if (!shallow)
+                            return true;
+                    }
                 }
                 for (int vy = l; vy <= l + 1; ++vy)
                     for (int vx = k; vx <= k + 1; ++vx)
@@ -556,12 +573,8 @@ namespace mhplan
                             return pinch = true;
                 return false;
             });
-        if (pinch || deep)
+        if (pinch || hit)
             return false;
-        // Measured exactly where the exact tests saw it enter B only by rounding's order.
-        const auto shallow = [&] { return maxSegmentPenetration(a, b) <= 0.5 * tol_; };
-        if (marginal)
-            return shallow();
         // A segment lying on a grid line (up to the contact tolerance: a segment within rounding of the line
         // may not enter the open squares in floating point) needs a free cell on one side of each open edge
         // piece.
@@ -577,7 +590,7 @@ namespace mhplan
                 for (int k = locateX(xlo), kEnd = locateX(xhi); k <= kEnd; ++k)
                     if (std::max(xlo, cellX0(k)) < std::min(xhi, cellX0(k + 1)) && g.blocked(k, l) &&
                         g.blocked(k, l - 1))
-                        return shallow();
+                        return false;
             }
         }
         if (std::abs(a.x - b.x) <= lineTol)
@@ -591,7 +604,7 @@ namespace mhplan
                 for (int l = locateY(ylo), lEnd = locateY(yhi); l <= lEnd; ++l)
                     if (std::max(ylo, cellY0(l)) < std::min(yhi, cellY0(l + 1)) && g.blocked(k, l) &&
                         g.blocked(k - 1, l))
-                        return shallow();
+                        return false;
             }
         }
         return true;
