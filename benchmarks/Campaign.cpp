@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/Campaign.h"
+#include "mhplan/bench/CampaignSetups.h"
 #include "mhplan/bench/MovingAIWorlds.h"
 
 #include "mhplan/collision/Collision.h"
@@ -277,7 +278,9 @@ namespace mhplan::bench
                     detail::readMovingAIWorld(r, n[i], field, w);
                 else
                 {
-                    r.allowKeys(n[i], field, {"world", "queries", "generate", "name"});
+                    r.allowKeys(n[i], field, {"world", "queries", "generate", "name", "setup"});
+                    if (n[i]["setup"].IsDefined())
+                        w.setups = readSetups(r, n[i]["setup"], field + ".setup");
                     if (n[i]["generate"].IsDefined())
                     {
                         if (n[i]["world"].IsDefined())
@@ -340,7 +343,7 @@ namespace mhplan::bench
         r.allowKeys(root, "",
                     {"campaign", "database", "simulation_database", "logs", "time_limit", "time_limit_kind",
                      "wall_limit", "memory_limit", "runs", "seed", "progress_interval", "planner_data",
-                     "collision", "worlds", "planners", "simulations", "skip_inapplicable"});
+                     "collision", "worlds", "planners", "simulations", "skip_inapplicable", "setup"});
         Campaign c;
         c.file = fileName;
         c.name = root["campaign"].IsDefined() ? r.nonEmptyText(root["campaign"], "campaign")
@@ -408,6 +411,8 @@ namespace mhplan::bench
                 r.fail(root["collision"], "collision", e.what());
             }
         }
+        if (root["setup"].IsDefined())
+            c.setups = readSetups(r, root["setup"], "setup");
         c.database =
             root["database"].IsDefined() ? r.nonEmptyText(root["database"], "database") : c.name + ".db";
         c.logDir = root["logs"].IsDefined() ? r.nonEmptyText(root["logs"], "logs") : c.database + ".logs";
@@ -421,6 +426,14 @@ namespace mhplan::bench
             if (!root["worlds"].IsDefined())
                 r.fail(root, "worlds", "missing");
             readWorlds(r, root["worlds"], c);
+            const bool app = std::any_of(c.setups.begin(), c.setups.end(),
+                                         [](const ValiditySetup &s) { return s.app(); });
+            for (std::size_t i = 0; app && i < c.worlds.size(); ++i)
+                if (!c.worlds[i].scen.empty())
+                    r.fail(root["setup"], "setup",
+                           "worlds[" + std::to_string(i) +
+                               "] is a MovingAI set, which runs the exact set-up only; give the app set-up to "
+                               "the other world entries (their key setup) instead");
             if (!root["planners"].IsDefined())
                 r.fail(root, "planners", "missing");
             readPlanners(r, root["planners"], c, registry);
@@ -605,7 +618,9 @@ namespace mhplan::bench
             prefix.add(worldText);
             const std::string inputHash = fingerprint(worldText);
             out.reserve(out.size() + queries.size());
+            const std::vector<ValiditySetup> &setups = spec.setups.empty() ? campaign.setups : spec.setups;
             for (const Query *qp : queries)
+                for (const ValiditySetup &setup : setups)
             {
                 const Query &q = *qp;
                 if (!plainName(q.name))
@@ -619,7 +634,8 @@ namespace mhplan::bench
                     validateQuery(world, q, *model);
                 Experiment e;
                 e.index = out.size();
-                e.name = world.name + "-" + q.name;
+                e.name = world.name + "-" + q.name + setupSuffix(setup);
+                e.setup = setup;
                 e.worldFile = file;
                 e.worldName = world.name;
                 e.query = q.name;
@@ -628,7 +644,8 @@ namespace mhplan::bench
                 if (!names.insert(e.name).second)
                     throw InputError(campaign.file + ": experiment '" + e.name +
                                      "' appears twice (the same world and query listed twice)");
-                e.seed = deriveSeed(campaign.seed, e.name, 0);
+                // The seed of the world and query alone: both set-ups of a query run the same seeds.
+                e.seed = deriveSeed(campaign.seed, world.name + "-" + q.name, 0);
                 // After the world's bytes (the same fingerprint as before): the query's name and points as
                 // an ostream of precision 17 writes them ("%.17g"; a world may have 10^5 queries).
                 char points[4 * 32];
@@ -636,6 +653,12 @@ namespace mhplan::bench
                               q.goal.x, q.goal.y);
                 Fingerprint all = prefix;
                 all.add("\nquery " + q.name + points);
+                if (setup.app()) // exact experiments keep the fingerprints they had before set-ups
+                {
+                    char res[48];
+                    std::snprintf(res, sizeof res, "setup app %.17g\n", setup.resolution);
+                    all.add(res);
+                }
                 e.configHash = all.hex();
                 e.inputHash = inputHash;
                 out.push_back(std::move(e));

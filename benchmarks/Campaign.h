@@ -9,6 +9,7 @@
 #include "mhplan/registry/Registry.h"
 #include "mhplan/base/World.h"
 #include "mhplan/bench/GeneratedWorlds.h"
+#include "mhplan/collision/Problem.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -63,6 +64,9 @@ namespace mhplan::bench
         unsigned int scenPerBucket{0};
         /** \brief Line of the entry in the campaign file (1-based; 0 when built in code), for messages. */
         int line{0};
+        /** \brief The entry's set-ups (key setup; docs/setups.md): every query runs once per set-up; empty:
+            the campaign's. */
+        std::vector<ValiditySetup> setups;
     };
 
     /** \brief One controller configuration of a simulation experiment (Controllers.h). */
@@ -151,7 +155,14 @@ namespace mhplan::bench
         /** \brief Key skip_inapplicable: a planner that cannot run on a world's state space (its declared
             capabilities) is skipped there (Experiment::skipped) instead of refusing the campaign. */
         bool skipInapplicable{false};
+        /** \brief Key setup (docs/setups.md): the set-ups of every world entry without its own; default the
+            exact set-up alone. */
+        std::vector<ValiditySetup> setups{ValiditySetup{}};
     };
+
+    /** \brief What a set-up adds to an experiment's name: "" (exact), "-app" (app at the default
+        resolution), "-appR" (app at resolution R). */
+    std::string setupSuffix(const ValiditySetup &setup);
 
     /** \brief Read a campaign file; throws InputError naming the file, line and field on any problem.
         Controller names "plan:<PLANNER>" are checked against \e registry. */
@@ -193,6 +204,9 @@ namespace mhplan::bench
         double scenOptimum{0.0};
         double octileOptimum{0.0};
         double startX{0.0}, startY{0.0}, goalX{0.0}, goalY{0.0};
+        /** \brief The validity set-up the runs use (docs/setups.md); part of the name (setupSuffix) and of
+            the fingerprint (app only: exact experiments keep their fingerprints). */
+        ValiditySetup setup;
         /** \brief For a simulation experiment: its index in Campaign::simulations (else kNoSimulation). */
         std::size_t simulation{kNoSimulation};
         /** \brief For a simulation experiment: the scenario file and the scenario's name. */

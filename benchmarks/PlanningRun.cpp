@@ -138,9 +138,10 @@ namespace mhplan::bench::detail
         {
             static const std::optional<std::size_t> seeds = [&]
             {
-                const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model,
-                                                              [](const ob::StateSpacePtr &space)
-                                                              { return std::make_shared<RunSetup>(space); });
+                const og::SimpleSetupPtr ss = makeSimpleSetup(
+                    xs.world, xs.query, xs.model,
+                    [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); },
+                    xs.experiment->setup);
                 ss->getSpaceInformation()->setup();
                 return static_cast<RunSetup &>(*ss).measurePrintSeeds();
             }();
@@ -161,9 +162,10 @@ namespace mhplan::bench::detail
             const Campaign &c = *xs.campaign;
             // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
             // generator (its path simplifier's).
-            const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model,
-                                                          [](const ob::StateSpacePtr &space)
-                                                          { return std::make_shared<RunSetup>(space); });
+            const og::SimpleSetupPtr ss = makeSimpleSetup(
+                xs.world, xs.query, xs.model,
+                [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); },
+                xs.experiment->setup);
             if (printSeeds)
                 static_cast<RunSetup &>(*ss).printSeeds(*printSeeds);
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
@@ -182,9 +184,13 @@ namespace mhplan::bench::detail
             // OMPL's collector samples the progress properties from the start of solve() at a fixed
             // interval but not at its end: the post-run event adds that last sample.
             std::map<std::string, std::string> finalSample;
+            // State and motion checks of the run (docs/setups.md, "Checks counted"): the checker and the
+            // validator count their calls; the run's are those between the pre- and the post-run event.
+            CheckCounts checksBefore;
             benchmark.setPreRunEvent(
                 [&](const ob::PlannerPtr &p)
                 {
+                    checksBefore = checkCounts(*si);
                     const auto &data = benchmark.getRecordedExperimentData();
                     std::map<std::string, std::string> common;
                     p->params().getParams(common);
@@ -221,6 +227,10 @@ namespace mhplan::bench::detail
                         run.erase("graph states INTEGER");
                         run.erase("graph motions INTEGER");
                     }
+                    const CheckCounts checks = checkCounts(*si) - checksBefore;
+                    if (checks.haveState)
+                        run["state checks INTEGER"] = std::to_string(checks.state);
+                    run["motion checks INTEGER"] = std::to_string(checks.motion);
                     run["run index INTEGER"] = std::to_string(runIndex);
                     run["run seed INTEGER"] = std::to_string(seed);
                     run["cpu time REAL"] = num(planner->cpuSeconds());
@@ -508,7 +518,7 @@ namespace mhplan::bench::detail
         }
 
         // Assemble the experiment with OMPL's own record and writer.
-        const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model);
+        const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model, e.setup);
         AssembledBenchmark bench(*ss, e.name);
         auto &x = bench.experiment();
         x.name = e.name;
@@ -574,6 +584,10 @@ namespace mhplan::bench::detail
             x.parameters["octile_optimum_m REAL"] = num(e.octileOptimum * xs.world.grid->cellSize());
         }
         x.parameters["collision_backend TEXT"] = xs.world.isRigid() ? "fcl-rigid" : xs.model->name();
+        // Which validity set-up the runs used (docs/setups.md); the app set-up's resolution.
+        x.parameters["validity_setup TEXT"] = e.setup.name();
+        if (e.setup.app())
+            x.parameters["validity_resolution REAL"] = num(e.setup.resolution);
         // The machine's load while the experiment ran (benchmarks/README.md, "Parallel runs"): the share of a
         // core its planners had (CPU seconds over wall seconds of solve(), over all runs), the system's
         // 1-minute load average at its end and the cores this process may use. The report states them.

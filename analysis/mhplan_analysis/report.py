@@ -30,6 +30,7 @@ SECTIONS = [
     "overview",       # the machine's load while the campaign planned
     "ranking",        # success bars, ranking per problem
     "comparisons",    # performance profiles
+    "setups",         # validity set-ups (exact, app), dense-check failures, checks per improvement
     "paper_tables",   # [LRSMA] Table 3, [BFO]
     "scaling",        # the scaling suite's families
     "movingai",       # MovingAI benchmark sets by bucket

@@ -393,13 +393,15 @@ namespace mhplan
         }
     } // namespace
 
-    bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly)
+    bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly,
+                                      double depth)
     {
         thread_local std::vector<double> ts;
         boundaryCrossings(a, b, poly, ts);
         const Vec2 d = b - a;
+        const double below = std::max(depth, 0.0);
         auto strictlyInside = [&](const Vec2 &p)
-        { return pointInPolygon(p, poly) && pointPolygonBoundaryDistance(p, poly) > 0.0; };
+        { return pointInPolygon(p, poly) && pointPolygonBoundaryDistance(p, poly) > below; };
         if (strictlyInside(a) || strictlyInside(b))
             return true;
         for (std::size_t i = 0; i + 1 < ts.size(); ++i)

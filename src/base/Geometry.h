@@ -124,8 +124,10 @@ namespace mhplan
     double segmentPolygonDistance(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly);
 
     /** \brief True when some point of the segment [a, b] lies strictly inside the simple polygon (running
-        along an edge or touching a vertex does not count). */
-    bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly);
+        along an edge or touching a vertex does not count). With \e depth > 0: when the midpoint of a piece
+        of the segment between two boundary crossings (or an end) lies farther than \e depth inside. */
+    bool segmentEntersPolygonInterior(const Vec2 &a, const Vec2 &b, const std::vector<Vec2> &poly,
+                                      double depth = 0.0);
 
     /** \brief Minimum over the segment [a, b] of the polygon's signed distance: the segment-polygon distance
         when the segment stays outside, minus the deepest penetration otherwise. Exact for convex polygons;

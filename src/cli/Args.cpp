@@ -128,6 +128,29 @@ namespace mhplan::cli
         return v;
     }
 
+    ValiditySetup setupFromArgs(const Args &args)
+    {
+        const std::string kind = args.get("setup", "exact");
+        double resolution = std::nan("");
+        if (args.has("resolution"))
+        {
+            if (kind != "app")
+                throw InputError("mhplan " + args.command() +
+                                 ": --resolution belongs to --setup app (the exact set-up decides every point "
+                                 "of a motion)");
+            resolution = args.number("resolution", kDefaultAppResolution);
+        }
+        try
+        {
+            return makeValiditySetup(kind, resolution);
+        }
+        catch (const InputError &e)
+        {
+            throw InputError("mhplan " + args.command() + ": --" +
+                             (kind == "exact" || kind == "app" ? "resolution" : "setup") + ": " + e.what());
+        }
+    }
+
     Vec2 Args::point(const std::string &name) const
     {
         const std::vector<double> v = parseNumberList("--" + name, get(name));

@@ -5,6 +5,7 @@
 
 #include "mhplan/optimum/Optimum.h"
 #include "mhplan/base/World.h"
+#include "mhplan/collision/Problem.h"
 
 #include <cstdint>
 #include <map>
@@ -64,6 +65,11 @@ namespace mhplan::cli
     World loadWorldArg(const Args &args);
     /** \brief --start/--goal, else --query NAME, else the world's first query. */
     Query queryFromArgs(const World &world, const Args &args);
+    /** \brief --setup exact|app and --resolution R (app only; docs/setups.md). Refuses (InputError naming
+        the option and what is accepted) an unknown set-up, a resolution out of range or one without
+        --setup app. */
+    ValiditySetup setupFromArgs(const Args &args);
+
     /** \brief Apply --seed (1..2^32-1) to OMPL's RNG before any generator exists; returns the seed in use. */
     std::uint_fast32_t seedFromArgs(const Args &args);
 

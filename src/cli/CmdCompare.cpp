@@ -71,6 +71,8 @@ namespace mhplan::cli
              {"--time", "S", "time limit per run in seconds, 0.001..1000000 (default 1)"},
              {"--runs", "N", "runs per world and planner, 1..1000 (default 1)"},
              options::seed(),
+             options::setup(),
+             options::resolution(),
              options::json("one result per world and planner")},
             {"compare bfo_case1 lrsma_scenario1 --planners RRTstar,SMA,LRSMA --runs 5 --time 0.5 --seed 3",
              "compare --planners BITstar,GA --json"}};
@@ -79,7 +81,9 @@ namespace mhplan::cli
 
     int cmdCompare(const Argv &argv)
     {
-        const Args args("compare", argv, {{"planners", "time", "runs", "seed", "query"}, {}, {"json"}});
+        const Args args("compare", argv,
+                        {{"planners", "time", "runs", "seed", "query", "setup", "resolution"}, {}, {"json"}});
+        const ValiditySetup setup = setupFromArgs(args);
         const std::uint_fast32_t seed = seedFromArgs(args);
         const double timeLimit = args.timeLimit(1.0);
         const long long runs = args.integer("runs", 1);
@@ -106,12 +110,15 @@ namespace mhplan::cli
                 .field("command", "compare")
                 .field("seed", static_cast<unsigned long long>(seed))
                 .field("time_limit", timeLimit)
-                .field("runs", runs);
+                .field("runs", runs)
+                .field("setup", setup.name());
+            out.key("resolution");
+            setup.app() ? out.value(setup.resolution) : out.null();
             out.key("results").beginArray();
         }
         else
             std::cout << "seed " << seed << ", time limit " << timeLimit << " s, " << runs
-                      << " run(s) per pair\n\n";
+                      << " run(s) per pair, set-up " << setup.describe() << "\n\n";
         // Column widths that fit every name (a name never runs into the next column).
         int worldWidth = 17, plannerWidth = 16;
         for (const auto &f : files)
@@ -179,7 +186,7 @@ namespace mhplan::cli
                 int exact = 0;
                 for (long long r = 0; r < runs; ++r)
                 {
-                    og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+                    og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model, setup);
                     ss->setPlanner(builtinPlanners().create(name, ss->getSpaceInformation()));
                     const ompl::time::point t0 = ompl::time::now();
                     const ob::PlannerStatus status = ss->solve(timeLimit);

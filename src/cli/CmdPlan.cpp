@@ -95,6 +95,8 @@ namespace mhplan::cli
              {"--backend", "NAME",
               "collision model: auto (default: the exact model of the world's type), analytic, fcl, grid or "
               "hash"},
+             options::setup(),
+             options::resolution(),
              options::svg("the world, the query and the path; a polygon robot's footprint at the start, the "
                           "goal and along the path"),
              options::json("the run (world, query, planner parameters, status, length, optimum, gap, path)"),
@@ -113,10 +115,12 @@ namespace mhplan::cli
         if (isCfgArgument(argv))
             return cmdPlanCfg(argv);
         const Args args("plan", argv,
-                        {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg"},
+                        {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg", "setup",
+                          "resolution"},
                          {"set"},
                          {"json", "quiet"}});
         checkOutputFile(args, "svg");
+        const ValiditySetup setup = setupFromArgs(args);
         // The seed must be fixed before any OMPL random number generator exists.
         const std::uint_fast32_t seed = seedFromArgs(args);
         const World world = loadWorldArg(args);
@@ -136,7 +140,7 @@ namespace mhplan::cli
             throw InputError(notApplicable);
         const CollisionModelPtr model =
             makeCollisionModel(world, parseCollisionBackend(args.get("backend", "auto")));
-        og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model);
+        og::SimpleSetupPtr ss = makeSimpleSetup(world, query, model, setup);
         ob::PlannerPtr planner = builtinPlanners().create(plannerName, ss->getSpaceInformation(), params);
         ss->setPlanner(planner);
         ss->setup();
@@ -167,11 +171,14 @@ namespace mhplan::cli
             std::cout << "seed:      " << seed << "\n";
             std::cout << "collision: "
                       << (world.isRigid() ? "fcl rigid body, certified motions" : model->name()) << "\n";
+            std::cout << "setup:     " << setup.describe() << "\n";
         }
 
         const ompl::time::point t0 = ompl::time::now();
+        const CheckCounts checksBefore = checkCounts(*ss->getSpaceInformation());
         const ob::PlannerStatus status = ss->solve(timeLimit);
         const double solveTime = ompl::time::seconds(ompl::time::now() - t0);
+        const CheckCounts checks = checkCounts(*ss->getSpaceInformation()) - checksBefore;
         const bool havePath = ss->haveSolutionPath();
         std::vector<Vec2> pts = havePath ? pathPoints(ss->getSolutionPath()) : std::vector<Vec2>{};
         bool collisionFree = havePath;
@@ -228,6 +235,11 @@ namespace mhplan::cli
             out.endObject();
             out.field("seed", static_cast<unsigned long long>(seed))
                 .field("collision", model->name())
+                .field("setup", setup.name());
+            out.key("resolution");
+            setup.app() ? out.value(setup.resolution) : out.null();
+            out.field("state_checks", static_cast<unsigned long long>(checks.state))
+                .field("motion_checks", static_cast<unsigned long long>(checks.motion))
                 .field("time_limit", timeLimit)
                 .field("status", status.asString())
                 .field("exact", exactPath)
@@ -291,6 +303,7 @@ namespace mhplan::cli
         }
         else
             std::cout << "optimum:   not available (" << optimum.reason << ")\n";
+        std::cout << "checks:    " << checks.state << " state, " << checks.motion << " motion\n";
         std::cout << "valid:     " << (collisionFree ? "yes" : "NO")
                   << (world.isRigid()
                           ? " (independent dense check of the robot along the space's interpolation)"

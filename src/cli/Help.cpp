@@ -73,6 +73,21 @@ namespace mhplan::cli
 
     namespace options
     {
+        OptionDoc setup()
+        {
+            return {"--setup", "exact|app",
+                    "how validity is checked (docs/setups.md): exact (default: mhplan's exact checker and "
+                    "motion validator) or app (as a user's OMPL program: a plain point checker and OMPL's "
+                    "DiscreteMotionValidator at --resolution); the path is still checked exactly"};
+        }
+
+        OptionDoc resolution()
+        {
+            return {"--resolution", "R",
+                    "with --setup app: the validity-checking resolution, a fraction of the space's maximum "
+                    "extent, 0.00001..0.5 (default 0.002)"};
+        }
+
         OptionDoc seed()
         {
             return {

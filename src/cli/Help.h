@@ -52,6 +52,9 @@ namespace mhplan::cli
         OptionDoc goal();
         OptionDoc json(const std::string &what);
         OptionDoc svg(const std::string &what);
+        /** \brief --setup exact|app and --resolution R (docs/setups.md). */
+        OptionDoc setup();
+        OptionDoc resolution();
     } // namespace options
 
     /** \brief The environment variables mhplan reads: name, meaning. */

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/Collision.h"
+#include "mhplan/collision/ContactRule.h"
 
 #include "mhplan/collision/FclCollision.h"
 #include "mhplan/collision/GridCollision.h"
@@ -11,13 +12,14 @@
 namespace mhplan
 {
     CollisionModel::CollisionModel(const World &world)
-        : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)), radius_(world.robotRadius)
+        : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)), radius_(world.robotRadius),
+          tol_(contact::tolerance(world.bounds))
     {
     }
 
     bool CollisionModel::isValid(const Vec2 &p) const
     {
-        return inBounds(p) && clearance(p) >= 0.0;
+        return inBounds(p) && clearance(p) >= -tol_;
     }
 
     AnalyticCollisionModel::AnalyticCollisionModel(const World &world)
@@ -43,19 +45,11 @@ namespace mhplan
         if (!inBounds(p))
             return false;
         for (const auto &c : circles_)
-        {
-            const double reach = c.radius + radius_;
-            if (squaredNorm(p - c.center) < reach * reach)
+            if (contact::pointHitsCircle(p, c.center, c.radius + radius_, tol_))
                 return false;
-        }
         for (const auto &poly : polygons_)
-        {
-            if (p.x < poly.bbox.xmin - radius_ || p.x > poly.bbox.xmax + radius_ ||
-                p.y < poly.bbox.ymin - radius_ || p.y > poly.bbox.ymax + radius_)
-                continue;
-            if (pointPolygonSignedDistance(p, poly.vertices) < radius_)
+            if (contact::pointHitsPolygon(p, poly, radius_, tol_))
                 return false;
-        }
         return true;
     }
 
@@ -68,22 +62,11 @@ namespace mhplan
             Box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)}.inflated(
                 radius_);
         for (const auto &c : circles_)
-        {
-            if (pointSegmentDistance(c.center, a, b) < c.radius + radius_)
+            if (contact::segmentHitsCircle(a, b, c.center, c.radius + radius_, tol_))
                 return false;
-        }
         for (const auto &poly : polygons_)
-        {
-            if (!sb.overlaps(poly.bbox))
-                continue;
-            const double d = segmentPolygonDistance(a, b, poly.vertices);
-            // Touching is allowed for a disc (d == radius); for a point robot the segment must not enter the
-            // interior, which segmentPolygonDistance == 0 cannot tell from touching: test the interior.
-            if (d < radius_)
+            if (sb.overlaps(poly.bbox) && contact::segmentHitsPolygon(a, b, poly, radius_, tol_))
                 return false;
-            if (d == 0.0 && radius_ == 0.0 && segmentEntersPolygonInterior(a, b, poly.vertices))
-                return false;
-        }
         return true;
     }
 

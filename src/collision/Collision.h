@@ -19,9 +19,10 @@ namespace mhplan
           obstacle; for a point inside an obstacle, minus the penetration depth minus the radius). The
           world's bounds are \b not obstacles for clearance; +infinity when there is no obstacle.
         - isValid(p): the disc lies inside the bounds (p within [xmin + r, xmax - r] x [ymin + r, ymax - r])
-          and clearance(p) >= 0 (touching an obstacle is allowed: obstacles are closed, free space is
-          closed too).
-        - segmentValid(a, b): every point of the closed segment is valid (exact, no sampling).
+          and clearance(p) >= -e, e = contactTolerance() (touching an obstacle is allowed: obstacles are
+          closed, free space is closed too; e absorbs rounding, docs/contact.md).
+        - segmentValid(a, b): every point of the closed segment has clearance >= -e / 2 (exact, no
+          sampling), so every point computed along it passes isValid.
         - segmentClearance(a, b): the minimum of clearance over the segment.
         Implementations are immutable after construction and safe to query from several threads. */
     class CollisionModel
@@ -46,6 +47,9 @@ namespace mhplan
         bool segmentInBounds(const Vec2 &a, const Vec2 &b) const { return inBounds(a) && inBounds(b); }
 
         double robotRadius() const { return radius_; }
+        /** \brief The contact tolerance e of docs/contact.md (ContactRule.h): a point is valid when it
+            penetrates by at most e, a segment when it penetrates by at most e / 2 everywhere. */
+        double contactTolerance() const { return tol_; }
         const Box &bounds() const { return bounds_; }
 
       protected:
@@ -53,6 +57,7 @@ namespace mhplan
         /** \brief Bounds shrunk by the robot radius: the admissible positions of the disc's centre. */
         Box inner_;
         double radius_;
+        double tol_;
     };
 
     using CollisionModelPtr = std::shared_ptr<const CollisionModel>;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/FclCollision.h"
+#include "mhplan/collision/ContactRule.h"
 
 #include "mhplan/collision/detail/FclShapes.h"
 
@@ -197,10 +198,14 @@ namespace mhplan
 
         struct PointCollisionData
         {
-            PointCollisionData(const Impl *i, const Vec2 &q, double r) : impl(i), p(q), radius(r) {}
+            PointCollisionData(const Impl *i, const Vec2 &q, double r, double t)
+                : impl(i), p(q), radius(r), tol(t)
+            {
+            }
             const Impl *impl;
             Vec2 p;
             double radius;
+            double tol;
             bool hit{false};
             RecentPolygons recent;
         };
@@ -213,30 +218,23 @@ namespace mhplan
             if (d.impl->isCircle(id))
             {
                 const Circle &c = d.impl->circles[id];
-                const double reach = c.radius + d.radius;
-                d.hit = squaredNorm(d.p - c.center) < reach * reach;
+                d.hit = contact::pointHitsCircle(d.p, c.center, c.radius + d.radius, d.tol);
             }
             else if (!d.recent.seen(id))
-            {
-                const Polygon &poly = d.impl->polygon(id);
-                const Vec2 &p = d.p;
-                const double r = d.radius;
-                if (!(p.x < poly.bbox.xmin - r || p.x > poly.bbox.xmax + r || p.y < poly.bbox.ymin - r ||
-                      p.y > poly.bbox.ymax + r))
-                    d.hit = pointPolygonSignedDistance(p, poly.vertices) < r;
-            }
+                d.hit = contact::pointHitsPolygon(d.p, d.impl->polygon(id), d.radius, d.tol);
             return d.hit;
         }
 
         struct SegmentCollisionData
         {
-            SegmentCollisionData(const Impl *i, const Vec2 &s, const Vec2 &e, double r, const Box &box)
-                : impl(i), a(s), b(e), radius(r), sb(box)
+            SegmentCollisionData(const Impl *i, const Vec2 &s, const Vec2 &e, double r, double t, const Box &box)
+                : impl(i), a(s), b(e), radius(r), tol(t), sb(box)
             {
             }
             const Impl *impl;
             Vec2 a, b;
             double radius;
+            double tol;
             Box sb;
             bool hit{false};
             RecentPolygons recent;
@@ -250,20 +248,12 @@ namespace mhplan
             if (d.impl->isCircle(id))
             {
                 const Circle &c = d.impl->circles[id];
-                d.hit = pointSegmentDistance(c.center, d.a, d.b) < c.radius + d.radius;
+                d.hit = contact::segmentHitsCircle(d.a, d.b, c.center, c.radius + d.radius, d.tol);
             }
             else if (!d.recent.seen(id))
             {
                 const Polygon &poly = d.impl->polygon(id);
-                if (d.sb.overlaps(poly.bbox))
-                {
-                    const double dist = segmentPolygonDistance(d.a, d.b, poly.vertices);
-                    if (dist < d.radius)
-                        d.hit = true;
-                    else if (dist == 0.0 && d.radius == 0.0 &&
-                             segmentEntersPolygonInterior(d.a, d.b, poly.vertices))
-                        d.hit = true;
-                }
+                d.hit = d.sb.overlaps(poly.bbox) && contact::segmentHitsPolygon(d.a, d.b, poly, d.radius, d.tol);
             }
             return d.hit;
         }
@@ -394,7 +384,7 @@ namespace mhplan
         if (!inBounds(p))
             return false;
         QueryObject query(impl_->robotAlias, Box{p.x, p.x, p.y, p.y}.inflated(radius_), impl_->eps);
-        PointCollisionData data(impl_.get(), p, radius_);
+        PointCollisionData data(impl_.get(), p, radius_, tol_);
         impl_->manager.collide(&query, &data, pointCollisionCallback);
         return !data.hit;
     }
@@ -405,7 +395,7 @@ namespace mhplan
             return false;
         const Box sb = segmentBox(a, b).inflated(radius_);
         QueryObject query(impl_->robotAlias, sb, impl_->eps);
-        SegmentCollisionData data(impl_.get(), a, b, radius_, sb);
+        SegmentCollisionData data(impl_.get(), a, b, radius_, tol_, sb);
         impl_->manager.collide(&query, &data, segmentCollisionCallback);
         return !data.hit;
     }

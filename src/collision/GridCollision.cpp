@@ -144,9 +144,6 @@ namespace mhplan
 
         /** \brief Relative safety margins for the float distance transform bounds. */
         constexpr double kEdtRelMargin = 1e-6;
-        /** \brief Segments passing within this many cell sizes of a pinch corner are rejected (round-off
-            guard; passing that close on the free side is the only case this rejects wrongly). */
-        constexpr double kPinchTolerance = 1e-9;
     } // namespace
 
     GridCollisionModel::GridCollisionModel(const World &world) : CollisionModel(world), grid_(world.grid)
@@ -387,27 +384,40 @@ namespace mhplan
         {
             const bool onX = p.x == cellX0(ix);
             const bool onY = p.y == cellY0(iy);
+            bool free;
             if (!onX && !onY)
-                return !g.blocked(ix, iy);
-            if (onX && !onY)
-                return !(g.blocked(ix - 1, iy) && g.blocked(ix, iy));
-            if (!onX && onY)
-                return !(g.blocked(ix, iy - 1) && g.blocked(ix, iy));
-            const bool all = g.blocked(ix - 1, iy - 1) && g.blocked(ix, iy - 1) && g.blocked(ix - 1, iy) &&
-                             g.blocked(ix, iy);
-            return !all && !isPinchVertex(ix, iy);
+                free = !g.blocked(ix, iy);
+            else if (onX && !onY)
+                free = !(g.blocked(ix - 1, iy) && g.blocked(ix, iy));
+            else if (!onX && onY)
+                free = !(g.blocked(ix, iy - 1) && g.blocked(ix, iy));
+            else
+                return !(g.blocked(ix - 1, iy - 1) && g.blocked(ix, iy - 1) && g.blocked(ix - 1, iy) &&
+                         g.blocked(ix, iy)) &&
+                       !isPinchVertex(ix, iy);
+            if (free)
+                return true;
+            // In B: valid when it penetrates by at most the contact tolerance (docs/contact.md), which only a
+            // point within that distance of a grid line can.
+            const double s = g.cellSize();
+            const double gx = std::min(p.x - cellX0(ix), cellX0(ix + 1) - p.x);
+            const double gy = std::min(p.y - cellY0(iy), cellY0(iy + 1) - p.y);
+            if (std::min(gx, gy) > tol_ + 1e-12 * s)
+                return false;
+            return penetrationDepth(p) <= tol_;
         }
-        if (g.blocked(ix, iy))
-            return false; // p is in B, so the disc overlaps it
+        if (g.blocked(ix, iy) && radius_ > tol_)
+            return false; // p is in B, so the disc overlaps it by more than the tolerance
         const double s = g.cellSize();
+        const double need = radius_ - tol_; // docs/contact.md
         const double d = edt_[static_cast<std::size_t>(iy) * g.width() + ix];
         const double e = distance(p, g.cellCenter(ix, iy));
         if (d * (1.0 - kEdtRelMargin) - e - s * (kSqrtHalf + kEdtRelMargin) >= radius_)
             return true; // clearly free
         // The nearest blocked square (by centre) lies within |p - its centre| - s / 2 of p.
-        if (d * (1.0 + kEdtRelMargin) + e - s * (0.5 - kEdtRelMargin) < radius_)
+        if (d * (1.0 + kEdtRelMargin) + e - s * (0.5 - kEdtRelMargin) < need)
             return false; // clearly colliding
-        return std::sqrt(blockedDistance2(p, ix, iy, radius_, radius_)) >= radius_;
+        return std::sqrt(blockedDistance2(p, ix, iy, radius_, need)) >= need;
     }
 
     /* Calls visit(ix, iy) for every blocked grid cell that may lie within \e radius of the segment (a
@@ -497,6 +507,7 @@ namespace mhplan
             if (std::min(inside(a), inside(b)) < radius_)
                 return false;
             const double r2 = radius_ * radius_;
+            const double halfTol = 0.5 * tol_; // a segment penetrates by at most e / 2 (docs/contact.md)
             const double half = 0.5 * g.cellSize();
             const double far = radius_ + kSqrtHalf * g.cellSize() * (1.0 + 1e-9);
             const double far2 = far * far;
@@ -509,15 +520,19 @@ namespace mhplan
                     const double c2 = pointSegmentDistance2({cellX0(k) + half, cellY0(l) + half}, a, b);
                     if (c2 >= far2)
                         return false;
-                    if (std::sqrt(c2) - half < radius_ * (1.0 - 1e-9))
+                    if (std::sqrt(c2) - half < radius_ - halfTol)
                         return true;
                     const double d2 = segmentBoxDistance2(a, b, cellBox(k, l));
-                    return d2 < r2 && std::sqrt(d2) < radius_;
+                    return d2 < r2 && std::sqrt(d2) < radius_ - halfTol;
                 });
         }
-        // Point robot: the segment must not enter the interior of B nor pass through a pinch corner. Both
-        // endpoints are valid, hence in the grid's closed box, and so is the segment.
-        const double pinchTol2 = (kPinchTolerance * g.cellSize()) * (kPinchTolerance * g.cellSize());
+        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor pass
+        // within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to e), and
+        // so is the segment.
+        const double pinchTol2 = tol_ * tol_;
+        bool pinch = false;
+        const double q = 0.25 * tol_;
+        const auto near = [q](const Vec2 &p, const Vec2 &v) { return squaredNorm(p - v) <= q * q; };
         const bool hit = forEachBlockedInBand(
             a, b, 0.0,
             [&](int k, int l)
@@ -530,21 +545,40 @@ namespace mhplan
                 {
                     const Vec2 m = a + (b - a) * (0.5 * (t0 + t1));
                     if (m.x > box.x0 && m.x < box.x1 && m.y > box.y0 && m.y < box.y1)
-                        return true; // enters the open square
+                    {
+                        // Enters the open square. Accepted only by rounding's order (docs/contact.md): the
+                        // clipped part lies within e / 4 of a side whose neighbour is free, or of a vertex of
+                        // a free cell, so every point of it is within e / 4 of free space.
+                        const Vec2 p0 = a + (b - a) * t0, p1 = a + (b - a) * t1;
+                        const auto band = [&](double u0, double u1, double side, int nk, int nl)
+                        { return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl); };
+                        bool shallow = band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
+                                       band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
+                        for (int vy = l; vy <= l + 1 && !shallow; ++vy)
+                            for (int vx = k; vx <= k + 1 && !shallow; ++vx)
+                            {
+                                const Vec2 v{cellX0(vx), cellY0(vy)};
+                                shallow = near(p0, v) && near(p1, v) &&
+                                          !(g.blocked(vx - 1, vy - 1) && g.blocked(vx, vy - 1) &&
+                                            g.blocked(vx - 1, vy) && g.blocked(vx, vy));
+                            }
+                        if (!shallow)
+                            return true;
+                    }
                 }
                 for (int vy = l; vy <= l + 1; ++vy)
                     for (int vx = k; vx <= k + 1; ++vx)
                         if (isPinchVertex(vx, vy) &&
                             pointSegmentDistance2({cellX0(vx), cellY0(vy)}, a, b) <= pinchTol2)
-                            return true;
+                            return pinch = true;
                 return false;
             });
-        if (hit)
+        if (pinch || hit)
             return false;
-        // A segment lying on a grid line (up to kPinchTolerance cells: a segment within rounding of the line
+        // A segment lying on a grid line (up to the contact tolerance: a segment within rounding of the line
         // may not enter the open squares in floating point) needs a free cell on one side of each open edge
         // piece.
-        const double lineTol = kPinchTolerance * g.cellSize();
+        const double lineTol = tol_;
         if (std::abs(a.y - b.y) <= lineTol)
         {
             const int l = locateY(0.5 * (a.y + b.y) + 0.5 * g.cellSize());

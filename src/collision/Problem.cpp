@@ -5,12 +5,14 @@
 #include "mhplan/collision/RigidValidity.h"
 #include "mhplan/collision/Validity.h"
 
+#include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace ob = ompl::base;
@@ -57,6 +59,44 @@ namespace mhplan
                 throw InputError(where() + " is in collision (the robot overlaps an obstacle)");
         }
     } // namespace
+
+    std::string ValiditySetup::describe() const
+    {
+        if (!app())
+            return "exact";
+        std::ostringstream out;
+        out << "app (point checker, DiscreteMotionValidator at resolution " << resolution << ")";
+        return out.str();
+    }
+
+    ValiditySetup makeValiditySetup(const std::string &kind, double resolution)
+    {
+        ValiditySetup s;
+        if (kind == "exact")
+        {
+            if (!std::isnan(resolution))
+                throw InputError("a resolution belongs to the app set-up only; the exact set-up decides every "
+                                 "point of a motion (accepted: exact, or app with a resolution)");
+            return s;
+        }
+        if (kind != "app")
+            throw InputError("unknown set-up '" + kind +
+                             "'; accepted: exact (mhplan's exact checker and motion validator) or app (a point "
+                             "checker and OMPL's DiscreteMotionValidator at a resolution)");
+        s.kind = ValiditySetup::Kind::App;
+        if (!std::isnan(resolution))
+        {
+            if (!(resolution >= kMinAppResolution && resolution <= kMaxAppResolution))
+            {
+                std::ostringstream out;
+                out << "resolution " << resolution << " is out of range; accepted: " << kMinAppResolution
+                    << " to " << kMaxAppResolution << " (a fraction of the space's maximum extent)";
+                throw InputError(out.str());
+            }
+            s.resolution = resolution;
+        }
+        return s;
+    }
 
     void validateRigidQuery(const World &world, const Query &query, const RigidBodyModel &model)
     {
@@ -150,15 +190,25 @@ namespace mhplan
     namespace
     {
         og::SimpleSetupPtr makeRigidSetup(const World &world, const Query &query,
-                                          const SimpleSetupFactory &make)
+                                          const SimpleSetupFactory &make, const ValiditySetup &setup)
         {
             auto rigid = std::make_shared<const RigidBodyModel>(world);
             validateRigidQuery(world, query, *rigid);
             og::SimpleSetupPtr ss = make(makeStateSpace(world));
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-            si->setStateValidityChecker(std::make_shared<RigidValidityChecker>(si, rigid));
-            si->setMotionValidator(std::make_shared<CertifiedMotionValidator>(
-                si, rigid, world.space, world.turningRadius, motionResolution(world)));
+            if (setup.app())
+            {
+                si->setStateValidityChecker(std::make_shared<FunctionValidityChecker>(
+                    si, [rigid](const ob::State *s) { return rigid->isValid(statePose(s)); }));
+                si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+                si->setStateValidityCheckingResolution(setup.resolution);
+            }
+            else
+            {
+                si->setStateValidityChecker(std::make_shared<RigidValidityChecker>(si, rigid));
+                si->setMotionValidator(std::make_shared<CertifiedMotionValidator>(
+                    si, rigid, world.space, world.turningRadius, motionResolution(world)));
+            }
             ob::ScopedState<> start(ss->getStateSpace());
             ob::ScopedState<> goal(ss->getStateSpace());
             setStatePose(start.get(), {query.start.x, query.start.y, query.startYaw});
@@ -186,27 +236,37 @@ namespace mhplan
         }
     } // namespace
 
-    og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model)
+    og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model,
+                                       const ValiditySetup &setup)
     {
-        return makeSimpleSetup(world, query, model,
-                               [](const ob::StateSpacePtr &space)
-                               { return std::make_shared<og::SimpleSetup>(space); });
+        return makeSimpleSetup(
+            world, query, model,
+            [](const ob::StateSpacePtr &space) { return std::make_shared<og::SimpleSetup>(space); }, setup);
     }
 
     og::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query, const CollisionModelPtr &model,
-                                       const SimpleSetupFactory &make)
+                                       const SimpleSetupFactory &make, const ValiditySetup &setup)
     {
         if (world.isRigid())
         {
-            og::SimpleSetupPtr rigid = makeRigidSetup(world, query, make);
+            og::SimpleSetupPtr rigid = makeRigidSetup(world, query, make, setup);
             registerIntermediateCallback(rigid);
             return rigid;
         }
         validateQuery(world, query, *model);
         og::SimpleSetupPtr ss = make(makeStateSpace(world));
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-        si->setStateValidityChecker(std::make_shared<WorldValidityChecker>(si, model));
-        si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, model));
+        if (setup.app())
+        {
+            si->setStateValidityChecker(std::make_shared<PointValidityChecker>(si, model));
+            si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+            si->setStateValidityCheckingResolution(setup.resolution);
+        }
+        else
+        {
+            si->setStateValidityChecker(std::make_shared<WorldValidityChecker>(si, model));
+            si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, model));
+        }
         ob::ScopedState<> start(ss->getStateSpace());
         ob::ScopedState<> goal(ss->getStateSpace());
         start[0] = query.start.x;

@@ -8,10 +8,52 @@
 #include <ompl/geometric/SimpleSetup.h>
 
 #include <functional>
+#include <string>
 
 namespace mhplan
 {
     class RigidBodyModel;
+
+    /** \brief How a problem checks validity (docs/setups.md). Exact (the default): mhplan's
+        WorldValidityChecker and ExactMotionValidator over the world's collision model (SE(2)-based worlds:
+        RigidValidityChecker and CertifiedMotionValidator). App: as a user's OMPL program would, a plain point
+        checker (PointValidityChecker: the world's geometry queried point by point, no clearance, no segment
+        model) and OMPL's DiscreteMotionValidator at \c resolution, the space's longest-valid-segment
+        fraction (SpaceInformation::setStateValidityCheckingResolution). */
+    struct ValiditySetup
+    {
+        enum class Kind
+        {
+            Exact,
+            App
+        };
+        Kind kind{Kind::Exact};
+        /** \brief App only: the validity-checking resolution, a fraction of the space's maximum extent. */
+        double resolution{0.002};
+
+        bool app() const { return kind == Kind::App; }
+        /** \brief "exact" or "app". */
+        std::string name() const { return app() ? "app" : "exact"; }
+        /** \brief "exact" or "app (point checker, DiscreteMotionValidator at resolution R)". */
+        std::string describe() const;
+        bool operator==(const ValiditySetup &o) const
+        {
+            return kind == o.kind && (kind == Kind::Exact || resolution == o.resolution);
+        }
+        bool operator!=(const ValiditySetup &o) const { return !(*this == o); }
+    };
+
+    /** \brief The app set-up's default resolution: the one of OMPL's optimizing-planner tests. */
+    constexpr double kDefaultAppResolution = 0.002;
+    /** \brief Accepted app resolutions: [kMinAppResolution, kMaxAppResolution]. Finer than 1e-5 makes one
+        motion along the diagonal 10^5 checks; coarser than 0.5 checks little more than the end states. */
+    constexpr double kMinAppResolution = 1e-5;
+    constexpr double kMaxAppResolution = 0.5;
+
+    /** \brief The set-up named \e kind ("exact" or "app") with \e resolution (app only; NaN: the
+        default). Throws InputError naming what is accepted: an unknown kind, a resolution out of range, or a
+        resolution given with "exact". */
+    ValiditySetup makeValiditySetup(const std::string &kind, double resolution);
 
     /** \brief Throws InputError when the query's start or goal is out of the bounds or in collision (in an
         SE(2)-based world: the robot at the query's poses, checked by a RigidBodyModel built here; \e model is
@@ -40,7 +82,8 @@ namespace mhplan
         benchmark run registers its own: the problem definition, and so what OMPL's planners do, is the same
         in every command (RRT* skips samples equal to their nearest tree state only with a callback). */
     ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
-                                                    const CollisionModelPtr &model);
+                                                    const CollisionModelPtr &model,
+                                                    const ValiditySetup &setup = {});
 
     /** \brief Makes the SimpleSetup object (a subclass of it) over a state space. */
     using SimpleSetupFactory =
@@ -50,7 +93,8 @@ namespace mhplan
         benchmarks/README.md "Overhead"). */
     ompl::geometric::SimpleSetupPtr makeSimpleSetup(const World &world, const Query &query,
                                                     const CollisionModelPtr &model,
-                                                    const SimpleSetupFactory &make);
+                                                    const SimpleSetupFactory &make,
+                                                    const ValiditySetup &setup = {});
 
     /** \brief Euclidean length of a polyline (independent of OMPL's distance function). */
     double polylineLength(const std::vector<Vec2> &points);

@@ -82,7 +82,7 @@ namespace mhplan
     }
 
     RigidValidityChecker::RigidValidityChecker(const ob::SpaceInformationPtr &si, RigidBodyModelPtr model)
-        : ob::StateValidityChecker(si), model_(std::move(model))
+        : CountingStateValidityChecker(si), model_(std::move(model))
     {
         specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::BOUNDED_APPROXIMATE;
         specs_.hasValidDirectionComputation = false;
@@ -90,11 +90,13 @@ namespace mhplan
 
     bool RigidValidityChecker::isValid(const ob::State *state) const
     {
+        countCheck();
         return model_->isValid(statePose(state));
     }
 
     bool RigidValidityChecker::isValid(const ob::State *state, double &dist) const
     {
+        countCheck();
         const Pose2 p = statePose(state);
         dist = model_->clearance(p);
         return model_->inBounds(p) && dist >= 0.0;

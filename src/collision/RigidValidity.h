@@ -6,6 +6,7 @@
 #define MHPLAN_RIGID_VALIDITY_H
 
 #include "mhplan/collision/RigidBody.h"
+#include "mhplan/collision/Validity.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>
@@ -62,7 +63,7 @@ namespace mhplan
     /** \brief State validity of an SE(2)-based space from a RigidBodyModel: isValid (bounds and FCL's
        collision test) and clearance (FCL's distance minus the model's margin; bounds excluded, as
        CollisionModel). */
-    class RigidValidityChecker : public ompl::base::StateValidityChecker
+    class RigidValidityChecker : public CountingStateValidityChecker
     {
       public:
         RigidValidityChecker(const ompl::base::SpaceInformationPtr &si, RigidBodyModelPtr model);

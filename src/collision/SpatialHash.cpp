@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/collision/SpatialHash.h"
+#include "mhplan/collision/ContactRule.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,17 +116,11 @@ namespace mhplan
             return false;
         const std::size_t c = cell(cellX(p.x), cellY(p.y));
         for (std::uint32_t i = circleStart_[c]; i < circleStart_[c + 1]; ++i)
-            if (squaredNorm(p - circleItems_[i].center) < circleItems_[i].reach2)
+            if (contact::pointHitsCircle(p, circleItems_[i].center, circleItems_[i].reach, tol_))
                 return false;
         for (std::uint32_t i = polygonStart_[c]; i < polygonStart_[c + 1]; ++i)
-        {
-            const Polygon &poly = polygons_[polygonItems_[i]];
-            if (p.x < poly.bbox.xmin - radius_ || p.x > poly.bbox.xmax + radius_ ||
-                p.y < poly.bbox.ymin - radius_ || p.y > poly.bbox.ymax + radius_)
-                continue;
-            if (pointPolygonSignedDistance(p, poly.vertices) < radius_)
+            if (contact::pointHitsPolygon(p, polygons_[polygonItems_[i]], radius_, tol_))
                 return false;
-        }
         return true;
     }
 
@@ -133,17 +128,12 @@ namespace mhplan
                                                        const Box &sb) const
     {
         for (std::uint32_t i = circleStart_[c]; i < circleStart_[c + 1]; ++i)
-            if (pointSegmentDistance(circleItems_[i].center, a, b) < circleItems_[i].reach)
+            if (contact::segmentHitsCircle(a, b, circleItems_[i].center, circleItems_[i].reach, tol_))
                 return false;
         for (std::uint32_t i = polygonStart_[c]; i < polygonStart_[c + 1]; ++i)
         {
             const Polygon &poly = polygons_[polygonItems_[i]];
-            if (!sb.overlaps(poly.bbox))
-                continue;
-            const double d = segmentPolygonDistance(a, b, poly.vertices);
-            if (d < radius_)
-                return false;
-            if (d == 0.0 && radius_ == 0.0 && segmentEntersPolygonInterior(a, b, poly.vertices))
+            if (sb.overlaps(poly.bbox) && contact::segmentHitsPolygon(a, b, poly, radius_, tol_))
                 return false;
         }
         return true;

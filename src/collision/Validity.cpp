@@ -20,8 +20,22 @@ namespace mhplan
         s->values[1] = p.y;
     }
 
+    CheckCounts checkCounts(const ob::SpaceInformation &si)
+    {
+        CheckCounts c;
+        if (const auto *counting =
+                dynamic_cast<const CountingStateValidityChecker *>(si.getStateValidityChecker().get()))
+        {
+            c.state = counting->checkCount();
+            c.haveState = true;
+        }
+        if (const ob::MotionValidatorPtr &mv = si.getMotionValidator())
+            c.motion = mv->getCheckedMotionCount();
+        return c;
+    }
+
     WorldValidityChecker::WorldValidityChecker(const ob::SpaceInformationPtr &si, CollisionModelPtr model)
-        : ob::StateValidityChecker(si), model_(std::move(model))
+        : CountingStateValidityChecker(si), model_(std::move(model))
     {
         specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::EXACT;
         specs_.hasValidDirectionComputation = false;
@@ -29,11 +43,13 @@ namespace mhplan
 
     bool WorldValidityChecker::isValid(const ob::State *state) const
     {
+        countCheck();
         return model_->isValid(statePosition(state));
     }
 
     bool WorldValidityChecker::isValid(const ob::State *state, double &dist) const
     {
+        countCheck();
         const Vec2 p = statePosition(state);
         dist = model_->clearance(p);
         return model_->inBounds(p) && dist >= 0.0;
@@ -42,6 +58,29 @@ namespace mhplan
     double WorldValidityChecker::clearance(const ob::State *state) const
     {
         return model_->clearance(statePosition(state));
+    }
+
+    PointValidityChecker::PointValidityChecker(const ob::SpaceInformationPtr &si, CollisionModelPtr model)
+        : CountingStateValidityChecker(si), model_(std::move(model))
+    {
+    }
+
+    bool PointValidityChecker::isValid(const ob::State *state) const
+    {
+        countCheck();
+        return model_->isValid(statePosition(state));
+    }
+
+    FunctionValidityChecker::FunctionValidityChecker(const ob::SpaceInformationPtr &si,
+                                                     std::function<bool(const ob::State *)> fn)
+        : CountingStateValidityChecker(si), fn_(std::move(fn))
+    {
+    }
+
+    bool FunctionValidityChecker::isValid(const ob::State *state) const
+    {
+        countCheck();
+        return fn_(state);
     }
 
     ExactMotionValidator::ExactMotionValidator(const ob::SpaceInformationPtr &si, CollisionModelPtr model)
