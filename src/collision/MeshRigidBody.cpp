@@ -238,6 +238,11 @@ namespace mhplan
 
     og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec)
     {
+        return makeMeshSetup(spec, nullptr);
+    }
+
+    og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec, const SimpleSetupFactory &make)
+    {
         const bool planar = spec.model->planar();
         ob::StateSpacePtr space;
         if (planar)
@@ -264,7 +269,7 @@ namespace mhplan
             se3->setBounds(b);
             space = se3;
         }
-        auto ss = std::make_shared<og::SimpleSetup>(space);
+        const og::SimpleSetupPtr ss = make ? make(space) : std::make_shared<og::SimpleSetup>(space);
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
         ss->setStateValidityChecker(std::make_shared<MeshValidityChecker>(si, spec.model));
         si->setStateValidityCheckingResolution(spec.longestValidSegmentFraction);

@@ -6,6 +6,7 @@
 #define MHPLAN_MESH_RIGID_BODY_H
 
 #include "mhplan/collision/Mesh.h"
+#include "mhplan/collision/Problem.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>
@@ -153,6 +154,9 @@ namespace mhplan
         start and goal (refused, InputError, when invalid), objective; its space information is set up, the
         planner and SimpleSetup::setup() are left to the caller. */
     ompl::geometric::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec);
+    /** \brief makeMeshSetup, configuring the object \e make returns (a campaign's runs use a subclass). */
+    ompl::geometric::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec,
+                                                  const SimpleSetupFactory &make);
 
     /** \brief Write a pose into a state of the SE(2) (heading from the orientation about +z) or SE(3) space.
      */

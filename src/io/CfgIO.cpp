@@ -2,6 +2,7 @@
 #include "mhplan/io/CfgIO.h"
 
 #include "mhplan/base/World.h"
+#include "mhplan/io/InputFile.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -389,18 +390,19 @@ namespace mhplan
 
     CfgProblem loadCfg(const std::string &path)
     {
-        std::ifstream in(path);
-        if (!in)
-            throw InputError(path + ": no such file or cannot read it");
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        return parseCfg(ss.str(), path);
+        // Only a regular file, at most kMaxCfgBytes (a FIFO or /dev/zero is refused, never read).
+        return parseCfg(readInputFile(path, kMaxCfgBytes, "problem file"), path);
     }
 
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits)
     {
+        return loadCfgProblem(loadCfg(path), limits);
+    }
+
+    LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits)
+    {
         LoadedCfgProblem out;
-        out.cfg = loadCfg(path);
+        out.cfg = std::move(cfg);
         const CfgProblem &c = out.cfg;
         TriangleMesh world, robot;
         try

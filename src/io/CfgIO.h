@@ -85,7 +85,10 @@ namespace mhplan
         a partial volume, an SE(3) pose with only some of its z and axis keys, a zero rotation axis. */
     CfgProblem parseCfg(const std::string &text, const std::string &fileName);
 
-    /** \brief Read and parse a .cfg file. */
+    /** \brief The largest .cfg file read: 4 MiB (OMPL.app's are a few hundred bytes). */
+    constexpr std::size_t kMaxCfgBytes = std::size_t{4} << 20;
+
+    /** \brief Read and parse a .cfg file (a regular file of at most kMaxCfgBytes). */
     CfgProblem loadCfg(const std::string &path);
 
     /** \brief The problem with its meshes read: the OMPL set-up's specification. The volume, when the file
@@ -97,6 +100,8 @@ namespace mhplan
         MeshProblemSpec spec;
     };
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits = {});
+    /** \brief The same for a problem already parsed (parseCfg). */
+    LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits = {});
 } // namespace mhplan
 
 #endif
