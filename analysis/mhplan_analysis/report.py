@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import db as dbmod  # noqa: E402
-from . import comparisons, movingai, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
+from . import comparisons, meshes, movingai, paper_tables, papers, quality, scaling, simulations, stats, worlds  # noqa: E402
 
 # (key, candidate run columns in order of preference, axis label). The first column present is used.
 ATTRIBUTES = [
@@ -372,6 +372,8 @@ def _footprint(ax, world, pose, color, gid, alpha=0.12):
 
 def path_figure(database, exp, paths, world_file, outdir, colors):
     """The world with each planner's best and median exact path."""
+    if dbmod.experiment_value(exp, "world_type") == "omplapp":  # OMPL.app problems: meshes.py
+        return meshes.path_figure(database, exp, paths, world_file, outdir, colors, path_figure)
     if not world_file or not os.path.exists(world_file):
         return None, "world file %s not found" % (world_file or "(not recorded)")
     try:

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan plan PROBLEM.cfg and mhplan bench PROBLEM.cfg: OMPL.app's problem files (docs/omplapp.md). */
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/CfgDraw.h"
 #include "mhplan/cli/Commands.h"
+#include "mhplan/draw/Svg.h"
 
 #include "mhplan/io/CfgIO.h"
 #include "mhplan/registry/Registry.h"
@@ -126,7 +128,9 @@ namespace mhplan::cli
 
     int cmdPlanCfg(const Argv &argv)
     {
-        const Args args("plan", argv, {{"planner", "time", "seed", "validator", "path"}, {"set"}, {"quiet"}});
+        const Args args("plan", argv,
+                        {{"planner", "time", "seed", "validator", "path", "svg"}, {"set"}, {"quiet"}});
+        checkOutputFile(args, "svg");
         const std::uint_fast32_t seed = seedFromArgs(args);
         if (args.positional().size() != 1)
             throw InputError("mhplan plan: expected one PROBLEM.cfg");
@@ -181,6 +185,8 @@ namespace mhplan::cli
                   << std::setprecision(6) << "time:      " << seconds << " s\n";
         if (!ss->haveSolutionPath())
         {
+            if (args.has("svg"))
+                writeTextFile(args.get("svg"), cfgProblemSvg(p, si, nullptr));
             std::cout << "no path\n";
             return 3;
         }
@@ -195,6 +201,11 @@ namespace mhplan::cli
                   << "path:      " << path.getStateCount() << " states\n";
         if (!args.has("quiet"))
             path.printAsMatrix(std::cout);
+        if (args.has("svg"))
+        {
+            writeTextFile(args.get("svg"), cfgProblemSvg(p, si, &path));
+            std::cout << "svg:       " << args.get("svg") << "\n";
+        }
         if (args.has("path"))
         {
             std::ofstream out(args.get("path"));
