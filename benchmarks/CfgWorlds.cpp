@@ -107,7 +107,11 @@ namespace mhplan::bench::detail
         e.worldName = cfg.name;
         e.query = "cfg";
         e.runs = campaign.runs;
-        e.skipped = inapplicablePlanners(campaign, cfg.se3 ? cap::SE3 : cap::SE2, index, cfg.name);
+        const unsigned space = cfg.se3                    ? cap::SE3
+                               : cfg.car == "dubins"      ? cap::Dubins
+                               : cfg.car == "reeds_shepp" ? cap::ReedsShepp
+                                                          : cap::SE2;
+        e.skipped = inapplicablePlanners(campaign, space, index, cfg.name);
         if (!names.insert(e.name).second)
             throw InputError(where + "experiment '" + e.name +
                              "' appears twice (two problems of that name, or the file listed twice)");
@@ -151,10 +155,15 @@ namespace mhplan::bench::detail
             clearance = std::min(
                 clearance, xs.mesh->spec.model->clearance(xs.mesh->spec.model->placement(path.getState(i))));
         run["waypoint clearance REAL"] = num(clearance);
+        // A car's path is stored as driven: its curve sampled every eighth of the turning radius.
+        og::PathGeometric driven(path);
+        if (!xs.mesh->cfg.car.empty())
+            driven.interpolate(static_cast<unsigned>(
+                std::min(1e5, std::ceil(8.0 * path.length() / xs.mesh->cfg.turningRadius) + 1.0)));
         std::string out;
-        for (std::size_t i = 0; i < path.getStateCount(); ++i)
+        for (std::size_t i = 0; i < driven.getStateCount(); ++i)
         {
-            const ob::State *s = path.getState(i);
+            const ob::State *s = driven.getState(i);
             if (xs.mesh->cfg.se3)
             {
                 const auto *p = s->as<ob::SE3StateSpace::StateType>();
@@ -178,7 +187,9 @@ namespace mhplan::bench::detail
         parameters["world TEXT"] = p.cfg.name;
         parameters["world_file TEXT"] = fs::absolute(xs.experiment->worldFile).lexically_normal().string();
         parameters["world_type TEXT"] = "omplapp";
-        parameters["space TEXT"] = p.cfg.se3 ? "se3" : "se2";
+        parameters["space TEXT"] = p.cfg.se3 ? "se3" : (p.cfg.car.empty() ? "se2" : p.cfg.car);
+        if (!p.cfg.car.empty())
+            parameters["turning_radius REAL"] = num(p.cfg.turningRadius);
         parameters["environment_mesh TEXT"] = fs::absolute(p.cfg.world).lexically_normal().string();
         parameters["robot_mesh TEXT"] = fs::absolute(p.cfg.robot).lexically_normal().string();
         parameters["obstacle_count INTEGER"] = std::to_string(model.environmentShape().triangleCount());

@@ -67,6 +67,14 @@ namespace mhplan::cli
             return planner;
         }
 
+        /** "SE(2)", "SE(3)", "Dubins" or "Reeds-Shepp": the problem's state space. */
+        std::string spaceLabel(const CfgProblem &cfg)
+        {
+            if (cfg.se3)
+                return "SE(3)";
+            return cfg.car == "dubins" ? "Dubins" : cfg.car == "reeds_shepp" ? "Reeds-Shepp" : "SE(2)";
+        }
+
         /** The dense check's step: 1e-3 of the volume's diagonal (x, y, and z for SE(3)). */
         double denseStep(const LoadedCfgProblem &p)
         {
@@ -165,7 +173,7 @@ namespace mhplan::cli
         if (!(timeLimit > 0.0))
             throw InputError("mhplan plan: --time must be > 0 seconds");
         const auto &volume = p.spec.volume;
-        std::cout << "problem:   " << p.cfg.name << " (" << (p.cfg.se3 ? "SE(3)" : "SE(2)") << ", "
+        std::cout << "problem:   " << p.cfg.name << " (" << spaceLabel(p.cfg) << ", "
                   << p.spec.model->environmentShape().triangleCount() << " environment triangles, "
                   << p.spec.model->robotShape().triangleCount() << " robot triangles, robot reach "
                   << p.spec.model->reach() << ")\n"
@@ -194,7 +202,7 @@ namespace mhplan::cli
         long contact = -1;
         const std::size_t poses = denseMeshPathCheck(*p.spec.model, *si, path, denseStep(p), contact);
         std::cout << std::setprecision(9) << "cost:      " << path.length() << " (path length in the "
-                  << (p.cfg.se3 ? "SE(3)" : "SE(2)") << " metric)\n"
+                  << spaceLabel(p.cfg) << " metric)\n"
                   << "valid:     " << (contact < 0 ? "yes" : "NO (motion " + std::to_string(contact) + ")")
                   << " (independent dense check: " << poses << " poses, robot points at most " << denseStep(p)
                   << " apart)\n"
@@ -315,8 +323,8 @@ namespace mhplan::cli
         request.displayProgress = !args.has("no-progress");
         request.simplify = cfg.simplify;
         request.saveConsoleOutput = false;
-        std::cout << "problem:  " << cfg.name << " (" << (cfg.se3 ? "SE(3)" : "SE(2)") << ") seed " << seed
-                  << ", " << names.size() << " planners x " << runs << " runs x " << timeLimit << " s\n";
+        std::cout << "problem:  " << cfg.name << " (" << spaceLabel(cfg) << ") seed " << seed << ", "
+                  << names.size() << " planners x " << runs << " runs x " << timeLimit << " s\n";
         benchmark.benchmark(request);
         if (!benchmark.saveResultsToFile(log.string().c_str()))
             throw std::runtime_error("cannot write " + log.string());

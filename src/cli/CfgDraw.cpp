@@ -62,7 +62,8 @@ namespace mhplan::cli
         for (std::size_t i = 0; i + 1 < count; ++i)
         {
             const ob::State *a = path.getState(i), *b = path.getState(i + 1);
-            const double n = std::max(1.0, std::min(1e4, std::ceil(meshMotionBound(model, a, b) / step)));
+            const double n = std::max(
+                1.0, std::min(1e4, std::ceil(meshMotionBound(model, *si->getStateSpace(), a, b) / step)));
             for (double k = 0; k < n; ++k)
             {
                 si->getStateSpace()->interpolate(a, b, k / n, s.get());
@@ -133,10 +134,14 @@ namespace mhplan::cli
         {
             for (const auto &pose : footprintPlacements(model, si, *path))
                 footprint(pose, "#d62728", "footprint", 0.12);
+            og::PathGeometric driven(*path); // a car's curve, sampled every eighth of the turning radius
+            if (!p.cfg.car.empty())
+                driven.interpolate(static_cast<unsigned>(
+                    std::min(1e5, std::ceil(8.0 * path->length() / p.cfg.turningRadius) + 1.0)));
             svg << "<polyline class=\"path\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\" points=\"";
-            for (std::size_t i = 0; i < path->getStateCount(); ++i)
+            for (std::size_t i = 0; i < driven.getStateCount(); ++i)
             {
-                const auto [x, y] = at(model.placement(path->getState(i)).translation());
+                const auto [x, y] = at(model.placement(driven.getState(i)).translation());
                 svg << x << "," << y << " ";
             }
             svg << "\"/>\n";
@@ -197,7 +202,10 @@ namespace mhplan::cli
         {
             const Eigen::AlignedBox3d &v = p.spec.volume;
             out.beginObject().field("name", p.cfg.name).field("file", p.cfg.file);
-            out.field("space", p.cfg.se3 ? "se3" : "se2").field("robot_reach", p.spec.model->reach());
+            out.field("space", p.cfg.se3 ? "se3" : (p.cfg.car.empty() ? "se2" : p.cfg.car));
+            out.field("robot_reach", p.spec.model->reach());
+            if (!p.cfg.car.empty())
+                out.field("turning_radius", p.cfg.turningRadius);
             out.key("volume").beginObject();
             out.key("min").beginArray().value(v.min().x()).value(v.min().y()).value(v.min().z()).endArray();
             out.key("max").beginArray().value(v.max().x()).value(v.max().y()).value(v.max().z()).endArray();

@@ -52,6 +52,10 @@ namespace mhplan
         std::string objective{"length"};
         double objectiveThreshold{std::numeric_limits<double>::quiet_NaN()};
         double threshold{1e-6};
+        /** \brief statespace = dubins or reedsshepp (SE(2) problems): "dubins" or "reeds_shepp", turning with
+            turningradius (default 1, OMPL's); empty: a rigid body in SE(2)/SE(3). */
+        std::string car;
+        double turningRadius{1.0};
         /** \brief mhplan's keys: motion_validator (certified, discrete) and resolution. */
         std::string motionValidator{"certified"};
         double resolution{std::numeric_limits<double>::quiet_NaN()};
