@@ -155,7 +155,8 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
         for ax, (_, h, v) in zip(axes, views):
             _draw_triangles(ax, placed(robot, pose), h, v, facecolor=color, edgecolor=color, linewidth=0.5, alpha=0.35, zorder=5)
     what = "orthographic projections" if se3 else "seen from above"
-    title = "%s (%s, %s): best (solid) and median (dashed) paths" % (exp.name, prob["space"].upper(), what)
+    label = {"se2": "SE(2)", "se3": "SE(3)", "dubins": "Dubins car", "reeds_shepp": "Reeds-Shepp car"}.get(prob["space"], prob["space"])
+    title = "%s (%s, %s): best (solid) and median (dashed) paths" % (exp.name, label, what)
     if footprints:
         title += "; the robot along each best path"
     if thinned > 1:

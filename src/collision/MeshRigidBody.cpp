@@ -99,6 +99,16 @@ namespace mhplan
         return translation + model.reach() * angle;
     }
 
+    namespace
+    {
+        /** A car's space: OMPL interpolates along its Dubins or Reeds-Shepp curve. */
+        bool isCarSpace(const ob::StateSpace &space)
+        {
+            return dynamic_cast<const ob::DubinsStateSpace *>(&space) != nullptr ||
+                   dynamic_cast<const ob::ReedsSheppStateSpace *>(&space) != nullptr;
+        }
+    } // namespace
+
     double meshMotionBound(const MeshRigidModel &model, const ob::StateSpace &space, const ob::State *s1,
                            const ob::State *s2)
     {
@@ -146,8 +156,7 @@ namespace mhplan
         const double bound = meshMotionBound(*model_, *si_->getStateSpace(), s1, s2);
         // A car's curve may leave the bounds between its ends: the position's distance to the bounds counts
         // as a clearance too (the position moves no faster than the bound allows, docs/meshes.md).
-        const bool curved = std::dynamic_pointer_cast<ob::DubinsStateSpace>(si_->getStateSpace()) ||
-                            std::dynamic_pointer_cast<ob::ReedsSheppStateSpace>(si_->getStateSpace());
+        const bool curved = isCarSpace(*si_->getStateSpace());
         ob::State *pose = si_->allocState();
         double t = 0.0;
         double certified = 0.0;
@@ -202,8 +211,7 @@ namespace mhplan
                 // A planner takes the motion s1 -> lastValid.first as valid. On a car's space that motion is
                 // the shortest curve between them, which need not be the prefix just certified: it is
                 // certified on its own, halving t until it is (or t is 0).
-                const bool curved = std::dynamic_pointer_cast<ob::DubinsStateSpace>(si_->getStateSpace()) ||
-                                    std::dynamic_pointer_cast<ob::ReedsSheppStateSpace>(si_->getStateSpace());
+                const bool curved = isCarSpace(*si_->getStateSpace());
                 for (int halving = 0; curved && t > 0.0 && certify(s1, lastValid.first) < 1.0; ++halving)
                 {
                     t = halving < 30 ? 0.5 * t : 0.0;
