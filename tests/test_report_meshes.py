@@ -58,6 +58,7 @@ class MeshPictures(unittest.TestCase):
         name, size = self.figure("passage.cfg", "passage", [path, path])
         self.assertEqual(name, "paths_passage.png")
         self.assertGreater(size, 10000)
+        self.assertEqual(report.path_figure.footprints, 0)  # the 2D footprint paragraph does not apply
 
     def test_missing_problem_file_is_a_note(self):
         exp = dbmod.Experiment(1, "gone", {"world_type": "omplapp"})

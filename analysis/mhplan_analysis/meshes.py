@@ -158,7 +158,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
     label = {"se2": "SE(2)", "se3": "SE(3)", "dubins": "Dubins car", "reeds_shepp": "Reeds-Shepp car"}.get(prob["space"], prob["space"])
     title = "%s (%s, %s): best (solid) and median (dashed) paths" % (exp.name, label, what)
     if footprints:
-        title += "; the robot along each best path"
+        title += "; the robot at six poses along each best path" if se3 else "; the robot along each best path"
     if thinned > 1:
         title += "; every %d-th environment triangle drawn" % thinned
     fig.suptitle(title, fontsize=10)
@@ -170,5 +170,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
     fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     if owner is not None:
-        owner.footprints = footprints
+        # The report's paragraph on footprints states the 2D rule (1.5 reaches, 30 degrees): SE(2) only; an
+        # SE(3) figure says in its title that it shows the robot at six poses.
+        owner.footprints = 0 if se3 else footprints
     return os.path.basename(path), None if drawn else "no saved exact paths"
