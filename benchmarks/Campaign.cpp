@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "mhplan/bench/Campaign.h"
 #include "mhplan/bench/CampaignSetups.h"
+#include "mhplan/bench/CfgWorlds.h"
 #include "mhplan/bench/MovingAIWorlds.h"
 
 #include "mhplan/collision/Collision.h"
@@ -156,6 +157,10 @@ namespace mhplan::bench
                     if (!why.empty())
                         p.refusals[flag] = why;
                 }
+                // SE(3): the OMPL.app problems of {cfg: FILE} entries.
+                const std::string se3 = registry.whyNotApplicable(p.planner, cap::SE3, "SE(3) problems");
+                if (!se3.empty())
+                    p.refusals[cap::SE3] = se3;
                 if (p.displayName.empty())
                     p.displayName = p.planner;
                 if (!plainName(p.displayName))
@@ -276,6 +281,8 @@ namespace mhplan::bench
                     w.world = r.nonEmptyText(n[i], field);
                 else if (n[i].IsMap() && n[i]["map"].IsDefined())
                     detail::readMovingAIWorld(r, n[i], field, w);
+                else if (n[i].IsMap() && n[i]["cfg"].IsDefined())
+                    detail::readCfgWorld(r, n[i], field, w);
                 else
                 {
                     r.allowKeys(n[i], field, {"world", "queries", "generate", "name", "setup"});
@@ -429,11 +436,12 @@ namespace mhplan::bench
             const bool app = std::any_of(c.setups.begin(), c.setups.end(),
                                          [](const ValiditySetup &s) { return s.app(); });
             for (std::size_t i = 0; app && i < c.worlds.size(); ++i)
-                if (!c.worlds[i].scen.empty())
+                if (!c.worlds[i].scen.empty() || !c.worlds[i].cfg.empty())
                     r.fail(root["setup"], "setup",
-                           "worlds[" + std::to_string(i) +
-                               "] is a MovingAI set, which runs the exact set-up only; give the app set-up to "
-                               "the other world entries (their key setup) instead");
+                           "worlds[" + std::to_string(i) + "] is " +
+                               (c.worlds[i].cfg.empty() ? "a MovingAI set" : "an OMPL.app problem") +
+                               ", which runs the exact set-up only; give the app set-up to the other world "
+                               "entries (their key setup) instead");
             if (!root["planners"].IsDefined())
                 r.fail(root, "planners", "missing");
             readPlanners(r, root["planners"], c, registry);
@@ -500,49 +508,42 @@ namespace mhplan::bench
         return out;
     }
 
-    std::vector<Experiment> enumerateExperiments(const Campaign &campaign, const WorldResolver &resolve)
+    namespace
     {
-        // Everything that shapes every experiment's results, hashed into each experiment's fingerprint.
-        std::ostringstream common;
-        common.precision(17);
-        common << "time " << campaign.timeLimit << "\nmemory " << campaign.memoryLimit << "\nruns "
-               << campaign.runs << "\nseed " << campaign.seed << "\ninterval " << campaign.progressInterval
-               << "\ncollision " << campaign.collision << "\nplanner data " << campaign.plannerData << "\n";
-        if (campaign.cpuTimeLimit) // absent for wall-clock limits: older logs keep their fingerprints
-            common << "time limit kind cpu\n";
-        if (campaign.wallLimit > 0.0) // absent by default, likewise
-            common << "wall limit " << campaign.wallLimit << "\n";
-        for (const auto &p : campaign.planners)
+        /** Everything that shapes every experiment's results, hashed into each experiment's fingerprint. */
+        std::string commonFingerprintText(const Campaign &campaign)
         {
-            common << "planner " << p.displayName << " " << p.planner;
-            for (const auto &kv : p.params)
-                common << " " << kv.first << "=" << kv.second;
-            for (const auto &name : p.progress)
-                common << " progress:" << name;
-            if (p.runs > 0)
-                common << " runs:" << p.runs;
-            common << "\n";
+            std::ostringstream common;
+            common.precision(17);
+            common << "time " << campaign.timeLimit << "\nmemory " << campaign.memoryLimit << "\nruns "
+                   << campaign.runs << "\nseed " << campaign.seed << "\ninterval "
+                   << campaign.progressInterval << "\ncollision " << campaign.collision << "\nplanner data "
+                   << campaign.plannerData << "\n";
+            if (campaign.cpuTimeLimit) // absent for wall-clock limits: older logs keep their fingerprints
+                common << "time limit kind cpu\n";
+            if (campaign.wallLimit > 0.0) // absent by default, likewise
+                common << "wall limit " << campaign.wallLimit << "\n";
+            for (const auto &p : campaign.planners)
+            {
+                common << "planner " << p.displayName << " " << p.planner;
+                for (const auto &kv : p.params)
+                    common << " " << kv.first << "=" << kv.second;
+                for (const auto &name : p.progress)
+                    common << " progress:" << name;
+                if (p.runs > 0)
+                    common << " runs:" << p.runs;
+                common << "\n";
+            }
+            return common.str();
         }
 
-        std::vector<Experiment> out;
-        std::set<std::string> names;
-        const fs::path base = fs::path(campaign.file).parent_path();
-        const auto locate = [&](const std::string &arg)
+        using Locate = std::function<std::string(const std::string &)>;
+
+        /** The world file of entry \e wi: generated now, or found with \e locate; loaded (its bytes in
+            \e text). Errors name the campaign file and the entry. */
+        World loadCampaignWorld(const Campaign &campaign, const WorldSpec &spec, std::size_t wi,
+                                const Locate &locate, std::string &file, std::string &text)
         {
-            const fs::path relative = base / arg;
-            if (!fs::path(arg).is_absolute() && fs::is_regular_file(relative))
-                return relative.string();
-            return resolve(arg);
-        };
-        for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
-        {
-            const WorldSpec &spec = campaign.worlds[wi];
-            if (!spec.scen.empty())
-            {
-                detail::appendMovingAIExperiments(campaign, spec, wi, locate, common.str(), names, out);
-                continue;
-            }
-            std::string file;
             try
             {
                 file = spec.generated.present
@@ -556,38 +557,20 @@ namespace mhplan::bench
                     spec.generated.present ? ":" + std::to_string(spec.generated.line) : "";
                 throw InputError(campaign.file + line + ": worlds[" + std::to_string(wi) + "]: " + e.what());
             }
-            World world;
-            std::string worldText; // the bytes parsed: hashed once for all the world's queries
             try
             {
-                world = loadWorld(file, &worldText);
+                return loadWorld(file, &text);
             }
             catch (const InputError &e)
             {
                 throw InputError(campaign.file + ": worlds[" + std::to_string(wi) + "]: " + e.what());
             }
-            // A planner that cannot run on the world's space: refused here, before anything runs, or skipped.
-            std::vector<std::size_t> skipped;
-            for (std::size_t pi = 0; pi < campaign.planners.size(); ++pi)
-            {
-                const PlannerSpec &p = campaign.planners[pi];
-                const auto refusal = p.refusals.find(spaceFlag(world.space));
-                if (refusal == p.refusals.end())
-                    continue;
-                if (!campaign.skipInapplicable)
-                    throw InputError(campaign.file + ":" + std::to_string(p.line) + ": planners[" +
-                                     std::to_string(pi) + "] (" + p.displayName + ") on worlds[" +
-                                     std::to_string(wi) + "] '" + world.name + "': " + refusal->second +
-                                     "; remove the pair, or add 'skip_inapplicable: true' to the campaign to "
-                                     "skip such pairs (benchmarks/README.md)");
-                skipped.push_back(pi);
-            }
-            const CollisionModelPtr model =
-                makeCollisionModel(world, parseCollisionBackend(campaign.collision));
-            // An SE(2)-based world's robot model, built once for all its queries (validateQuery would build
-            // one per query).
-            const std::unique_ptr<const RigidBodyModel> rigid =
-                world.isRigid() ? std::make_unique<const RigidBodyModel>(world) : nullptr;
+        }
+
+        /** The queries of \e world that entry \e spec selects (all when it names none), in its order. */
+        std::vector<const Query *> selectedQueries(const Campaign &campaign, const World &world,
+                                                   const WorldSpec &spec, const std::string &file)
+        {
             std::vector<const Query *> queries;
             if (spec.queries.empty())
                 for (const auto &q : world.queries)
@@ -606,6 +589,27 @@ namespace mhplan::bench
             if (queries.empty())
                 throw InputError(campaign.file + ": world '" + world.name + "' (" + file +
                                  ") has no queries");
+            return queries;
+        }
+
+        /** One experiment per selected query of the world of entry \e wi. */
+        void appendWorldExperiments(const Campaign &campaign, const WorldSpec &spec, std::size_t wi,
+                                    const Locate &locate, const std::string &common,
+                                    std::set<std::string> &names, std::vector<Experiment> &out)
+        {
+            std::string file;
+            std::string worldText; // the bytes parsed: hashed once for all the world's queries
+            const World world = loadCampaignWorld(campaign, spec, wi, locate, file, worldText);
+            // A planner that cannot run on the world's space: refused here, before anything runs, or skipped.
+            const std::vector<std::size_t> skipped =
+                detail::inapplicablePlanners(campaign, spaceFlag(world.space), wi, world.name);
+            const CollisionModelPtr model =
+                makeCollisionModel(world, parseCollisionBackend(campaign.collision));
+            // An SE(2)-based world's robot model, built once for all its queries (validateQuery would build
+            // one per query).
+            const std::unique_ptr<const RigidBodyModel> rigid =
+                world.isRigid() ? std::make_unique<const RigidBodyModel>(world) : nullptr;
+            const std::vector<const Query *> queries = selectedQueries(campaign, world, spec, file);
             // Experiment names go into OMPL's logs, whose reader keeps only the last word of a name with
             // blanks ("lab one" and "hall one" would both become "one"): such names are refused.
             if (!plainName(world.name))
@@ -613,7 +617,7 @@ namespace mhplan::bench
                                  world.name + "' (" + file +
                                  ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
             Fingerprint prefix;
-            prefix.add(common.str());
+            prefix.add(common);
             prefix.add("world ");
             prefix.add(worldText);
             const std::string inputHash = fingerprint(worldText);
@@ -665,7 +669,11 @@ namespace mhplan::bench
             }
         }
 
-        for (std::size_t si = 0; si < campaign.simulations.size(); ++si)
+        /** The experiment of simulation entry \e si: its scenario found (relative to the campaign, else a
+            shipped one) and loaded. */
+        void appendSimulationExperiment(const Campaign &campaign, std::size_t si, const Locate &locate,
+                                        const WorldResolver &resolve, std::set<std::string> &names,
+                                        std::vector<Experiment> &out)
         {
             const SimulationSpec &spec = campaign.simulations[si];
             const std::string where = campaign.file + ":" + std::to_string(spec.line) + ": simulations[" +
@@ -730,7 +738,49 @@ namespace mhplan::bench
             e.inputHash = fingerprint(scenarioText);
             out.push_back(std::move(e));
         }
+    } // namespace
+
+    std::vector<Experiment> enumerateExperiments(const Campaign &campaign, const WorldResolver &resolve)
+    {
+        const std::string common = commonFingerprintText(campaign);
+        const fs::path base = fs::path(campaign.file).parent_path();
+        const Locate locate = [&](const std::string &arg)
+        {
+            const fs::path relative = base / arg;
+            if (!fs::path(arg).is_absolute() && fs::is_regular_file(relative))
+                return relative.string();
+            return resolve(arg);
+        };
+        std::vector<Experiment> out;
+        std::set<std::string> names;
+        for (std::size_t wi = 0; wi < campaign.worlds.size(); ++wi)
+        {
+            const WorldSpec &spec = campaign.worlds[wi];
+            if (!spec.scen.empty())
+                detail::appendMovingAIExperiments(campaign, spec, wi, locate, common, names, out);
+            else if (!spec.cfg.empty())
+                detail::appendCfgExperiment(campaign, spec, wi, locate, common, names, out);
+            else
+                appendWorldExperiments(campaign, spec, wi, locate, common, names, out);
+        }
+        for (std::size_t si = 0; si < campaign.simulations.size(); ++si)
+            appendSimulationExperiment(campaign, si, locate, resolve, names, out);
         return out;
+    }
+
+    std::string inputFingerprint(const Experiment &e)
+    {
+        const std::string &file = e.simulation == Experiment::kNoSimulation ? e.worldFile : e.scenarioFile;
+        try
+        {
+            if (e.cfg)
+                return detail::readCfgInputs(file).hash;
+            return fingerprint(readInputFile(file, kMaxGridFileBytes, "input file"));
+        }
+        catch (const InputError &)
+        {
+            return "(unreadable)";
+        }
     }
 
     std::uint32_t simulationRunSeed(const Experiment &experiment, const std::string &displayName,

@@ -67,6 +67,9 @@ namespace mhplan::bench
         /** \brief The entry's set-ups (key setup; docs/setups.md): every query runs once per set-up; empty:
             the campaign's. */
         std::vector<ValiditySetup> setups;
+        /** \brief An OMPL.app problem file {cfg: FILE} (docs/omplapp.md), as written (relative to the
+           campaign file); then \c world is empty and the entry is one experiment on the problem's meshes. */
+        std::string cfg;
     };
 
     /** \brief One controller configuration of a simulation experiment (Controllers.h). */
@@ -212,6 +215,9 @@ namespace mhplan::bench
         /** \brief For a simulation experiment: the scenario file and the scenario's name. */
         std::string scenarioFile;
         std::string scenarioName;
+        /** \brief An OMPL.app problem ({cfg: FILE}): \c worldFile is the .cfg file, \c worldName its
+           problem's name; its meshes are part of configHash and inputHash. */
+        bool cfg{false};
         /** \brief Runs per planner or controller. */
         unsigned int runs{0};
         /** \brief deriveSeed(campaign seed, name, 0) (simulations: their own seed when given). */
@@ -231,6 +237,11 @@ namespace mhplan::bench
             return std::find(skipped.begin(), skipped.end(), planner) != skipped.end();
         }
     };
+
+    /** \brief The fingerprint of experiment \e e's input files as they are now (Experiment::inputHash):
+        the world or scenario file's bytes; for an OMPL.app problem the .cfg file's and both meshes'. A file
+        that cannot be read gives "(unreadable)". */
+    std::string inputFingerprint(const Experiment &e);
 
     /** \brief The query of planning experiment \e e on its \e world: a MovingAI problem's start and goal,
        else the world's query of that name. */

@@ -419,15 +419,7 @@ namespace mhplan::bench
             auto it = inputNow.find(file);
             if (it == inputNow.end())
             {
-                std::string hash = "(unreadable)";
-                try
-                {
-                    hash = fingerprint(readInputFile(file, kMaxGridFileBytes, "input file"));
-                }
-                catch (const InputError &)
-                {
-                }
-                it = inputNow.emplace(file, hash).first;
+                it = inputNow.emplace(file, inputFingerprint(e)).first; // a .cfg: with its meshes
             }
             return it->second != e.inputHash;
         };

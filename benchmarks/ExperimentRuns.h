@@ -10,6 +10,8 @@
 #include "mhplan/bench/ChildProcess.h"
 #include "mhplan/bench/OmplAdapters.h"
 #include "mhplan/collision/Collision.h"
+#include "mhplan/collision/Problem.h"
+#include "mhplan/io/CfgIO.h"
 #include "mhplan/sim/Simulation.h"
 
 #include <ompl/geometric/SimpleSetup.h>
@@ -18,6 +20,7 @@
 #include <optional>
 #include <ostream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,6 +63,9 @@ namespace mhplan::bench::detail
         std::string parsedHash;
         World world;
         Query query;
+        /** An OMPL.app problem's experiment ({cfg: FILE}, Experiment::cfg): its meshes and set-up
+            (CfgWorlds.cpp); then \c world and \c query are unused. */
+        std::shared_ptr<const LoadedCfgProblem> mesh;
         CollisionModelPtr model;
         double optimum{std::numeric_limits<double>::quiet_NaN()};
         double optimumSeconds{0.0};
@@ -78,6 +84,21 @@ namespace mhplan::bench::detail
 
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs);
+    /** The SimpleSetup of the experiment's problem (its world and query, or its OMPL.app problem's
+        meshes), the object made by \e make when given. */
+    ompl::geometric::SimpleSetupPtr experimentSimpleSetup(const ExperimentSetup &xs,
+                                                          const SimpleSetupFactory &make = nullptr);
+    /** prepareExperiment of an OMPL.app problem (CfgWorlds.cpp): its inputs checked against the campaign's
+        fingerprint, its meshes loaded. */
+    void prepareCfgExperiment(ExperimentSetup &xs);
+    /** The run properties of \e path on an OMPL.app problem: its length, the independent dense check
+        against the meshes (collision free, poses); returns the path for the paths sidecar: "x y yaw;..."
+        (SE(2)) or "x y z qw qx qy qz;..." (SE(3)). */
+    std::string cfgRunProperties(const ExperimentSetup &xs, const ompl::base::SpaceInformation &si,
+                                 const ompl::geometric::PathGeometric &path,
+                                 ompl::tools::Benchmark::RunProperties &run);
+    /** The experiment properties of an OMPL.app problem (world, space, meshes, query points). */
+    void cfgExperimentParameters(const ExperimentSetup &xs, std::map<std::string, std::string> &parameters);
 
     /** The SimpleSetup of a benchmark run (benchmarks/README.md, "Overhead"). OMPL's Benchmark prints its
         setup before every run (SimpleSetup::print), and SpaceInformation::printProperties in it measures the

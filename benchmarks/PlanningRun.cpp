@@ -103,6 +103,38 @@ namespace mhplan::bench::detail
             }
         }
 
+        /** The experiment properties of a world's experiment (world, robot, query). */
+        void worldExperimentParameters(const ExperimentSetup &xs,
+                                       std::map<std::string, std::string> &parameters)
+        {
+            parameters["world TEXT"] = xs.world.name;
+            parameters["world_file TEXT"] =
+                fs::absolute(xs.experiment->worldFile).lexically_normal().string();
+            parameters["world_type TEXT"] = xs.world.type();
+            parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
+            if (xs.world.isGrid())
+                parameters["grid_cells INTEGER"] =
+                    std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
+            parameters["robot_radius REAL"] = num(xs.world.robotRadius);
+            if (xs.world.isRigid())
+            {
+                // Only SE(2)-based experiments carry these (r2 experiments keep their columns).
+                parameters["space TEXT"] = toString(xs.world.space);
+                if (xs.world.turningRadius > 0.0)
+                    parameters["turning_radius REAL"] = num(xs.world.turningRadius);
+                parameters["robot_reach REAL"] = num(xs.world.robotReach());
+            }
+            parameters["query TEXT"] = xs.query.name;
+            std::ostringstream q;
+            if (xs.world.isRigid())
+                q << "(" << xs.query.start.x << "," << xs.query.start.y << "," << xs.query.startYaw << ")->("
+                  << xs.query.goal.x << "," << xs.query.goal.y << "," << xs.query.goalYaw << ")";
+            else
+                q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
+                  << xs.query.goal.y << ")";
+            parameters["query_points TEXT"] = q.str();
+        }
+
         struct WorkerInfo
         {
             std::string host;
@@ -138,10 +170,8 @@ namespace mhplan::bench::detail
         {
             static const std::optional<std::size_t> seeds = [&]
             {
-                const og::SimpleSetupPtr ss = makeSimpleSetup(
-                    xs.world, xs.query, xs.model,
-                    [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); },
-                    xs.experiment->setup);
+                const og::SimpleSetupPtr ss = experimentSimpleSetup(
+                    xs, [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); });
                 ss->getSpaceInformation()->setup();
                 return static_cast<RunSetup &>(*ss).measurePrintSeeds();
             }();
@@ -162,10 +192,8 @@ namespace mhplan::bench::detail
             const Campaign &c = *xs.campaign;
             // The problem is built here, after the seed: OMPL's SimpleSetup owns a random number
             // generator (its path simplifier's).
-            const og::SimpleSetupPtr ss = makeSimpleSetup(
-                xs.world, xs.query, xs.model,
-                [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); },
-                xs.experiment->setup);
+            const og::SimpleSetupPtr ss = experimentSimpleSetup(
+                xs, [](const ob::StateSpacePtr &space) { return std::make_shared<RunSetup>(space); });
             if (printSeeds)
                 static_cast<RunSetup &>(*ss).printSeeds(*printSeeds);
             const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
@@ -254,7 +282,13 @@ namespace mhplan::bench::detail
                     {
                         const auto *geo = pdef->getSolutionPath()->as<og::PathGeometric>();
                         const bool exact = pdef->hasExactSolution();
-                        if (xs.world.isRigid())
+                        if (xs.mesh)
+                        {
+                            path = cfgRunProperties(xs, *si, *geo, run);
+                            if (exact)
+                                run["optimality gap REAL"] = num(std::nan(""));
+                        }
+                        else if (xs.world.isRigid())
                         {
                             std::vector<Pose2> poses;
                             storeMetrics(rigidRunPath(xs, *si, *geo, exact, poses), run);
@@ -361,12 +395,25 @@ namespace mhplan::bench::detail
         return c.wallLimit > 0.0 ? c.wallLimit : 2.0 * runWallBound(c) + 20.0;
     }
 
+    og::SimpleSetupPtr experimentSimpleSetup(const ExperimentSetup &xs, const SimpleSetupFactory &make)
+    {
+        if (xs.mesh)
+            return makeMeshSetup(xs.mesh->spec, make);
+        return make ? makeSimpleSetup(xs.world, xs.query, xs.model, make, xs.experiment->setup)
+                    : makeSimpleSetup(xs.world, xs.query, xs.model, xs.experiment->setup);
+    }
+
     /** Build the shared problem of an experiment (no random number generator is created here). */
     void prepareExperiment(ExperimentSetup &xs)
     {
         const Campaign &c = *xs.campaign;
         const Experiment &e = *xs.experiment;
         machineCpuInfo(); // once here, inherited by every run process
+        if (e.cfg)
+        {
+            prepareCfgExperiment(xs); // no exact optimum on meshes: the report measures to the best found
+            return;
+        }
         std::string bytes;
         bool reused = false;
         if (xs.parsed)
@@ -518,7 +565,7 @@ namespace mhplan::bench::detail
         }
 
         // Assemble the experiment with OMPL's own record and writer.
-        const og::SimpleSetupPtr ss = makeSimpleSetup(xs.world, xs.query, xs.model, e.setup);
+        const og::SimpleSetupPtr ss = experimentSimpleSetup(xs);
         AssembledBenchmark bench(*ss, e.name);
         auto &x = bench.experiment();
         x.name = e.name;
@@ -539,31 +586,10 @@ namespace mhplan::bench::detail
         x.setupInfo = setupInfo.str();
         x.parameters["campaign TEXT"] = c.name;
         x.parameters["kind TEXT"] = "planning";
-        x.parameters["world TEXT"] = xs.world.name;
-        x.parameters["world_file TEXT"] = fs::absolute(e.worldFile).lexically_normal().string();
-        x.parameters["world_type TEXT"] = xs.world.type();
-        x.parameters["obstacle_count INTEGER"] = std::to_string(xs.world.obstacleCount());
-        if (xs.world.isGrid())
-            x.parameters["grid_cells INTEGER"] =
-                std::to_string(static_cast<long long>(xs.world.grid->width()) * xs.world.grid->height());
-        x.parameters["robot_radius REAL"] = num(xs.world.robotRadius);
-        if (xs.world.isRigid())
-        {
-            // Only SE(2)-based experiments carry these (r2 experiments keep their columns).
-            x.parameters["space TEXT"] = toString(xs.world.space);
-            if (xs.world.turningRadius > 0.0)
-                x.parameters["turning_radius REAL"] = num(xs.world.turningRadius);
-            x.parameters["robot_reach REAL"] = num(xs.world.robotReach());
-        }
-        x.parameters["query TEXT"] = xs.query.name;
-        std::ostringstream q;
-        if (xs.world.isRigid())
-            q << "(" << xs.query.start.x << "," << xs.query.start.y << "," << xs.query.startYaw << ")->("
-              << xs.query.goal.x << "," << xs.query.goal.y << "," << xs.query.goalYaw << ")";
+        if (xs.mesh)
+            cfgExperimentParameters(xs, x.parameters);
         else
-            q << "(" << xs.query.start.x << "," << xs.query.start.y << ")->(" << xs.query.goal.x << ","
-              << xs.query.goal.y << ")";
-        x.parameters["query_points TEXT"] = q.str();
+            worldExperimentParameters(xs, x.parameters);
         // Experiment properties go to the database verbatim (no NaN to NULL conversion): leave an unknown
         // optimum out.
         if (std::isfinite(xs.optimum))
@@ -583,7 +609,8 @@ namespace mhplan::bench::detail
             x.parameters["octile_optimum REAL"] = num(e.octileOptimum);
             x.parameters["octile_optimum_m REAL"] = num(e.octileOptimum * xs.world.grid->cellSize());
         }
-        x.parameters["collision_backend TEXT"] = xs.world.isRigid() ? "fcl-rigid" : xs.model->name();
+        x.parameters["collision_backend TEXT"] =
+            xs.mesh ? "fcl-mesh" : (xs.world.isRigid() ? "fcl-rigid" : xs.model->name());
         // Which validity set-up the runs used (docs/setups.md); the app set-up's resolution.
         x.parameters["validity_setup TEXT"] = e.setup.name();
         if (e.setup.app())

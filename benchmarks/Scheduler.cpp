@@ -225,10 +225,15 @@ namespace mhplan::bench
                 << " s): every planning run would be killed";
             throw InputError(why.str());
         }
-        if (!campaign.planners.empty() && all.front().simulation == Experiment::kNoSimulation)
+        // The planners' parameters on the first world's problem (an OMPL.app problem's planners were
+        // checked on its space's flag when the campaign was read; their parameters on R^2).
+        const auto firstWorld = std::find_if(all.begin(), all.end(),
+                                             [](const Experiment &e)
+                                             { return e.simulation == Experiment::kNoSimulation && !e.cfg; });
+        if (!campaign.planners.empty() && firstWorld != all.end())
         {
-            const World world = loadWorld(all.front().worldFile);
-            validatePlanners(campaign, registry, world, experimentQuery(world, all.front()));
+            const World world = loadWorld(firstWorld->worldFile);
+            validatePlanners(campaign, registry, world, experimentQuery(world, *firstWorld));
         }
         if (!campaign.simulations.empty())
             validateControllers(campaign, registry);
@@ -340,7 +345,7 @@ namespace mhplan::bench
                 while (nextTodo < todo.size() && active.size() < options.jobs)
                 {
                     const Experiment *e = todo[nextTodo++];
-                    if (e->simulation == Experiment::kNoSimulation && e->worldFile != parsedFile)
+                    if (e->simulation == Experiment::kNoSimulation && !e->cfg && e->worldFile != parsedFile)
                     {
                         // Parsed once here for the experiments of this world (they come in world order);
                         // a file that does not load is left to the experiment process, which says why.

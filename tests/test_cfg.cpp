@@ -95,6 +95,20 @@ TEST(Cfg, SE3WhenZOrAxisKeysAreGiven)
     EXPECT_EQ(p.motionValidator, "discrete");
 }
 
+TEST(Cfg, CarStateSpacesOfPlanarProblems)
+{
+    // OMPL.app's statespace and turningradius keys: a Dubins or Reeds-Shepp car in the plane.
+    CfgProblem p = parseCfg(kSE2 + "statespace = Dubins\nturningradius = 0.75\n", "/x/p.cfg");
+    EXPECT_EQ(p.car, "dubins");
+    EXPECT_DOUBLE_EQ(p.turningRadius, 0.75);
+    p = parseCfg(kSE2 + "statespace = reeds_shepp\n", "/x/p.cfg");
+    EXPECT_EQ(p.car, "reeds_shepp");
+    EXPECT_DOUBLE_EQ(p.turningRadius, 1.0);
+    ASSERT_FALSE(p.notes.empty()) << "the default turning radius is said";
+    EXPECT_NE(p.notes.back().find("turning radius 1"), std::string::npos) << p.notes.back();
+    EXPECT_TRUE(parseCfg(kSE2 + "statespace = se2\n", "/x/p.cfg").car.empty());
+}
+
 TEST(Cfg, RefusalsNameFileLineAndKey)
 {
     struct Case
@@ -115,8 +129,13 @@ TEST(Cfg, RefusalsNameFileLineAndKey)
          "/x/p.cfg: key 'problem.volume.min.y' is missing: give the whole volume or none"},
         {kSE2 + "volume.min.w = 0\n", "/x/p.cfg:10: key 'problem.volume.min.w': unknown volume key"},
         {kSE2 + "start.z = 0\n", "/x/p.cfg: key 'problem.start.axis.x' is missing: an SE(3) problem"},
-        {kSE2 + "turningradius = 1\n", "/x/p.cfg:10: key 'problem.turningradius'"},
-        {kSE2 + "statespace = dubins\n", "/x/p.cfg:10: key 'problem.statespace': state space 'dubins'"},
+        {kSE2 + "turningradius = 1\n", "/x/p.cfg:10: key 'problem.turningradius': only a car has a turning"},
+        {kSE2 + "statespace = dubins\nturningradius = 0\n",
+         "/x/p.cfg:11: key 'problem.turningradius': must be > 0"},
+        {kSE2 + "statespace = kinematic_car\n",
+         "/x/p.cfg:10: key 'problem.statespace': state space "
+         "'kinematic_car' is not supported for this problem; accepted: "
+         "se2, dubins, reedsshepp"},
         {kSE2 + "motion_validator = exact\n",
          "/x/p.cfg:10: key 'problem.motion_validator': expected certified or discrete"},
         {kSE2 + "[benchmark]\nrun_count = 2.5\n",

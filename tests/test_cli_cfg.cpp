@@ -98,3 +98,29 @@ TEST(CliCfg, RefusalsNameTheFileLineAndKey)
     r = runCli("plan " + f + " --time 0.2 --quiet");
     EXPECT_NE(r.code, 1) << "OMPL's suggestions are hints: " << r.out;
 }
+
+TEST(CliCfg, SvgFromAboveAndMeshExport)
+{
+    // plan --svg: the problem from above (environment, start, goal), the path and the robot's footprint.
+    const std::string svg = (fs::temp_directory_path() / "mhplan_cli_cfg.svg").string();
+    fs::remove(svg);
+    auto r = runCli("plan " + kDir + "bugtrap.cfg --planner BITstar --time 2 --seed 3 --quiet --svg " + svg);
+    EXPECT_EQ(r.code, 0) << r.out;
+    std::ifstream in(svg);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const char *cls : {"class=\"environment\"", "class=\"path\"", "class=\"start\"", "class=\"goal\""})
+        EXPECT_TRUE(contains(text, cls)) << cls;
+    std::size_t footprints = 0;
+    for (std::size_t at = text.find("class=\"footprint\""); at != std::string::npos;
+         at = text.find("class=\"footprint\"", at + 1))
+        ++footprints;
+    EXPECT_GE(footprints, 3u) << "at the first and last pose and along the 6 m";
+    // worlds PROBLEM.cfg --json: the meshes as planned on (60 + 12 triangles), the robot centred.
+    r = runCli("worlds " + kDir + "bugtrap.cfg --json");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "\"space\": \"se2\"")) << r.out.substr(0, 400);
+    EXPECT_TRUE(contains(r.out, "\"environment\"")) << r.out.substr(0, 400);
+    r = runCli("worlds " + kDir + "passage.cfg");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "passage\tse3\t48 environment triangles\t12 robot triangles")) << r.out;
+}

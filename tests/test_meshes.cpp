@@ -2,6 +2,7 @@
 /* Meshes (docs/meshes.md): reading COLLADA (nested transforms, instances, up axis), OBJ, STL and PLY;
    refusing unreadable, empty, degenerate and oversized meshes; collision and clearance by FCL against
    analytic answers; the certified motion validator against dense pose checks. */
+#include "mhplan/base/PlannerRegistry.h"
 #include "mhplan/base/World.h"
 #include "mhplan/collision/MeshRigidBody.h"
 #include "mhplan/io/MeshIO.h"
@@ -185,7 +186,7 @@ namespace
     /** Random motions between valid states of \e ss: every motion the certified validator accepts passes
         the dense check at a step far below the clearances, and some are accepted and some refused. */
     void certifiedAgainstDense(const ompl::geometric::SimpleSetupPtr &ss, const MeshRigidModel &model,
-                               double localRadius)
+                               double localRadius, int motions = 400, double step = 1e-3)
     {
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
         const auto validator =
@@ -223,13 +224,13 @@ namespace
         };
         ob::State *a = si->allocState(), *b = si->allocState();
         int accepted = 0, refused = 0, denseContacts = 0;
-        for (int i = 0; i < 400; ++i)
+        for (int i = 0; i < motions; ++i)
         {
             sample(a, nullptr);
             sample(b, a);
             ompl::geometric::PathGeometric path(si, a, b);
             long contact = -1;
-            denseMeshPathCheck(model, *si, path, 1e-3, contact);
+            denseMeshPathCheck(model, *si, path, step, contact);
             denseContacts += contact >= 0 ? 1 : 0;
             if (validator->checkMotion(a, b))
             {
@@ -244,7 +245,7 @@ namespace
                 // The certified prefix is free.
                 ompl::geometric::PathGeometric prefix(si, a, last.first);
                 long c = -1;
-                denseMeshPathCheck(model, *si, prefix, 1e-3, c);
+                denseMeshPathCheck(model, *si, prefix, step, c);
                 EXPECT_EQ(c, -1) << "motion " << i;
             }
             si->freeState(last.first);
@@ -254,8 +255,8 @@ namespace
                   << " clearance evaluations\n";
         si->freeState(a);
         si->freeState(b);
-        EXPECT_GT(accepted, 40);
-        EXPECT_GT(denseContacts, 40);
+        EXPECT_GT(accepted, motions / 10);
+        EXPECT_GT(denseContacts, motions / 10);
         EXPECT_GE(refused, denseContacts);
     }
 } // namespace
@@ -268,6 +269,27 @@ TEST(MeshCertifiedValidator, SE2BugTrapAgainstDenseChecks)
     spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
     spec.goal.position = {0, 6, 0};
     certifiedAgainstDense(makeMeshSetup(spec), *spec.model, 4.0);
+}
+
+TEST(MeshCertifiedValidator, DubinsAndReedsSheppCarsAgainstDenseChecks)
+{
+    // The cars' curves (docs/meshes.md): the bound follows the curve's length and turning, and a curve that
+    // would leave the volume between its ends is refused (the dense check counts it as a contact).
+    for (const char *car : {"dubins", "reeds_shepp"})
+    {
+        MeshProblemSpec spec;
+        spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
+                                                      readMesh(kDir + "bar_robot.dae"), true);
+        spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-5, -5, 0), Eigen::Vector3d(5, 5, 0));
+        spec.goal.position = {0, 4.5, 0};
+        spec.car = car;
+        spec.turningRadius = 0.6;
+        const auto ss = makeMeshSetup(spec);
+        EXPECT_EQ(spaceFlag(*ss->getStateSpace()),
+                  std::string(car) == "dubins" ? cap::Dubins : cap::ReedsShepp);
+        SCOPED_TRACE(car);
+        certifiedAgainstDense(ss, *spec.model, 1.5, 80, 4e-3); // the curves are long: a coarser dense step
+    }
 }
 
 TEST(MeshCertifiedValidator, SE3PassageAgainstDenseChecks)

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import data as datamod
 from . import db as dbmod
-from . import stats, worlds
+from . import meshes, stats, worlds
 from .page import box_figure, plt, save, slug
 
 OUTCOME_COLORS = {"exact": "#2ca02c", "approximate": "#ff7f0e", "failed": "#9e9e9e", "crashed": "#d62728"}
@@ -246,6 +246,8 @@ def _footprint(ax, world, pose, color, gid, alpha=0.12):
 
 def path_figure(database, exp, paths, world_file, outdir, colors):
     """The world with each planner's best and median exact path."""
+    if dbmod.experiment_value(exp, "world_type") == "omplapp":  # OMPL.app problems: meshes.py
+        return meshes.path_figure(database, exp, paths, world_file, outdir, colors, path_figure)
     if not world_file or not os.path.exists(world_file):
         return None, "world file %s not found" % (world_file or "(not recorded)")
     try:

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan plan PROBLEM.cfg and mhplan bench PROBLEM.cfg: OMPL.app's problem files (docs/omplapp.md). */
 #include "mhplan/cli/Args.h"
+#include "mhplan/cli/CfgDraw.h"
 #include "mhplan/cli/Commands.h"
+#include "mhplan/draw/Svg.h"
 
 #include "mhplan/io/CfgIO.h"
 #include "mhplan/registry/Registry.h"
@@ -65,6 +67,14 @@ namespace mhplan::cli
             return planner;
         }
 
+        /** "SE(2)", "SE(3)", "Dubins" or "Reeds-Shepp": the problem's state space. */
+        std::string spaceLabel(const CfgProblem &cfg)
+        {
+            if (cfg.se3)
+                return "SE(3)";
+            return cfg.car == "dubins" ? "Dubins" : cfg.car == "reeds_shepp" ? "Reeds-Shepp" : "SE(2)";
+        }
+
         /** The dense check's step: 1e-3 of the volume's diagonal (x, y, and z for SE(3)). */
         double denseStep(const LoadedCfgProblem &p)
         {
@@ -126,7 +136,9 @@ namespace mhplan::cli
 
     int cmdPlanCfg(const Argv &argv)
     {
-        const Args args("plan", argv, {{"planner", "time", "seed", "validator", "path"}, {"set"}, {"quiet"}});
+        const Args args("plan", argv,
+                        {{"planner", "time", "seed", "validator", "path", "svg"}, {"set"}, {"quiet"}});
+        checkOutputFile(args, "svg");
         const std::uint_fast32_t seed = seedFromArgs(args);
         if (args.positional().size() != 1)
             throw InputError("mhplan plan: expected one PROBLEM.cfg");
@@ -161,7 +173,7 @@ namespace mhplan::cli
         if (!(timeLimit > 0.0))
             throw InputError("mhplan plan: --time must be > 0 seconds");
         const auto &volume = p.spec.volume;
-        std::cout << "problem:   " << p.cfg.name << " (" << (p.cfg.se3 ? "SE(3)" : "SE(2)") << ", "
+        std::cout << "problem:   " << p.cfg.name << " (" << spaceLabel(p.cfg) << ", "
                   << p.spec.model->environmentShape().triangleCount() << " environment triangles, "
                   << p.spec.model->robotShape().triangleCount() << " robot triangles, robot reach "
                   << p.spec.model->reach() << ")\n"
@@ -181,6 +193,8 @@ namespace mhplan::cli
                   << std::setprecision(6) << "time:      " << seconds << " s\n";
         if (!ss->haveSolutionPath())
         {
+            if (args.has("svg"))
+                writeTextFile(args.get("svg"), cfgProblemSvg(p, si, nullptr));
             std::cout << "no path\n";
             return 3;
         }
@@ -188,13 +202,18 @@ namespace mhplan::cli
         long contact = -1;
         const std::size_t poses = denseMeshPathCheck(*p.spec.model, *si, path, denseStep(p), contact);
         std::cout << std::setprecision(9) << "cost:      " << path.length() << " (path length in the "
-                  << (p.cfg.se3 ? "SE(3)" : "SE(2)") << " metric)\n"
+                  << spaceLabel(p.cfg) << " metric)\n"
                   << "valid:     " << (contact < 0 ? "yes" : "NO (motion " + std::to_string(contact) + ")")
                   << " (independent dense check: " << poses << " poses, robot points at most " << denseStep(p)
                   << " apart)\n"
                   << "path:      " << path.getStateCount() << " states\n";
         if (!args.has("quiet"))
             path.printAsMatrix(std::cout);
+        if (args.has("svg"))
+        {
+            writeTextFile(args.get("svg"), cfgProblemSvg(p, si, &path));
+            std::cout << "svg:       " << args.get("svg") << "\n";
+        }
         if (args.has("path"))
         {
             std::ofstream out(args.get("path"));
@@ -304,8 +323,8 @@ namespace mhplan::cli
         request.displayProgress = !args.has("no-progress");
         request.simplify = cfg.simplify;
         request.saveConsoleOutput = false;
-        std::cout << "problem:  " << cfg.name << " (" << (cfg.se3 ? "SE(3)" : "SE(2)") << ") seed " << seed
-                  << ", " << names.size() << " planners x " << runs << " runs x " << timeLimit << " s\n";
+        std::cout << "problem:  " << cfg.name << " (" << spaceLabel(cfg) << ") seed " << seed << ", "
+                  << names.size() << " planners x " << runs << " runs x " << timeLimit << " s\n";
         benchmark.benchmark(request);
         if (!benchmark.saveResultsToFile(log.string().c_str()))
             throw std::runtime_error("cannot write " + log.string());

@@ -81,7 +81,9 @@ namespace mhplan::cli
             "collision-free path of a world whose exact optimum is known. An OMPL.app problem file "
             "(PROBLEM.cfg, docs/omplapp.md) takes --planner (default: the file's first), --set, --time "
             "(default: the file's time_limit), --seed, --quiet, and also --validator certified|discrete and "
-            "--path FILE (the path's states); its path is checked densely against the meshes.",
+            "--path FILE (the path's states) and --svg FILE (the problem from above, the robot's footprint "
+            "along "
+            "the path); its path is checked densely against the meshes.",
             {{"WORLD", "a world file (.yaml, .map), the name of a shipped world (see 'mhplan worlds'), or an "
                        "OMPL.app problem file (.cfg)"}},
             {options::query(),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan worlds / generate: describe, validate and export worlds (text or JSON with their geometry), and
    generate new ones. */
+#include "mhplan/cli/CfgDraw.h"
 #include "mhplan/cli/Commands.h"
 
 #include "mhplan/cli/Args.h"
@@ -138,6 +139,8 @@ namespace mhplan::cli
 
     int cmdWorlds(const Argv &argv)
     {
+        if (isCfgArgument(argv))
+            return cmdWorldsCfg(argv); // OMPL.app problems: their meshes (CfgDraw.cpp)
         const Args args("worlds", argv, {{}, {}, {"json"}});
         std::vector<std::string> files = args.positional();
         if (files.empty())

@@ -2,10 +2,13 @@
 #include "mhplan/collision/MeshRigidBody.h"
 
 #include "mhplan/base/World.h"
+#include "mhplan/collision/CarSpaces.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
 #include <ompl/base/samplers/MaximizeClearanceValidStateSampler.h>
@@ -96,6 +99,34 @@ namespace mhplan
         return translation + model.reach() * angle;
     }
 
+    namespace
+    {
+        /** A car's space: OMPL interpolates along its Dubins or Reeds-Shepp curve. */
+        bool isCarSpace(const ob::StateSpace &space)
+        {
+            return dynamic_cast<const ob::DubinsStateSpace *>(&space) != nullptr ||
+                   dynamic_cast<const ob::ReedsSheppStateSpace *>(&space) != nullptr;
+        }
+    } // namespace
+
+    double meshMotionBound(const MeshRigidModel &model, const ob::StateSpace &space, const ob::State *s1,
+                           const ob::State *s2)
+    {
+        // A car's interpolation runs along its Dubins or Reeds-Shepp curve at constant speed in the path
+        // parameter: the position moves by at most the curve's length rho * n, the heading turns by at most n
+        // radians (n the curve's length in units of rho: arcs of radius rho, straight lines do not turn).
+        if (const auto *d = dynamic_cast<const SafeDubinsStateSpace *>(&space))
+        {
+            const double n = d->shortestPath(s1, s2).length(); // the path its interpolation follows
+            return n * (d->turningRadius() + model.reach());
+        }
+        if (dynamic_cast<const ob::DubinsStateSpace *>(&space) != nullptr)
+            throw InputError("meshMotionBound: a Dubins space other than mhplan's (SafeDubinsStateSpace)");
+        if (const auto *r = dynamic_cast<const ob::ReedsSheppStateSpace *>(&space))
+            return r->distance(s1, s2) + model.reach() * r->reedsShepp(s1, s2).length();
+        return meshMotionBound(model, s1, s2);
+    }
+
     MeshValidityChecker::MeshValidityChecker(const ob::SpaceInformationPtr &si, MeshRigidModelPtr model)
         : ob::StateValidityChecker(si), model_(std::move(model))
     {
@@ -122,7 +153,10 @@ namespace mhplan
 
     double MeshCertifiedMotionValidator::certify(const ob::State *s1, const ob::State *s2) const
     {
-        const double bound = meshMotionBound(*model_, s1, s2);
+        const double bound = meshMotionBound(*model_, *si_->getStateSpace(), s1, s2);
+        // A car's curve may leave the bounds between its ends: the position's distance to the bounds counts
+        // as a clearance too (the position moves no faster than the bound allows, docs/meshes.md).
+        const bool curved = isCarSpace(*si_->getStateSpace());
         ob::State *pose = si_->allocState();
         double t = 0.0;
         double certified = 0.0;
@@ -130,7 +164,14 @@ namespace mhplan
         {
             si_->getStateSpace()->interpolate(s1, s2, t, pose);
             ++evaluations_;
-            const double d = model_->clearance(model_->placement(pose));
+            double d = model_->clearance(model_->placement(pose));
+            if (curved)
+            {
+                const auto *q = pose->as<ob::SE2StateSpace::StateType>();
+                const ob::RealVectorBounds &box = si_->getStateSpace()->as<ob::SE2StateSpace>()->getBounds();
+                d = std::min({d, q->getX() - box.low[0], box.high[0] - q->getX(), q->getY() - box.low[1],
+                              box.high[1] - q->getY()});
+            }
             if (!(d >= resolution_))
                 break; // too close to certify (or in contact): refused, certified up to t
             certified = t;
@@ -165,7 +206,18 @@ namespace mhplan
         if (!ok)
         {
             if (lastValid.first != nullptr)
+            {
                 si_->getStateSpace()->interpolate(s1, s2, t, lastValid.first);
+                // A planner takes the motion s1 -> lastValid.first as valid. On a car's space that motion is
+                // the shortest curve between them, which need not be the prefix just certified: it is
+                // certified on its own, halving t until it is (or t is 0).
+                const bool curved = isCarSpace(*si_->getStateSpace());
+                for (int halving = 0; curved && t > 0.0 && certify(s1, lastValid.first) < 1.0; ++halving)
+                {
+                    t = halving < 30 ? 0.5 * t : 0.0;
+                    si_->getStateSpace()->interpolate(s1, s2, t, lastValid.first);
+                }
+            }
             lastValid.second = t;
             invalid_++;
         }
@@ -238,11 +290,24 @@ namespace mhplan
 
     og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec)
     {
+        return makeMeshSetup(spec, nullptr);
+    }
+
+    og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec, const SimpleSetupFactory &make)
+    {
         const bool planar = spec.model->planar();
         ob::StateSpacePtr space;
         if (planar)
         {
-            auto se2 = std::make_shared<ob::SE2StateSpace>();
+            std::shared_ptr<ob::SE2StateSpace> se2;
+            if (spec.car == "dubins")
+                se2 = std::make_shared<SafeDubinsStateSpace>(spec.turningRadius);
+            else if (spec.car == "reeds_shepp")
+                se2 = std::make_shared<ob::ReedsSheppStateSpace>(spec.turningRadius);
+            else if (spec.car.empty())
+                se2 = std::make_shared<ob::SE2StateSpace>();
+            else
+                throw InputError("car '" + spec.car + "': expected dubins or reeds_shepp");
             ob::RealVectorBounds b(2);
             for (int i = 0; i < 2; ++i)
             {
@@ -264,7 +329,7 @@ namespace mhplan
             se3->setBounds(b);
             space = se3;
         }
-        auto ss = std::make_shared<og::SimpleSetup>(space);
+        const og::SimpleSetupPtr ss = make ? make(space) : std::make_shared<og::SimpleSetup>(space);
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
         ss->setStateValidityChecker(std::make_shared<MeshValidityChecker>(si, spec.model));
         si->setStateValidityCheckingResolution(spec.longestValidSegmentFraction);
@@ -318,7 +383,7 @@ namespace mhplan
         {
             const ob::State *a = path.getState(i);
             const ob::State *b = i + 1 < n ? path.getState(i + 1) : a;
-            const double bound = meshMotionBound(model, a, b);
+            const double bound = meshMotionBound(model, *si.getStateSpace(), a, b);
             const auto pieces = static_cast<std::size_t>(std::ceil(bound / step));
             const std::size_t last = i + 1 < n ? pieces : 0;
             for (std::size_t k = 0; k <= last; ++k)

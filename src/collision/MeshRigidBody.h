@@ -6,6 +6,7 @@
 #define MHPLAN_MESH_RIGID_BODY_H
 
 #include "mhplan/collision/Mesh.h"
+#include "mhplan/collision/Problem.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>
@@ -72,6 +73,11 @@ namespace mhplan
         (docs/meshes.md, "Certified motions"). */
     double meshMotionBound(const MeshRigidModel &model, const ompl::base::State *s1,
                            const ompl::base::State *s2);
+    /** \brief meshMotionBound for a motion of \e space: on mhplan's Dubins space (SafeDubinsStateSpace) and
+        OMPL's Reeds-Shepp space the curve's length plus reach times the heading it turns (its length over
+        the turning radius), else the SE(2)/SE(3) bound above. */
+    double meshMotionBound(const MeshRigidModel &model, const ompl::base::StateSpace &space,
+                           const ompl::base::State *s1, const ompl::base::State *s2);
 
     /** \brief Valid: the state's position within the space's bounds and no contact (as OMPL.app's FCL
         checker); clearance: MeshRigidModel::clearance. */
@@ -127,6 +133,10 @@ namespace mhplan
         Eigen::AlignedBox3d volume;
         RigidPose start;
         RigidPose goal;
+        /** \brief A planar problem's car: "" (SE(2)), "dubins" (forward only) or "reeds_shepp" (forward and
+            back), turning with \c turningRadius (OMPL.app's statespace and turningradius keys). */
+        std::string car;
+        double turningRadius{1.0};
         /** \brief Goal tolerance in the state space's distance. */
         double threshold{1e-6};
         /** \brief "length" or "max_min_clearance". */
@@ -153,6 +163,9 @@ namespace mhplan
         start and goal (refused, InputError, when invalid), objective; its space information is set up, the
         planner and SimpleSetup::setup() are left to the caller. */
     ompl::geometric::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec);
+    /** \brief makeMeshSetup, configuring the object \e make returns (a campaign's runs use a subclass). */
+    ompl::geometric::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec,
+                                                  const SimpleSetupFactory &make);
 
     /** \brief Write a pose into a state of the SE(2) (heading from the orientation about +z) or SE(3) space.
      */

@@ -2,6 +2,7 @@
 #include "mhplan/io/CfgIO.h"
 
 #include "mhplan/base/World.h"
+#include "mhplan/io/InputFile.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -310,16 +311,32 @@ namespace mhplan
             }
         if (problem.count("statespace"))
         {
-            const std::string s = lower(problem.at("statespace").value);
-            if (s != (p.se3 ? "se3" : "se2"))
+            // OMPL.app's names of the geometric spaces a rigid body plans in; the cars only in the plane.
+            std::string s = lower(problem.at("statespace").value);
+            s.erase(
+                std::remove_if(s.begin(), s.end(), [](char c) { return c == '_' || c == '-' || c == ' '; }),
+                s.end());
+            if (!p.se3 && (s == "dubins" || s == "reedsshepp"))
+                p.car = s == "dubins" ? "dubins" : "reeds_shepp";
+            else if (s != (p.se3 ? "se3" : "se2"))
                 r.fail(problem.at("statespace").line, "problem.statespace",
                        "state space '" + problem.at("statespace").value +
-                           "' is not supported for this problem; " + "accepted: " + (p.se3 ? "se3" : "se2") +
+                           "' is not supported for this problem; " +
+                           "accepted: " + (p.se3 ? "se3" : "se2, dubins, reedsshepp") +
                            " (the poses make it " + (p.se3 ? "SE(3)" : "SE(2)") + ")");
         }
         if (problem.count("turningradius"))
-            r.fail(problem.at("turningradius").line, "problem.turningradius",
-                   "car state spaces (Dubins, Reeds-Shepp) are not supported for mesh problems");
+        {
+            if (p.car.empty())
+                r.fail(problem.at("turningradius").line, "problem.turningradius",
+                       "only a car has a turning radius: add statespace = dubins or reedsshepp");
+            p.turningRadius = r.number(problem.at("turningradius"), "problem.turningradius");
+            if (!(p.turningRadius > 0.0) || !std::isfinite(p.turningRadius))
+                r.fail(problem.at("turningradius").line, "problem.turningradius", "must be > 0 (metres)");
+        }
+        else if (!p.car.empty())
+            p.notes.push_back(p.where("problem.statespace") +
+                              ": no turningradius: OMPL's default turning radius 1 is used");
         if (problem.count("motion_validator"))
         {
             p.motionValidator = problem.at("motion_validator").value;
@@ -389,18 +406,19 @@ namespace mhplan
 
     CfgProblem loadCfg(const std::string &path)
     {
-        std::ifstream in(path);
-        if (!in)
-            throw InputError(path + ": no such file or cannot read it");
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        return parseCfg(ss.str(), path);
+        // Only a regular file, at most kMaxCfgBytes (a FIFO or /dev/zero is refused, never read).
+        return parseCfg(readInputFile(path, kMaxCfgBytes, "problem file"), path);
     }
 
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits)
     {
+        return loadCfgProblem(loadCfg(path), limits);
+    }
+
+    LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits)
+    {
         LoadedCfgProblem out;
-        out.cfg = loadCfg(path);
+        out.cfg = std::move(cfg);
         const CfgProblem &c = out.cfg;
         TriangleMesh world, robot;
         try
@@ -448,6 +466,8 @@ namespace mhplan
         s.objectiveThreshold = c.objectiveThreshold;
         s.motionValidator = c.motionValidator;
         s.resolution = c.resolution;
+        s.car = c.car;
+        s.turningRadius = c.turningRadius;
         for (const auto &[key, value] : c.context)
             s.context[key] = value.value;
         return out;

@@ -52,6 +52,10 @@ namespace mhplan
         std::string objective{"length"};
         double objectiveThreshold{std::numeric_limits<double>::quiet_NaN()};
         double threshold{1e-6};
+        /** \brief statespace = dubins or reedsshepp (SE(2) problems): "dubins" or "reeds_shepp", turning with
+            turningradius (default 1, OMPL's); empty: a rigid body in SE(2)/SE(3). */
+        std::string car;
+        double turningRadius{1.0};
         /** \brief mhplan's keys: motion_validator (certified, discrete) and resolution. */
         std::string motionValidator{"certified"};
         double resolution{std::numeric_limits<double>::quiet_NaN()};
@@ -85,7 +89,10 @@ namespace mhplan
         a partial volume, an SE(3) pose with only some of its z and axis keys, a zero rotation axis. */
     CfgProblem parseCfg(const std::string &text, const std::string &fileName);
 
-    /** \brief Read and parse a .cfg file. */
+    /** \brief The largest .cfg file read: 4 MiB (OMPL.app's are a few hundred bytes). */
+    constexpr std::size_t kMaxCfgBytes = std::size_t{4} << 20;
+
+    /** \brief Read and parse a .cfg file (a regular file of at most kMaxCfgBytes). */
     CfgProblem loadCfg(const std::string &path);
 
     /** \brief The problem with its meshes read: the OMPL set-up's specification. The volume, when the file
@@ -97,6 +104,8 @@ namespace mhplan
         MeshProblemSpec spec;
     };
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits = {});
+    /** \brief The same for a problem already parsed (parseCfg). */
+    LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits = {});
 } // namespace mhplan
 
 #endif
