@@ -402,9 +402,12 @@ namespace mhplan
         {
             // The search runs on the motion validator alone; a path is reported only when it passes the
             // validator margin too (pushed clear of the obstacles it touches; docs/variants.md).
+            // A path that cannot be made to pass counts as invalid, so that the search leaves a way round
+            // that only the validator's gaps allow.
             MemeticPath q = path;
-            if (toolkit_->makeStrict(q, stop_))
-                record(q, pathCost(q));
+            if (!toolkit_->makeStrict(q, stop_))
+                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            record(q, pathCost(q));
             return c;
         }
         record(path, c);
@@ -669,6 +672,8 @@ namespace mhplan
             polishedSource_ = pop_[b].cost;
             if (toolkit_->makeStrict(q, stop_))
                 polished_.swap(q);
+            else if (!stopRequested())
+                pop_[b].cost = std::numeric_limits<double>::infinity(); // as an invalid path
         }
         if (polished_.empty())
             return;
