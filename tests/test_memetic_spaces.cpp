@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -217,35 +218,32 @@ TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)
     }
 }
 
-TEST(MemeticMargin, ParameterRoundTripsAndIsRefusedOutOfRange)
+TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
 {
     og::SimpleSetupPtr ss = appProblem(0.01);
     ob::PlannerPtr p = builtinPlanners().create("GA-MEM", ss->getSpaceInformation());
-    EXPECT_EQ(p->params()["validator_margin"].getValue(), "0.5");
-    ASSERT_TRUE(p->params().setParam("validator_margin", "1.5"));
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    EXPECT_FALSE(p->params().setParam("validator_margin", "-0.1"));
-    EXPECT_FALSE(p->params().setParam("validator_margin", "5"));
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
+    const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(p);
+    struct Case
+    {
+        const char *name, *byDefault, *good, *low, *high;
+        std::function<double()> get;
+    };
+    for (const Case &c :
+         {Case{"validator_margin", "0.5", "1.5", "-0.1", "5", [&] { return mp->getValidatorMargin(); }},
+          Case{"validator_clearance", "0.03", "0.1", "-0.01", "0.6",
+               [&] { return mp->getValidatorClearance(); }}})
+    {
+        EXPECT_EQ(p->params()[c.name].getValue(), c.byDefault) << c.name;
+        ASSERT_TRUE(p->params().setParam(c.name, c.good)) << c.name;
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        EXPECT_FALSE(p->params().setParam(c.name, c.low)) << c.name;
+        EXPECT_FALSE(p->params().setParam(c.name, c.high)) << c.name;
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        EXPECT_DOUBLE_EQ(c.get(), std::stod(c.good)) << c.name;
+    }
     // Tied to the validator: 1.5 sample spacings of the DiscreteMotionValidator (0.01 x extent).
     const double extent = ss->getSpaceInformation()->getMaximumExtent();
-    EXPECT_NEAR(std::dynamic_pointer_cast<MemeticPlanner>(p)->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
-}
-
-TEST(MemeticMargin, ClearanceRoundTripsAndIsRefusedOutOfRange)
-{
-    og::SimpleSetupPtr ss = appProblem(0.01);
-    ob::PlannerPtr p = builtinPlanners().create("GA-MEM", ss->getSpaceInformation());
-    EXPECT_EQ(p->params()["validator_clearance"].getValue(), "0.03");
-    ASSERT_TRUE(p->params().setParam("validator_clearance", "0.1"));
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorClearance(), 0.1);
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    EXPECT_FALSE(p->params().setParam("validator_clearance", "-0.01"));
-    EXPECT_FALSE(p->params().setParam("validator_clearance", "0.6"));
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorClearance(), 0.1);
+    EXPECT_NEAR(mp->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
 }
 
 TEST(MemeticMargin, ANarrowGapStaysUsable)
