@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -217,21 +218,76 @@ TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)
     }
 }
 
-TEST(MemeticMargin, ParameterRoundTripsAndIsRefusedOutOfRange)
+TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
 {
     og::SimpleSetupPtr ss = appProblem(0.01);
     ob::PlannerPtr p = builtinPlanners().create("GA-MEM", ss->getSpaceInformation());
-    EXPECT_EQ(p->params()["validator_margin"].getValue(), "0.5");
-    ASSERT_TRUE(p->params().setParam("validator_margin", "1.5"));
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
-    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    EXPECT_FALSE(p->params().setParam("validator_margin", "-0.1"));
-    EXPECT_FALSE(p->params().setParam("validator_margin", "5"));
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    EXPECT_DOUBLE_EQ(std::dynamic_pointer_cast<MemeticPlanner>(p)->getValidatorMargin(), 1.5);
+    const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(p);
+    struct Case
+    {
+        const char *name, *byDefault, *good, *low, *high;
+        std::function<double()> get;
+    };
+    for (const Case &c :
+         {Case{"validator_margin", "0.5", "1.5", "-0.1", "5", [&] { return mp->getValidatorMargin(); }},
+          Case{"validator_clearance", "0.03", "0.1", "-0.01", "0.6",
+               [&] { return mp->getValidatorClearance(); }}})
+    {
+        EXPECT_EQ(p->params()[c.name].getValue(), c.byDefault) << c.name;
+        ASSERT_TRUE(p->params().setParam(c.name, c.good)) << c.name;
+        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+        EXPECT_FALSE(p->params().setParam(c.name, c.low)) << c.name;
+        EXPECT_FALSE(p->params().setParam(c.name, c.high)) << c.name;
+        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        EXPECT_DOUBLE_EQ(c.get(), std::stod(c.good)) << c.name;
+    }
     // Tied to the validator: 1.5 sample spacings of the DiscreteMotionValidator (0.01 x extent).
     const double extent = ss->getSpaceInformation()->getMaximumExtent();
-    EXPECT_NEAR(std::dynamic_pointer_cast<MemeticPlanner>(p)->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
+    EXPECT_NEAR(mp->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
+}
+
+TEST(MemeticMargin, ANarrowGapStaysUsable)
+{
+    // A wall across the square (0.8 m thick, wider than the sample spacing s = 0.57 m) with one gap of 0.5 m,
+    // narrower than twice the margin (2 x 0.28 m): the margin finds the wall beside the segment through the
+    // gap and keeps only the clearance (0.03 s = 1.7 cm) from it, so the straight path through the gap is
+    // returned (validator_clearance = 0, the plain sideways margin, refuses every path through it).
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const auto valid = [](double x, double y)
+    { return std::abs(x - 10.0) > 0.4 || std::abs(y - 10.0) < 0.25; };
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 20.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker(
+        [&](const ob::State *s)
+        {
+            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+            return valid(v[0], v[1]);
+        });
+    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+    si->setStateValidityCheckingResolution(0.02);
+    si->setup();
+    og::SimpleSetup ss(si);
+    ob::ScopedState<> start(space), goal(space);
+    start[0] = 1.0;
+    start[1] = 10.0;
+    goal[0] = 19.0;
+    goal[1] = 10.1;
+    ss.setStartAndGoalStates(start, goal);
+    ss.setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+    ob::PlannerPtr p = builtinPlanners().create("GA-MEM", si, {{"seed", "3"}, {"max_iterations", "3"}});
+    ss.setPlanner(p);
+    ss.setup();
+    ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
+    const og::PathGeometric &path = ss.getSolutionPath();
+    EXPECT_LT(path.length(), 18.01);
+    for (std::size_t i = 1; i < path.getStateCount(); ++i)
+    {
+        const double *a = path.getState(i - 1)->as<ob::RealVectorStateSpace::StateType>()->values;
+        const double *b = path.getState(i)->as<ob::RealVectorStateSpace::StateType>()->values;
+        for (int k = 0; k <= 1000; ++k)
+            EXPECT_TRUE(valid(a[0] + (b[0] - a[0]) * k / 1000.0, a[1] + (b[1] - a[1]) * k / 1000.0));
+    }
 }
 
 TEST(MemeticMargin, DiscreteValidatorPathsPassADenseCheck)

@@ -53,9 +53,13 @@ namespace mhplan
             "generations without improvement before a restart (the elite kept); 0 = auto: 3 planar, 40 "
             "other spaces"};
         constexpr ParamRange kBisections{"bisections", 4, 1, 40, "bisection steps of each pull move"};
-        constexpr ParamRange kValidatorMargin{
-            "validator_margin", 0, 0.05, 4,
-            "margin kept with OMPL's DiscreteMotionValidator, in its sample spacings (0 = none)"};
+        constexpr ParamRange kValidatorMargin{"validator_margin", 0, 0.05, 4,
+                                              "with OMPL's DiscreteMotionValidator: distance at which "
+                                              "obstacles beside a segment are looked for, "
+                                              "in its sample spacings (0 = no margin)"};
+        constexpr ParamRange kValidatorClearance{"validator_clearance", 0, 0.005, 0.5,
+                                                 "clearance kept from the obstacles the margin finds, in "
+                                                 "sample spacings (0 = refuse the segment)"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -98,6 +102,8 @@ namespace mhplan
                                     &MemeticPlanner::getBisections);
         declareRanged<double>(params(), this, kValidatorMargin, &MemeticPlanner::setValidatorMargin,
                               &MemeticPlanner::getValidatorMargin);
+        declareRanged<double>(params(), this, kValidatorClearance, &MemeticPlanner::setValidatorClearance,
+                              &MemeticPlanner::getValidatorClearance);
 
         addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
         addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
@@ -208,6 +214,12 @@ namespace mhplan
         validatorMargin_ = m;
     }
 
+    void MemeticPlanner::setValidatorClearance(double c)
+    {
+        checkParameter(kValidatorClearance, c);
+        validatorClearance_ = c;
+    }
+
     double MemeticPlanner::marginDistance() const
     {
         // Only OMPL's sampling validator leaves gaps between its samples; mhplan's exact and certified
@@ -311,7 +323,8 @@ namespace mhplan
             toolkit_ = std::make_unique<MemeticToolkit>(si_, rng_);
         toolkit_->setBounds(box);
         toolkit_->setBisections(bisections_);
-        toolkit_->setMargin(marginDistance());
+        const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
+        toolkit_->setMargin(margin, validatorClearance_ * spacing);
         toolkit_->setFixedPoints(start_, goal_);
         toolkit_->resetCounts();
         toolkit_->clearCache(); // the margin and the fixed points are part of every cached verdict
@@ -364,6 +377,13 @@ namespace mhplan
         return true;
     }
 
+    bool MemeticPlanner::improvesOn(double cost) const
+    {
+        const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
+        return !haveSolution_ ||
+               (opt ? opt->isCostBetterThan(ob::Cost(cost), bestCostObj_) : cost < bestCostObj_.value());
+    }
+
     void MemeticPlanner::record(const MemeticPath &path, double cost)
     {
         if (!improves(cost))
@@ -378,6 +398,18 @@ namespace mhplan
     {
         ++evaluationCount_;
         const double c = pathCost(path);
+        if (toolkit_->margin() > 0.0 && !toolkit_->strict() && improvesOn(c))
+        {
+            // The search runs on the motion validator alone; a path is reported only when it passes the
+            // validator margin too (pushed clear of the obstacles it touches; docs/variants.md).
+            // A path that cannot be made to pass counts as invalid, so that the search leaves a way round
+            // that only the validator's gaps allow.
+            MemeticPath q = path;
+            if (!toolkit_->makeStrict(q, stop_))
+                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            record(q, pathCost(q));
+            return c;
+        }
         record(path, c);
         return c;
     }
@@ -634,11 +666,19 @@ namespace mhplan
         const std::size_t b = bestIndex();
         if (polished_.empty() || pop_[b].cost < polishedSource_)
         {
-            // A new best individual: polish it from now on (its coarse version stays in the population).
-            polished_ = pop_[b].path;
+            // A new best individual: polish it from now on (its coarse version stays in the population),
+            // under the validator margin (docs/variants.md), once it has been pushed clear of it.
+            MemeticPath q = pop_[b].path;
             polishedSource_ = pop_[b].cost;
+            if (toolkit_->makeStrict(q, stop_))
+                polished_.swap(q);
+            else if (!stopRequested())
+                pop_[b].cost = std::numeric_limits<double>::infinity(); // as an invalid path
         }
+        if (polished_.empty())
+            return;
         MemeticPath p = polished_;
+        const MemeticToolkit::StrictScope strict(*toolkit_);
         toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000, true);
         if (stopRequested() || !toolkit_->pathValid(p))
             return;

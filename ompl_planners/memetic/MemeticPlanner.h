@@ -135,6 +135,10 @@ namespace mhplan
             docs/variants.md, "No corner the validator cannot see"). */
         void setValidatorMargin(double m);
         double getValidatorMargin() const { return validatorMargin_; }
+        /** \brief The clearance kept from obstacles the margin finds, in sample spacings (0.005..0.5; 0 =
+            refuse a segment with an obstacle within the margin; docs/variants.md). */
+        void setValidatorClearance(double c);
+        double getValidatorClearance() const { return validatorClearance_; }
         /** \brief The margin in the space's distance for the current motion validator: validator_margin x
             the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
         double marginDistance() const;
@@ -247,6 +251,8 @@ namespace mhplan
         double pathCost(const MemeticPath &path);
         void publishCounts();
         /** \brief True when \e cost improves the best (then bestCostObj_ and the counters are updated). */
+        /** \brief Would \e cost improve on the best (no bookkeeping)? */
+        bool improvesOn(double cost) const;
         bool improves(double cost);
         unsigned long motionCheckTotal() const;
 
@@ -274,6 +280,7 @@ namespace mhplan
         unsigned int eliteRewalks_{0};
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
+        double validatorClearance_{0.03};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         std::function<bool()> stop_;

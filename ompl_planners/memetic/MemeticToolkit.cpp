@@ -80,63 +80,6 @@ namespace mhplan
         return static_cast<std::size_t>(h);
     }
 
-    bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
-    {
-        if (!inBounds(a) || !inBounds(b))
-            return false;
-        // An unchanged segment is never checked twice (docs/variants.md, "Checks").
-        const SegmentKey key{a.x, a.y, b.x, b.y};
-        const auto it = cache_.find(key);
-        if (it != cache_.end())
-        {
-            ++cacheHits_;
-            return it->second;
-        }
-        const bool valid = checkSegment(a, b);
-        if (cache_.size() >= (std::size_t(1) << 20))
-            cache_.clear();
-        cache_.emplace(key, valid);
-        return valid;
-    }
-
-    bool MemeticToolkit::checkSegment(const Vec2 &a, const Vec2 &b)
-    {
-        ++motionChecks_;
-        setStatePosition(a_, a);
-        setStatePosition(b_, b);
-        if (!si_->checkMotion(a_, b_))
-            return false;
-        return margin_ <= 0.0 || marginValid(a, b);
-    }
-
-    bool MemeticToolkit::marginValid(const Vec2 &a, const Vec2 &b)
-    {
-        // The validator margin (docs/variants.md, "No corner the validator cannot see"): the two copies of
-        // the segment shifted by the margin to either side must pass the validator too. An obstacle the
-        // segment enters between two of the validator's samples is crossed by the copy on its side over a
-        // longer chord (for a disc of radius R >= m or a corner of at least 90 degrees, at least twice the
-        // margin), which a margin of half the sample spacing makes visible. The start and the goal are not
-        // shifted (the copies fan out from them).
-        const Vec2 d = b - a;
-        const double l = norm(d);
-        if (l <= 0.0)
-            return true;
-        const Vec2 n(-d.y / l * margin_, d.x / l * margin_);
-        for (const double side : {1.0, -1.0})
-        {
-            const Vec2 a2 = a == fixedA_ || a == fixedB_ ? a : a + n * side;
-            const Vec2 b2 = b == fixedA_ || b == fixedB_ ? b : b + n * side;
-            if (!inBounds(a2) || !inBounds(b2))
-                continue; // the bounds are the bounds: no margin is kept from them
-            ++motionChecks_;
-            setStatePosition(a_, a2);
-            setStatePosition(b_, b2);
-            if (!si_->isValid(a_) || !si_->checkMotion(a_, b_))
-                return false;
-        }
-        return true;
-    }
-
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b, double &fraction)
     {
         fraction = 0.0;

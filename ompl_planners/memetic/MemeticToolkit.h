@@ -67,11 +67,17 @@ namespace mhplan
         /** \brief Bisection steps of every pull move (4..40). */
         void setBisections(unsigned int n) { bisections_ = n; }
 
-        /** \brief The validator margin m (0: none): every segment the toolkit accepts also has its two copies
-            shifted by m to either side (the start and goal unshifted) accepted by the validity checker at
-            their first end and the motion validator (docs/variants.md, "No corner the validator cannot
-            see"). */
-        void setMargin(double m) { margin_ = m; }
+        /** \brief The validator margin (docs/variants.md, "No corner the validator cannot see"): \e m the
+            distance at which obstacles beside a segment are looked for (its two copies shifted by m sampled
+            every 2m; 0: no margin at all), \e clearance the distance kept from the obstacles found (the
+            copies shifted by it checked every 2 x clearance within 2m along the segment of where an obstacle
+            was found; 0: a segment with an obstacle within m is refused, the plain sideways-copy margin). The
+            start and goal are never shifted. */
+        void setMargin(double m, double clearance = 0.0)
+        {
+            margin_ = m;
+            clearance_ = clearance;
+        }
         double margin() const { return margin_; }
         /** \brief The points never shifted by the margin (the query's start and goal). */
         void setFixedPoints(const Vec2 &a, const Vec2 &b)
@@ -80,9 +86,32 @@ namespace mhplan
             fixedB_ = b;
         }
 
-        /** \brief The motion validator's verdict on a segment (both ends inside the bounds), and the
-            margin's. Counted. */
+        /** \brief The motion validator's verdict on a segment (both ends inside the bounds), and in the
+            strict mode (setStrict) the margin's. Counted. */
         bool motionValid(const Vec2 &a, const Vec2 &b);
+        /** \brief The strict mode: motionValid() and pathValid() ask the margin too (the paths the planner
+            reports, docs/variants.md); the search runs without it. */
+        void setStrict(bool strict) { strict_ = strict; }
+        bool strict() const { return strict_; }
+        /** \brief The strict mode for a scope. */
+        class StrictScope
+        {
+          public:
+            explicit StrictScope(MemeticToolkit &t) : t_(t), old_(t.strict_) { t_.strict_ = true; }
+            ~StrictScope() { t_.strict_ = old_; }
+            StrictScope(const StrictScope &) = delete;
+            StrictScope &operator=(const StrictScope &) = delete;
+
+          private:
+            MemeticToolkit &t_;
+            bool old_;
+        };
+        /** \brief Make \e path pass the strict mode: the waypoints of every segment the margin refuses are
+            pushed outward (away from their neighbours' chord, 2c, 4c, ... up to 8 rounds). True when every
+            segment passes (always without a margin). */
+        bool makeStrict(MemeticPath &path, const std::function<bool()> &stop);
+        /** \brief Segments the margin checked (a check of its own, beside motionChecks()). */
+        unsigned long marginChecks() const { return marginChecks_; }
         /** \brief motionValid(); when invalid, \e fraction is the motion validator's last valid fraction
             of the segment (checkMotion with lastValid). Counted. */
         bool motionValid(const Vec2 &a, const Vec2 &b, double &fraction);
@@ -96,6 +125,7 @@ namespace mhplan
         void resetCounts()
         {
             motionChecks_ = 0;
+            marginChecks_ = 0;
             cacheHits_ = 0;
         }
         /** \brief Forget every cached segment verdict (a new problem, clear()). The cache is keyed by the
@@ -184,7 +214,13 @@ namespace mhplan
         double bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b);
         bool inBounds(const Vec2 &p) const { return bounds_.contains(p); }
         bool marginValid(const Vec2 &a, const Vec2 &b);
+        bool checkPoint(const Vec2 &p);
+        void pushOut(MemeticPath &path, std::size_t j, double step);
+        bool strict_{false};
+        unsigned long marginChecks_{0};
         double margin_{0.0};
+        double clearance_{0.0};
+        std::vector<std::pair<double, double>> windows_;
         Vec2 fixedA_, fixedB_;
 
         ompl::base::SpaceInformationPtr si_;
@@ -211,8 +247,7 @@ namespace mhplan
         {
             std::size_t operator()(const SegmentKey &k) const;
         };
-        std::unordered_map<SegmentKey, bool, SegmentHash> cache_;
-        bool checkSegment(const Vec2 &a, const Vec2 &b);
+        std::unordered_map<SegmentKey, char, SegmentHash> cache_; ///< MemeticMargin.cpp's verdict codes
 
         // The lazy roadmap: points (0 = start, 1 = goal), edges with a state (0 unknown, 1 valid, 2 invalid).
         struct RoadmapEdge
