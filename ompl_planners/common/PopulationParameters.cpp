@@ -13,14 +13,9 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 10000,
-                                             "N, individuals (candidate paths) per iteration"};
         constexpr ParamRange kIterations{
             "iterations", 1, 1, 1000000,
             "T, length of the coefficient schedules (the papers' iteration budget); does not stop a run"};
-        constexpr ParamRange kMaxIterations{
-            "max_iterations", 0, 1, 1000000,
-            "iterations per solve() call; 0 = until the time limit (the schedule restarts after T)"};
         constexpr ParamRange kWaypoints{"waypoints", 1, 1, 100,
                                         "m, intermediate waypoints of a candidate path"};
         constexpr ParamRange kSplineSamples{"spline_samples", 2, 1, 100000,
@@ -45,8 +40,6 @@ namespace mhplan
         constexpr ParamRange kCrossingWeight{
             "crossing_weight", 0, 0.1, 1000000,
             "w_c of [GMS]: weight of the obstacle crossings of an infeasible path"};
-        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295,
-                                   "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
         constexpr ParamRange kStagnationRestart{
             "stagnation_restart", 0, 1, 1000000,
             "restart the population after this many iterations without improvement (0 = off)"};
@@ -57,12 +50,8 @@ namespace mhplan
 
     void PopulationPlanner::declareParameters()
     {
-        declareRanged<unsigned int>(params(), this, kPopulationSize, &PopulationPlanner::setPopulationSize,
-                                    &PopulationPlanner::getPopulationSize);
         declareRanged<unsigned int>(params(), this, kIterations, &PopulationPlanner::setIterations,
                                     &PopulationPlanner::getIterations);
-        declareRanged<unsigned int>(params(), this, kMaxIterations, &PopulationPlanner::setMaxIterations,
-                                    &PopulationPlanner::getMaxIterations);
         declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
                                     &PopulationPlanner::getWaypoints);
         declareChoice(params(), this, "decoding", &PopulationPlanner::setDecoding,
@@ -94,8 +83,6 @@ namespace mhplan
         declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
                       &PopulationPlanner::getInfeasibleBase, "path,constant",
                       "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
-        declareRanged<unsigned long>(params(), this, kSeed, &PopulationPlanner::setSeed,
-                                     &PopulationPlanner::getSeed);
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
@@ -122,22 +109,16 @@ namespace mhplan
 
     void PopulationPlanner::setPopulationSize(unsigned int n)
     {
-        checkParameter(kPopulationSize, n);
-        if (n != populationSize_)
+        checkParameter(SharedParameterRanges::populationSize, n);
+        if (n != getPopulationSize())
             invalidate();
-        populationSize_ = n;
+        PlannerBase::setPopulationSize(n);
     }
 
     void PopulationPlanner::setIterations(unsigned int t)
     {
         checkParameter(kIterations, t);
         iterations_ = t;
-    }
-
-    void PopulationPlanner::setMaxIterations(unsigned int n)
-    {
-        checkParameter(kMaxIterations, n);
-        maxIterations_ = n;
     }
 
     void PopulationPlanner::setWaypoints(unsigned int m)
@@ -242,8 +223,7 @@ namespace mhplan
 
     void PopulationPlanner::setSeed(unsigned long seed)
     {
-        checkParameter(kSeed, static_cast<double>(seed));
-        seed_ = seed;
+        PlannerBase::setSeed(seed); // checks the range
         invalidate();
     }
 

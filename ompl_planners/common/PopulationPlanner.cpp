@@ -29,10 +29,8 @@ namespace mhplan
 
     PopulationPlanner::PopulationPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
                                          const PopulationDefaults &defaults)
-        : ob::Planner(si, name), populationSize_(defaults.populationSize), iterations_(defaults.iterations),
-          waypoints_(defaults.waypoints), decoding_(defaults.decoding),
-          decodingAuto_(defaults.decoding == PathDecoding::Spline),
-          bestCostValue_(std::numeric_limits<double>::infinity())
+        : PlannerBase(si, name, true), iterations_(defaults.iterations), waypoints_(defaults.waypoints),
+          decoding_(defaults.decoding), decodingAuto_(defaults.decoding == PathDecoding::Spline)
     {
         if (const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get()))
             spaceDim_ = std::max(1u, space->getDimension());
@@ -53,21 +51,15 @@ namespace mhplan
         specs_.multithreaded = false;
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
 
+        declarePopulationSize(defaults.populationSize, "N, individuals (candidate paths) per iteration");
+        declareMaxIterations("iterations per solve() call; 0 = until the time limit (the schedule restarts "
+                             "after T)");
         declareParameters();
-
-        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
-        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
-        addPlannerProgressProperty("fitness evaluations INTEGER",
-                                   [this] { return std::to_string(evaluationCount()); });
+        declareProgress(true);
     }
 
     PopulationPlanner::~PopulationPlanner()
     {
-        if (costA_ != nullptr)
-            si_->freeState(costA_);
-        if (costB_ != nullptr)
-            si_->freeState(costB_);
-        freeStates(*si_, plannerDataStates_);
         freeBestStates();
     }
 
@@ -82,14 +74,6 @@ namespace mhplan
         // Structural parameters change the meaning of the population: start afresh.
         if (problemReady_ || initialised_)
             clear();
-    }
-
-    void PopulationPlanner::refuseSetup(const std::string &message)
-    {
-        setup_ = false;
-        const std::string text = getName() + ": " + message;
-        OMPL_ERROR("%s", text.c_str());
-        throw ompl::Exception(text);
     }
 
     void PopulationPlanner::checkSpace()
@@ -166,9 +150,8 @@ namespace mhplan
 
     void PopulationPlanner::clear()
     {
-        ob::Planner::clear();
+        PlannerBase::clear();
         clearPopulation();
-        freeStates(*si_, plannerDataStates_);
         freeBestStates();
         problemReady_ = false;
         initialised_ = false;
@@ -177,9 +160,6 @@ namespace mhplan
         bestFeasiblePath_.clear();
         bestInfeasiblePath_.clear();
         gmsOps_.reset();
-        bestCostValue_ = std::numeric_limits<double>::infinity();
-        iterationCount_ = 0;
-        evaluationCount_ = 0;
         epochStart_ = 0;
         epochLength_ = 0;
         sinceImprovement_ = 0;
@@ -190,18 +170,9 @@ namespace mhplan
     {
         checkSpace();
         const unsigned int k = spaceDim_;
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        const ob::State *start = nullptr, *goal = nullptr;
+        if (!startAndGoal(start, goal))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
         if (!realVector_)
             return prepareStateProblem(start, goal);
         const double *sv = start->as<ob::RealVectorStateSpace::StateType>()->values;
@@ -224,20 +195,14 @@ namespace mhplan
             kind = parseFitnessKind(fitnessName_);
         if (!fitness_)
             fitness_ = std::make_unique<PathFitness>(si_);
-        if (costA_ == nullptr)
-        {
-            costA_ = si_->allocState();
-            costB_ = si_->allocState();
-        }
         fitness_->configure(kind, weights_);
         decoder_.configure(startX_.data(), goalX_.data(), k, waypoints_, decoding_, splineSamples_);
         bestFeasiblePath_.reserve(std::size_t(std::max(256u, splineSamples_)) * k);
         bestInfeasiblePath_.reserve(std::size_t(std::max(256u, splineSamples_)) * k);
-        if (seed_ != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        seedRng();
         const PenaltyMode mode = fitness_->penaltyMode();
         OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u waypoints in R^%u, %s decoding, %s fitness%s",
-                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), getPopulationSize(),
                     iterations_, waypoints_, k, toString(decoding_).c_str(), toString(kind).c_str(),
                     mode == PenaltyMode::ExactCircles ? " (exact circle formula)"
                     : mode == PenaltyMode::ValidityOnly
@@ -271,11 +236,10 @@ namespace mhplan
             bestFeasibleStates_.push_back(si_->allocState());
             bestInfeasibleStates_.push_back(si_->allocState());
         }
-        if (seed_ != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        seedRng();
         OMPL_INFORM("%s: seed %lu, N = %u, T = %u, m = %u waypoint states of the space '%s' (%u coordinates "
                     "each), polyline decoding by the space's interpolation, lrsma fitness%s",
-                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+                    getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), getPopulationSize(),
                     iterations_, waypoints_, si_->getStateSpace()->getName().c_str(), n,
                     stateFitness_->penaltyMode() == PenaltyMode::ValidityOnly
                         ? " (the validity checker computes no clearance: the penalty counts invalid samples)"
@@ -299,10 +263,11 @@ namespace mhplan
         if (epochLength_ == 0)
             epochLength_ = iterations_;
         // Anytime restarts only without an iteration budget (so iteration-bounded runs are unchanged).
-        const bool restarts = stagnationRestart_ > 0 && maxIterations_ == 0;
+        const unsigned int maxIterations = getMaxIterations();
+        const bool restarts = stagnationRestart_ > 0 && maxIterations == 0;
         if (!restarts)
             epochLength_ = iterations_;
-        while (initialised_ && !ptc() && !satisfied() && (maxIterations_ == 0 || done < maxIterations_))
+        while (initialised_ && !ptc() && !satisfied() && (maxIterations == 0 || done < maxIterations))
         {
             // Without restarts epochStart_ = 0 and epochLength_ = T: t cycles through 1..T as before.
             const auto t =
@@ -436,13 +401,14 @@ namespace mhplan
             if (opt)
             {
                 cost = opt->identityCost();
-                double *a = costA_->as<ob::RealVectorStateSpace::StateType>()->values;
-                double *b = costB_->as<ob::RealVectorStateSpace::StateType>()->values;
+                ob::State *costA = scratchState(0), *costB = scratchState(1);
+                double *a = costA->as<ob::RealVectorStateSpace::StateType>()->values;
+                double *b = costB->as<ob::RealVectorStateSpace::StateType>()->values;
                 for (std::size_t i = 1; i < path.size(); ++i)
                 {
                     std::copy(path[i - 1], path[i - 1] + path.dim, a);
                     std::copy(path[i], path[i] + path.dim, b);
-                    cost = opt->combineCosts(cost, opt->motionCost(costA_, costB_));
+                    cost = opt->combineCosts(cost, opt->motionCost(costA, costB));
                 }
             }
             const bool better = !haveFeasible_ || (opt ? opt->isCostBetterThan(cost, bestFeasibleCost_)
@@ -520,9 +486,9 @@ namespace mhplan
 
     void PopulationPlanner::fireIntermediate()
     {
-        reportImprovement(
-            this, pdef_, *si_, pathCount(true),
-            [this](ob::State *s, std::size_t i) { pathState(true, s, i); }, bestFeasibleCost_);
+        reportImprovementOf(
+            pathCount(true), [this](ob::State *s, std::size_t i) { pathState(true, s, i); },
+            bestFeasibleCost_);
     }
 
     void PopulationPlanner::reportSolution(bool &exact, bool &approximate)
@@ -533,20 +499,17 @@ namespace mhplan
         const bool feasible = haveFeasible_;
         exact = feasible;
         approximate = !exact;
-        addSolution(
-            *this, pdef_, si_, pathCount(feasible),
-            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, exact,
-            bestFeasibleCost_, bestInfeasibleViolation_);
+        addSolutionPath(
+            pathCount(feasible), [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); },
+            exact, bestFeasibleCost_, bestInfeasibleViolation_);
     }
 
     void PopulationPlanner::getPlannerData(ob::PlannerData &data) const
     {
-        ob::Planner::getPlannerData(data);
         const bool feasible = haveFeasible_;
-        addPathToPlannerData(
-            *si_, pathCount(feasible),
-            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, true, data,
-            plannerDataStates_);
+        pathToPlannerData(
+            data, pathCount(feasible),
+            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, true);
     }
 
 } // namespace mhplan

@@ -6,15 +6,12 @@
 #define MHPLAN_POPULATION_PLANNER_H
 
 #include "mhplan/planners/common/Fitness.h"
+#include "mhplan/planners/common/PlannerBase.h"
 #include "mhplan/planners/common/PathEncoding.h"
 #include "mhplan/planners/common/StateParametrisation.h"
 #include "mhplan/planners/common/StatePathFitness.h"
 #include "mhplan/base/Parameters.h"
 
-#include <ompl/base/Planner.h>
-#include <ompl/util/RandomNumbers.h>
-
-#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -111,7 +108,7 @@ namespace mhplan
         plane (the operators are planar, see PathOperators): setup() refuses the switches otherwise, naming
         the parameter. Buffers: the operated point list, the re-encoded candidate and the ranking are members
         reserved once; the operators' inserts into the point list may grow it the first time only. */
-    class PopulationPlanner : public ompl::base::Planner
+    class PopulationPlanner : public PlannerBase
     {
       public:
         PopulationPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
@@ -125,15 +122,11 @@ namespace mhplan
             to a goal vertex; the states belong to the planner until clear() or its destruction. */
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief Population size N (2..10000). */
-        void setPopulationSize(unsigned int n);
-        unsigned int getPopulationSize() const { return populationSize_; }
+        /** \brief Population size N (SharedParameterRanges); a change starts the search afresh. */
+        void setPopulationSize(unsigned int n) override;
         /** \brief Schedule length T of the algorithm's coefficients (1..1000000). */
         void setIterations(unsigned int t);
         unsigned int getIterations() const { return iterations_; }
-        /** \brief Iterations per solve() call, 0 = until the termination condition (0..1000000). */
-        void setMaxIterations(unsigned int n);
-        unsigned int getMaxIterations() const { return maxIterations_; }
         /** \brief Number m of intermediate waypoints (1..100). */
         void setWaypoints(unsigned int m);
         unsigned int getWaypoints() const { return waypoints_; }
@@ -183,9 +176,8 @@ namespace mhplan
         unsigned int getStagnationRestart() const { return stagnationRestart_; }
         /** \brief Restarts since the last clear(). */
         unsigned long restartCount() const { return restarts_; }
-        /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
-        void setSeed(unsigned long seed);
-        unsigned long getSeed() const { return seed_; }
+        /** \brief Seed of this planner's RNG (SharedParameterRanges); a change starts the search afresh. */
+        void setSeed(unsigned long seed) override;
 
         /** \brief [GMS] node repair + line-segment repair on the operated individuals (a switch, off by
          * default). */
@@ -224,12 +216,6 @@ namespace mhplan
         /** \brief The state parametrisation in use (null on a RealVectorStateSpace and before setup()). */
         const StateParametrisation *parametrisation() const { return realVector_ ? nullptr : param_.get(); }
 
-        /** \brief Objective cost of the best feasible path (infinity before one exists). */
-        double bestCost() const { return bestCostValue_.load(); }
-        /** \brief Completed iterations since the last clear(). */
-        unsigned long iterationCount() const { return iterationCount_.load(); }
-        /** \brief Fitness evaluations since the last clear(). */
-        unsigned long evaluationCount() const { return evaluationCount_.load(); }
         /** \brief The fitness actually in use (after resolving "auto"); valid after the first solve(). */
         FitnessKind fitnessKind() const
         {
@@ -303,15 +289,9 @@ namespace mhplan
         const double *goalCoordinates() const { return goalX_.data(); }
         PathFitness &fitness() { return *fitness_; }
 
-        /** \brief Leave the planner not set up, log \e message with OMPL_ERROR (prefixed with the planner's
-            name) and throw ompl::Exception with the same text: how setup() refuses a problem. */
-        [[noreturn]] void refuseSetup(const std::string &message);
-
         /** \brief Mark the structure (population size, dimension, decoding) changed: clear() on next solve.
          */
         void invalidate();
-
-        ompl::RNG rng_;
 
       private:
         /** \brief Declare the parameters on params() (PopulationParameters.cpp). */
@@ -354,9 +334,7 @@ namespace mhplan
         /** \brief setup()'s check of the gms_* switches (refuseSetup() naming the parameter). */
         void checkGmsSwitches();
 
-        unsigned int populationSize_;
         unsigned int iterations_;
-        unsigned int maxIterations_{0};
         unsigned int waypoints_;
         PathDecoding decoding_;
         /** \brief decoding = auto: decoding_ is Spline, used in R^k only. */
@@ -364,7 +342,6 @@ namespace mhplan
         unsigned int splineSamples_{100};
         std::string fitnessName_{"auto"};
         FitnessWeights weights_;
-        unsigned long seed_{0};
         unsigned int stagnationRestart_{0};
         unsigned long epochStart_{0};
         unsigned long epochLength_{0};
@@ -388,10 +365,6 @@ namespace mhplan
         std::vector<ompl::base::State *> bestFeasibleStates_, bestInfeasibleStates_;
         WaypointDecoder decoder_;
         std::unique_ptr<PathFitness> fitness_;
-        /** \brief State buffers for the objective's motion costs. */
-        ompl::base::State *costA_{nullptr};
-        ompl::base::State *costB_{nullptr};
-
         bool haveFeasible_{false};
         ompl::base::Cost bestFeasibleCost_;
         /** \brief Best paths as flat point lists (k values per point). */
@@ -402,8 +375,6 @@ namespace mhplan
         std::vector<double> bestInfeasiblePath_;
         /** \brief Reused buffer of evaluatePath(). */
         std::vector<double> planarPath_;
-        /** \brief States handed to PlannerData by getPlannerData(), freed by clear(). */
-        mutable std::vector<ompl::base::State *> plannerDataStates_;
         bool improved_{false};
 
         bool gmsInitial_{false};
@@ -414,10 +385,6 @@ namespace mhplan
         std::vector<Vec2> gmsPath_;
         std::vector<double> gmsCandidate_;
         std::vector<unsigned int> gmsOrder_;
-
-        std::atomic<double> bestCostValue_;
-        std::atomic<unsigned long> iterationCount_{0};
-        std::atomic<unsigned long> evaluationCount_{0};
     };
 } // namespace mhplan
 

@@ -3,12 +3,8 @@
 #ifndef MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
 #define MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
 
-#include "mhplan/planners/field/PotentialField.h"
+#include "mhplan/planners/field/FieldWalkPlanner.h"
 
-#include <ompl/base/Planner.h>
-
-#include <atomic>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,20 +35,17 @@ namespace mhplan
           (objective cost of the path once the goal is reached, else infinity), \c iterations (steps),
           \c fitness \c evaluations (J evaluations).
         Refuses in setup() a validity checker that does not compute clearance (see PotentialField). */
-    class ArtificialPotentialField : public ompl::base::Planner, public PotentialFieldSettings
+    class ArtificialPotentialField : public FieldWalkPlanner
     {
       public:
         explicit ArtificialPotentialField(const ompl::base::SpaceInformationPtr &si);
-        ~ArtificialPotentialField() override;
 
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
-        void setup() override;
-        void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief lambda, the step length (1e-6..1e6). */
-        void setStepSize(double v);
-        double getStepSize() const { return stepSize_; }
+        /** \brief lambda, the step length (parameter \c step_size, 1e-6..1e6). */
+        void setStepSize(double v) { setWalkStep(v); }
+        double getStepSize() const { return getWalkStep(); }
         /** \brief "directions" or "gradient". */
         void setDescent(const std::string &descent);
         std::string getDescent() const { return gradient_ ? "gradient" : "directions"; }
@@ -62,24 +55,12 @@ namespace mhplan
         /** \brief Finite-difference spacing of the gradient (1e-9..1). */
         void setGradientSpacing(double h);
         double getGradientSpacing() const { return gradientSpacing_; }
-        /** \brief Goal tolerance, 0 = lambda (0..1e6). */
-        void setGoalTolerance(double v);
-        double getGoalTolerance() const { return goalTolerance_; }
         /** \brief Steps without improvement of the best J that end the descent (1..1000000). */
         void setStallSteps(unsigned int n);
         unsigned int getStallSteps() const { return stallSteps_; }
         /** \brief Improvement of the best J that counts (0..1e6). */
         void setStallTolerance(double v);
         double getStallTolerance() const { return stallTolerance_; }
-        /** \brief Steps per solve() call, 0 = no limit (0..10000000). */
-        void setMaxIterations(unsigned int n);
-        unsigned int getMaxIterations() const { return maxIterations_; }
-        /** \brief Step budget of a descent (1..10000000). */
-        void setMaxSteps(unsigned int n);
-        unsigned int getMaxSteps() const { return maxSteps_; }
-
-        /** \brief The positions visited (start first). */
-        const std::vector<Vec2> &walk() const { return walk_; }
 
       private:
         enum class State
@@ -91,8 +72,7 @@ namespace mhplan
             BudgetSpent
         };
 
-        /** \brief The field defines the descent: a change restarts it. */
-        void fieldChanged() override;
+        bool reachedGoal() const override { return state_ == State::ReachedGoal; }
         bool prepare();
         /** \brief One descent step; false when the termination condition interrupted it (nothing moved). */
         bool step(const ompl::base::PlannerTerminationCondition &ptc);
@@ -100,35 +80,18 @@ namespace mhplan
         void finishIfAtGoal();
         ompl::base::PlannerStatus report();
 
-        double stepSize_{0.2};
         bool gradient_{false};
         unsigned int directions_{16};
         double gradientSpacing_{1e-4};
-        double goalTolerance_{0.0};
         unsigned int stallSteps_{50};
         double stallTolerance_{1e-6};
-        unsigned int maxIterations_{0};
-        unsigned int maxSteps_{100000};
 
-        std::unique_ptr<PotentialField> potential_;
-        bool ready_{false};
         State state_{State::Descending};
-        Vec2 robot_, goal_;
         double currentCost_{0.0};
         double bestCost_{0.0};
         unsigned long sinceImprovement_{0};
-        std::vector<Vec2> walk_;
         /** \brief (J, direction index) of the sampled directions, sorted each step. */
         std::vector<std::pair<double, unsigned int>> candidates_;
-        ompl::base::State *stateA_{nullptr};
-        ompl::base::State *stateB_{nullptr};
-        /** \brief The states handed to PlannerData by getPlannerData() (it keeps pointers), freed by clear().
-         */
-        mutable std::vector<ompl::base::State *> plannerDataStates_;
-
-        std::atomic<double> bestCostValue_;
-        std::atomic<unsigned long> steps_{0};
-        std::atomic<unsigned long> evaluations_{0};
     };
 } // namespace mhplan
 

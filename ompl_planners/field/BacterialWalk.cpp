@@ -20,18 +20,8 @@ namespace mhplan
     {
         constexpr double kInf = std::numeric_limits<double>::infinity();
 
-        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 10000,
-                                             "S, bacteria of each colony run"};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 10000000,
-                                            "robot steps per solve() call; 0 = until the walk ends"};
-        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295,
-                                   "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
-        constexpr ParamRange kRobotStep{"robot_step", 0.000001, 0.01, 1000000, "lambda, the robot's step"};
-        constexpr ParamRange kGoalTolerance{"goal_tolerance", 0, 0.01, 1000000,
-                                            "goal tolerance of the walk; 0 = robot_step"};
         constexpr ParamRange kSectorAngle{"sector_angle", 0, 1, 180,
                                           "half angle of the sector the bacteria start in (degrees)"};
-        constexpr ParamRange kMaxSteps{"max_steps", 1, 1, 10000000, "robot step budget of a walk"};
     } // namespace
 
     /** \brief The colony's view of the walk: J, where bacteria land, the sensing disc and the stop test. */
@@ -49,85 +39,30 @@ namespace mhplan
     };
 
     BacterialWalk::BacterialWalk(const ob::SpaceInformationPtr &si, bool adaptiveTumble)
-        : ob::Planner(si, adaptiveTumble ? "ATBFO" : "BFO"), ColonyParameters(adaptiveTumble),
-          adapter_(std::make_unique<Adapter>(*this)), bestCost_(kInf)
+        : FieldWalkPlanner(si, adaptiveTumble ? "ATBFO" : "BFO", true,
+                           {"robot_step", "lambda, the robot's step",
+                            "goal tolerance of the walk; 0 = robot_step", "robot step budget of a walk",
+                            "robot steps per solve() call; 0 = until the walk ends"},
+                           2000),
+          ColonyParameters(adaptiveTumble), adapter_(std::make_unique<Adapter>(*this))
     {
-        specs_.approximateSolutions = true;
-        specs_.optimizingPaths = false;
-        specs_.canReportIntermediateSolutions = true; // once, when the walk reaches the goal
-        specs_.multithreaded = false;
-        specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
-        declareParams();
-        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost_.load()); });
-        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(steps_.load()); });
-        addPlannerProgressProperty("fitness evaluations INTEGER",
-                                   [this] { return std::to_string(evaluations_.load()); });
-    }
-
-    BacterialWalk::~BacterialWalk()
-    {
-        if (stateA_ != nullptr)
-            si_->freeState(stateA_);
-        if (stateB_ != nullptr)
-            si_->freeState(stateB_);
-        freeStates(*si_, plannerDataStates_);
-    }
-
-    void BacterialWalk::declareParams()
-    {
-        using W = BacterialWalk;
-        declareRanged<unsigned int>(params(), this, kPopulationSize, &W::setPopulationSize,
-                                    &W::getPopulationSize);
+        declarePopulationSize(100, "S, bacteria of each colony run");
         declareColonyParams(params());
-        declareFieldParams(params_);
-        declareRanged<double>(params(), this, kRobotStep, &W::setRobotStep, &W::getRobotStep);
-        declareRanged<double>(params(), this, kGoalTolerance, &W::setGoalTolerance, &W::getGoalTolerance);
-        declareRanged<double>(params(), this, kSectorAngle, &W::setSectorAngle, &W::getSectorAngle);
-        declareRanged<unsigned int>(params(), this, kMaxSteps, &W::setMaxSteps, &W::getMaxSteps);
-        declareRanged<unsigned int>(params(), this, kMaxIterations, &W::setMaxIterations,
-                                    &W::getMaxIterations);
-        declareRanged<unsigned long>(params(), this, kSeed, &W::setSeed, &W::getSeed);
+        declareRanged<double>(params(), this, kSectorAngle, &BacterialWalk::setSectorAngle,
+                              &BacterialWalk::getSectorAngle);
     }
+
+    BacterialWalk::~BacterialWalk() = default;
 
     // ---------------------------------------------------------------------------------------------------
     // Parameters
 
     void BacterialWalk::setPopulationSize(unsigned int n)
     {
-        checkParameter(kPopulationSize, n);
-        if (n != populationSize_ && ready_)
+        checkParameter(SharedParameterRanges::populationSize, n);
+        if (n != getPopulationSize() && ready_)
             clear(); // the colony's size is fixed for a walk
-        populationSize_ = n;
-    }
-
-    void BacterialWalk::setMaxIterations(unsigned int n)
-    {
-        checkParameter(kMaxIterations, n);
-        maxIterations_ = n;
-    }
-
-    void BacterialWalk::setSeed(unsigned long seed)
-    {
-        checkParameter(kSeed, static_cast<double>(seed));
-        seed_ = seed;
-    }
-
-    void BacterialWalk::fieldChanged()
-    {
-        if (ready_)
-            clear();
-    }
-
-    void BacterialWalk::setRobotStep(double v)
-    {
-        checkParameter(kRobotStep, v);
-        robotStep_ = v;
-    }
-
-    void BacterialWalk::setGoalTolerance(double v)
-    {
-        checkParameter(kGoalTolerance, v);
-        goalTolerance_ = v;
+        PlannerBase::setPopulationSize(n);
     }
 
     void BacterialWalk::setSectorAngle(double deg)
@@ -136,43 +71,16 @@ namespace mhplan
         sectorAngle_ = deg;
     }
 
-    void BacterialWalk::setMaxSteps(unsigned int n)
-    {
-        checkParameter(kMaxSteps, n);
-        maxSteps_ = n;
-    }
-
     // ---------------------------------------------------------------------------------------------------
     // Planner interface
 
-    void BacterialWalk::setup()
-    {
-        // Refused before ob::Planner::setup() marks the planner set up (the planner contract).
-        PotentialField::requireClearance(*si_, getName()); // also refuses any space but a 2D RealVector one
-        ob::Planner::setup();
-    }
-
     void BacterialWalk::clear()
     {
-        ob::Planner::clear();
+        FieldWalkPlanner::clear();
         colony_.reset();
-        freeStates(*si_, plannerDataStates_);
-        ready_ = false;
         runActive_ = false;
-        walk_.clear();
         walkState_ = WalkState::Walking;
         runBestKnown_ = false;
-        bestCost_ = kInf;
-        steps_ = 0;
-        evaluations_ = 0;
-    }
-
-    void BacterialWalk::getPlannerData(ob::PlannerData &data) const
-    {
-        ob::Planner::getPlannerData(data);
-        addPathToPlannerData(
-            *si_, walk_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, walk_[i]); },
-            walkState_ == WalkState::ReachedGoal, data, plannerDataStates_);
     }
 
     // ---------------------------------------------------------------------------------------------------
@@ -210,7 +118,7 @@ namespace mhplan
     {
         const Vec2 p(x[0], x[1]);
         double j = potential_->cost(p);
-        evaluations_ = potential_->evaluations();
+        evaluationCount_ = potential_->evaluations();
         // What the robot cannot see (behind an obstacle) it does not sense: +infinity.
         if (j < kInf && !potential_->segmentFree(robot_, p))
             j = kInf;
@@ -228,32 +136,20 @@ namespace mhplan
 
     bool BacterialWalk::prepare()
     {
-        if (!walkEndpoints(pis_, getName(), robot_, goal_))
+        if (!prepareWalk())
             return false;
-        seedUsed_ = seed_;
-        if (seed_ != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
-        if (!potential_)
-            potential_ = std::make_unique<PotentialField>(si_);
-        potential_->configure(field_, repulsion_, getName());
-        potential_->setGoal(goal_);
-        if (stateA_ == nullptr)
-        {
-            stateA_ = si_->allocState();
-            stateB_ = si_->allocState();
-        }
-        walk_.clear();
-        walk_.reserve(std::min<std::size_t>(maxSteps_, 4096) + 2);
-        walk_.push_back(robot_);
+        seedUsed_ = getSeed();
+        seedRng();
+        walk_.reserve(std::min<std::size_t>(getMaxSteps(), 4096) + 2);
         walkState_ = WalkState::Walking;
         runActive_ = false;
         ready_ = true;
         OMPL_INFORM(
             "%s: online, seed %lu, S = %u, Nc = %u, Ns = %u, Nre = %u, Ned = %u, C = %g, lambda = %g, "
             "%s repulsion%s",
-            getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), populationSize_,
+            getName().c_str(), static_cast<unsigned long>(rng_.getLocalSeed()), getPopulationSize(),
             colonySettings_.chemotacticSteps, colonySettings_.swimLength, colonySettings_.reproductionSteps,
-            colonySettings_.eliminationEvents, colonySettings_.stepSize, robotStep_,
+            colonySettings_.eliminationEvents, colonySettings_.stepSize, getRobotStep(),
             toString(potential_->usedMode()).c_str(),
             colonySettings_.adaptiveTumble ? ", adaptive tumble" : "");
         finishWalkIfAtGoal();
@@ -262,11 +158,8 @@ namespace mhplan
 
     void BacterialWalk::finishWalkIfAtGoal()
     {
-        const double tolerance = goalTolerance_ > 0.0 ? goalTolerance_ : robotStep_;
-        if (!walkReachGoal(*si_, stateA_, stateB_, walk_, goal_, tolerance))
-            return; // keep walking
-        robot_ = walk_.back();
-        walkState_ = WalkState::ReachedGoal;
+        if (reachGoal())
+            walkState_ = WalkState::ReachedGoal; // else keep walking
     }
 
     void BacterialWalk::moveRobot()
@@ -275,21 +168,22 @@ namespace mhplan
         if (squaredNorm(heading) < 1e-24)
             heading = goal_ - robot_;
         const double phi = std::atan2(heading.y, heading.x);
-        double step = robotStep_;
-        setStatePosition(stateA_, robot_);
+        double step = getRobotStep();
+        ob::State *stateA = scratchState(0), *stateB = scratchState(1);
+        setStatePosition(stateA, robot_);
         bool moved = false;
         for (int attempt = 0; attempt <= 3 && !moved; ++attempt, step *= 0.5)
         {
             const Vec2 next(robot_.x + step * std::cos(phi), robot_.y + step * std::sin(phi));
-            setStatePosition(stateB_, next);
-            if (si_->satisfiesBounds(stateB_) && si_->checkMotion(stateA_, stateB_))
+            setStatePosition(stateB, next);
+            if (si_->satisfiesBounds(stateB) && si_->checkMotion(stateA, stateB))
             {
                 robot_ = next;
                 walk_.push_back(next);
                 moved = true;
             }
         }
-        ++steps_;
+        ++iterationCount_;
         if (!moved)
         {
             walkState_ = WalkState::Failed;
@@ -299,29 +193,30 @@ namespace mhplan
             return;
         }
         finishWalkIfAtGoal();
-        if (walkState_ == WalkState::Walking && walk_.size() - 1 >= maxSteps_)
+        if (walkState_ == WalkState::Walking && walk_.size() - 1 >= getMaxSteps())
         {
             walkState_ = WalkState::BudgetSpent;
-            OMPL_INFORM("%s: step budget of %u spent", getName().c_str(), maxSteps_);
+            OMPL_INFORM("%s: step budget of %u spent", getName().c_str(), getMaxSteps());
         }
     }
 
     ob::PlannerStatus BacterialWalk::solve(const ob::PlannerTerminationCondition &ptc)
     {
         checkValidity();
-        if (ready_ && seed_ != seedUsed_)
+        if (ready_ && getSeed() != seedUsed_)
             clear(); // a new seed restarts the walk
         if (!ready_ && !prepare())
             return ob::PlannerStatus::INVALID_START;
 
         ptc_ = &ptc;
         unsigned int done = 0;
-        while (walkState_ == WalkState::Walking && !ptc() && (maxIterations_ == 0 || done < maxIterations_))
+        while (walkState_ == WalkState::Walking && !ptc() &&
+               (getMaxIterations() == 0 || done < getMaxIterations()))
         {
             if (!runActive_)
             {
                 runBestKnown_ = false;
-                colony_.start(2, populationSize_, *adapter_);
+                colony_.start(2, getPopulationSize(), *adapter_);
                 runActive_ = true;
             }
             BacterialColony::Step r = BacterialColony::Step::StepDone;
@@ -339,14 +234,12 @@ namespace mhplan
 
     ob::PlannerStatus BacterialWalk::report()
     {
-        const ob::PlannerStatus status =
-            reportWalk(si_, pdef_, getName(), walk_, walkState_ != WalkState::Walking,
-                       walkState_ == WalkState::ReachedGoal, goal_, bestCost_, this);
+        const ob::PlannerStatus status = reportWalkSolution(walkState_ != WalkState::Walking);
         if (status == ob::PlannerStatus::TIMEOUT)
             return status;
         const bool exact = status == ob::PlannerStatus::EXACT_SOLUTION;
         OMPL_INFORM("%s: %zu robot positions, %lu J evaluations, %s", getName().c_str(), walk_.size(),
-                    evaluations_.load(),
+                    evaluationCount(),
                     exact ? "goal reached"
                           : (walkState_ == WalkState::Walking ? "walking" : "walk ended before the goal"));
         return status;

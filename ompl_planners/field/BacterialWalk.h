@@ -6,12 +6,8 @@
 
 #include "mhplan/planners/field/BacterialColony.h"
 #include "mhplan/planners/field/ColonyParameters.h"
-#include "mhplan/planners/field/PotentialField.h"
+#include "mhplan/planners/field/FieldWalkPlanner.h"
 
-#include <ompl/base/Planner.h>
-#include <ompl/util/RandomNumbers.h>
-
-#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,7 +59,7 @@ namespace mhplan
         steps), \c fitness \c evaluations (J evaluations). Randomness only from the member RNG (parameter
         \c seed, or OMPL's global seed when it is 0). The termination condition is tested before every
         evaluation, inside the swims too. */
-    class BacterialWalk : public ompl::base::Planner, public PotentialFieldSettings, public ColonyParameters
+    class BacterialWalk : public FieldWalkPlanner, public ColonyParameters
     {
       public:
         /** \brief "BFO" (adaptive tumble off) or "ATBFO" (adaptive tumble on by default). */
@@ -72,35 +68,16 @@ namespace mhplan
 
         ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
         void clear() override;
-        void setup() override;
-        /** \brief The walk as a chain of vertices (start first); the goal vertex once it is reached. */
-        void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief S, the bacteria of each colony run (2..10000). */
-        void setPopulationSize(unsigned int n);
-        unsigned int getPopulationSize() const { return populationSize_; }
-        /** \brief Robot steps per solve() call, 0 = until the walk ends (0..10000000). */
-        void setMaxIterations(unsigned int n);
-        unsigned int getMaxIterations() const { return maxIterations_; }
-        /** \brief Seed of the member RNG, 0 = drawn from OMPL's global seed (0..4294967295); a new seed
-            restarts the walk. */
-        void setSeed(unsigned long seed);
-        unsigned long getSeed() const { return seed_; }
-        /** \brief lambda, the robot's step (1e-6..1e6). */
-        void setRobotStep(double v);
-        double getRobotStep() const { return robotStep_; }
-        /** \brief Goal tolerance of the walk, 0 = lambda (0..1e6). */
-        void setGoalTolerance(double v);
-        double getGoalTolerance() const { return goalTolerance_; }
+        /** \brief S, the bacteria of each colony run (SharedParameterRanges); a change restarts the walk. */
+        void setPopulationSize(unsigned int n) override;
+        /** \brief lambda, the robot's step (parameter \c robot_step, 1e-6..1e6). */
+        void setRobotStep(double v) { setWalkStep(v); }
+        double getRobotStep() const { return getWalkStep(); }
         /** \brief Half angle in degrees of the sector the bacteria start in (0..180). */
         void setSectorAngle(double deg);
         double getSectorAngle() const { return sectorAngle_; }
-        /** \brief Robot step budget of a walk (1..10000000). */
-        void setMaxSteps(unsigned int n);
-        unsigned int getMaxSteps() const { return maxSteps_; }
 
-        /** \brief The robot positions walked so far (start first). */
-        const std::vector<Vec2> &walk() const { return walk_; }
         /** \brief True when the walk has ended (goal, failure or budget). */
         bool walkFinished() const { return walkState_ != WalkState::Walking; }
 
@@ -114,9 +91,7 @@ namespace mhplan
         };
         class Adapter;
 
-        void declareParams();
-        /** \brief The field defines the cost: a change restarts the walk. */
-        void fieldChanged() override;
+        bool reachedGoal() const override { return walkState_ == WalkState::ReachedGoal; }
         bool halt() const { return ptc_ == nullptr || (*ptc_)(); }
         double rawCost(const double *x);
         void randomBacterium(double *x);
@@ -126,39 +101,20 @@ namespace mhplan
         void finishWalkIfAtGoal();
         ompl::base::PlannerStatus report();
 
-        // Parameters (the colony's in ColonyParameters, the field's in PotentialFieldSettings).
-        unsigned int populationSize_{100};
-        unsigned int maxIterations_{0};
-        unsigned long seed_{0};
-        double robotStep_{0.2};
-        double goalTolerance_{0.0};
+        // Parameters (the colony's in ColonyParameters, the field's in PotentialFieldSettings, the walk's in
+        // FieldWalkPlanner).
         double sectorAngle_{45.0};
-        unsigned int maxSteps_{2000};
 
-        ompl::RNG rng_;
         std::unique_ptr<Adapter> adapter_;
         BacterialColony colony_{colonySettings_};
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
-        std::unique_ptr<PotentialField> potential_;
-        bool ready_{false};
         /** \brief The seed parameter the walk was prepared with (a new seed restarts it). */
         unsigned long seedUsed_{0};
         bool runActive_{false};
-        Vec2 robot_, goal_;
-        std::vector<Vec2> walk_;
         WalkState walkState_{WalkState::Walking};
         bool runBestKnown_{false};
         double runBestCost_{0.0};
         Vec2 runBest_;
-        ompl::base::State *stateA_{nullptr};
-        ompl::base::State *stateB_{nullptr};
-        /** \brief The states handed to PlannerData by getPlannerData() (it keeps pointers), freed by clear().
-         */
-        mutable std::vector<ompl::base::State *> plannerDataStates_;
-
-        std::atomic<double> bestCost_;
-        std::atomic<unsigned long> steps_{0};
-        std::atomic<unsigned long> evaluations_{0};
     };
 } // namespace mhplan
 

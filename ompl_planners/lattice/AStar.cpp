@@ -9,10 +9,9 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kSqrt2 = 1.41421356237309504880;
-        // The eight moves: four straight ones first, then the diagonals.
-        constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1};
-        constexpr int kDy[8] = {0, 0, 1, -1, 1, 1, -1, -1};
+        constexpr double kSqrt2 = LatticeMoves::kSqrt2;
+        constexpr const int (&kDx)[8] = LatticeMoves::kDx;
+        constexpr const int (&kDy)[8] = LatticeMoves::kDy;
     } // namespace
 
     AStar::AStar(const ob::SpaceInformationPtr &si) : LatticePlanner(si, "AStar") {}
@@ -40,14 +39,13 @@ namespace mhplan
         // every expansion may call the motion validator eight times.
         constexpr unsigned long checkMask = GridCells ? 1023 : 63;
         const int stride = lattice_.stride();
-        int offset[8];
-        for (int d = 0; d < 8; ++d)
-            offset[d] = kDy[d] * stride + kDx[d];
+        const LatticeMoves moves(lattice_);
+        const int *offset = moves.offset;
         std::uint8_t *flags = lattice_.flags();
         double *g = g_.data();
         LatticeNode *parent = parent_.data();
         const double sp = lattice_.spacing();
-        const double stepCost[2] = {sp, sp * kSqrt2};
+        const double *stepCost = moves.stepCost;
         const double k = (kSqrt2 - 1.0) * sp;
         const double gu = goalU_, gv = goalV_, slack = goalSlack_;
         const auto h = [=](int i, int j)
@@ -60,21 +58,11 @@ namespace mhplan
         unsigned long done = 0;
         while (!open_.empty())
         {
-            if ((expansions_ & checkMask) == 0)
-            {
-                publishCounts();
-                if (ptc())
-                    return SearchResult::Interrupted;
-            }
-            if (maxExpansions != 0 && done >= maxExpansions)
-                return SearchResult::Budget;
-            const LatticeOpenList::Item top = open_.pop();
+            LatticeOpenList::Item top;
+            SearchResult stop;
+            if (!beginExpansion(ptc, checkMask, maxExpansions, done, top, stop))
+                return stop;
             const LatticeNode s = top.node;
-            if (s == goal)
-                return SearchResult::Found;
-            ++expansions_;
-            ++done;
-            noteExpanded(s, top.f - top.g);
 
             if ((flags[s] & Lattice::kGoalLink) != 0 && !open_.closed(goal))
             {

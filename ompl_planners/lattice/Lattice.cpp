@@ -29,8 +29,6 @@ namespace mhplan
     {
         constexpr ParamRange kResolution{"resolution", 0, 0.01, 1000000,
                                          "spacing of a sampled lattice; 0 = automatic"};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000000,
-                                            "node expansions per solve() call; 0 = until the search ends"};
     } // namespace
 
     namespace
@@ -193,7 +191,7 @@ namespace mhplan
     // LatticePlanner
 
     LatticePlanner::LatticePlanner(const ob::SpaceInformationPtr &si, const std::string &name)
-        : ob::Planner(si, name), bestCostValue_(std::numeric_limits<double>::infinity())
+        : PlannerBase(si, name, false)
     {
         specs_.approximateSolutions = true;
         specs_.optimizingPaths = true;
@@ -207,24 +205,14 @@ namespace mhplan
             params(), this, "lattice", &LatticePlanner::setLattice, &LatticePlanner::getLattice,
             "auto,sampled",
             "auto: the grid's cells on grid worlds, else a sampled lattice; sampled: always sampled");
-        declareRanged<unsigned int>(params(), this, kMaxIterations, &LatticePlanner::setMaxIterations,
-                                    &LatticePlanner::getMaxIterations);
+        declareMaxIterations("node expansions per solve() call; 0 = until the search ends");
 
-        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
-        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
+        declareProgress(false);
         addPlannerProgressProperty("motion checks INTEGER",
                                    [this] { return std::to_string(motionCheckCount()); });
     }
 
-    LatticePlanner::~LatticePlanner()
-    {
-        if (costA_ != nullptr)
-        {
-            si_->freeState(costA_);
-            si_->freeState(costB_);
-        }
-        freeStates(*si_, plannerDataStates_);
-    }
+    LatticePlanner::~LatticePlanner() = default;
 
     void LatticePlanner::setResolution(double r)
     {
@@ -244,24 +232,15 @@ namespace mhplan
         latticeName_ = lattice;
     }
 
-    void LatticePlanner::setMaxIterations(unsigned int n)
-    {
-        checkParameter(kMaxIterations, n);
-        maxIterations_ = n;
-    }
-
     void LatticePlanner::clear()
     {
-        ob::Planner::clear();
-        freeStates(*si_, plannerDataStates_);
+        PlannerBase::clear();
         problemReady_ = linksReady_ = finished_ = found_ = false;
         solution_.clear();
         goalLinks_.clear();
         expansions_ = 0;
         lattice_.resetCounts();
         bestApproxH_ = std::numeric_limits<double>::infinity();
-        bestCostValue_ = std::numeric_limits<double>::infinity();
-        iterationCount_ = 0;
         motionCheckCount_ = 0;
     }
 
@@ -307,12 +286,8 @@ namespace mhplan
         const auto *space = dynamic_cast<const ob::RealVectorStateSpace *>(si_->getStateSpace().get());
         if (space == nullptr || space->getDimension() != 2)
         {
-            const std::string what = getName() + ": needs a 2D RealVectorStateSpace, got '" +
-                                     si_->getStateSpace()->getName() + "' of dimension " +
-                                     std::to_string(si_->getStateSpace()->getDimension());
-            OMPL_ERROR("%s", what.c_str());
-            setup_ = false; // refused: not set up, as the planner contract requires
-            throw ompl::Exception(what);
+            refuseSetup("needs a 2D RealVectorStateSpace, got '" + si_->getStateSpace()->getName() +
+                        "' of dimension " + std::to_string(si_->getStateSpace()->getDimension()));
         }
     }
 
@@ -327,21 +302,10 @@ namespace mhplan
                 status = ob::PlannerStatus::ABORT;
                 return false;
             }
-            const ob::State *start = pis_.nextStart();
-            if (start == nullptr)
-            {
-                OMPL_ERROR("%s: no valid start state", getName().c_str());
-                status = ob::PlannerStatus::INVALID_START;
+            const ob::State *start = nullptr, *goal = nullptr;
+            if (!startAndGoal(start, goal, &status))
                 return false;
-            }
             startPos_ = statePosition(start);
-            const ob::State *goal = pis_.nextGoal();
-            if (goal == nullptr)
-            {
-                OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-                status = ob::PlannerStatus::INVALID_GOAL;
-                return false;
-            }
             goalPos_ = statePosition(goal);
             try
             {
@@ -362,11 +326,6 @@ namespace mhplan
             lattice_.resetFlags();
             goalU_ = lattice_.latticeX(goalPos_.x);
             goalV_ = lattice_.latticeY(goalPos_.y);
-            if (costA_ == nullptr)
-            {
-                costA_ = si_->allocState();
-                costB_ = si_->allocState();
-            }
             bestApprox_ = startNode_;
             bestApproxH_ = std::numeric_limits<double>::infinity();
             problemReady_ = true;
@@ -476,11 +435,12 @@ namespace mhplan
             return length;
         }
         cost = opt->identityCost();
+        ob::State *a = scratchState(0), *b = scratchState(1);
         for (std::size_t i = 1; i < points.size(); ++i)
         {
-            setStatePosition(costA_, points[i - 1]);
-            setStatePosition(costB_, points[i]);
-            cost = opt->combineCosts(cost, opt->motionCost(costA_, costB_));
+            setStatePosition(a, points[i - 1]);
+            setStatePosition(b, points[i]);
+            cost = opt->combineCosts(cost, opt->motionCost(a, b));
         }
         return length;
     }
@@ -519,7 +479,7 @@ namespace mhplan
 
         if (!finished_)
         {
-            const SearchResult r = search(ptc, maxIterations_);
+            const SearchResult r = search(ptc, getMaxIterations());
             publishCounts();
             if (r == SearchResult::Found)
             {
@@ -543,8 +503,8 @@ namespace mhplan
                 {
                     objectiveCost(solution_, solutionCost_);
                     bestCostValue_ = solutionCost_.value();
-                    reportImprovement(
-                        this, pdef_, *si_, solution_.size(),
+                    reportImprovementOf(
+                        solution_.size(),
                         [this](ob::State *st, std::size_t i) { setStatePosition(st, solution_[i]); },
                         solutionCost_);
                 }
@@ -575,10 +535,8 @@ namespace mhplan
 
     void LatticePlanner::getPlannerData(ob::PlannerData &data) const
     {
-        ob::Planner::getPlannerData(data);
-        addPathToPlannerData(
-            *si_, solution_.size(),
-            [this](ob::State *s, std::size_t i) { setStatePosition(s, solution_[i]); }, true, data,
-            plannerDataStates_);
+        pathToPlannerData(
+            data, solution_.size(),
+            [this](ob::State *s, std::size_t i) { setStatePosition(s, solution_[i]); }, true);
     }
 } // namespace mhplan

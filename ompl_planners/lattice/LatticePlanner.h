@@ -3,10 +3,9 @@
 #ifndef MHPLAN_LATTICE_PLANNER_H
 #define MHPLAN_LATTICE_PLANNER_H
 
+#include "mhplan/planners/common/PlannerBase.h"
 #include "mhplan/planners/lattice/Lattice.h"
 #include "mhplan/planners/lattice/LatticeOpenList.h"
-
-#include <ompl/base/Planner.h>
 
 #include <atomic>
 #include <cstddef>
@@ -17,6 +16,26 @@
 
 namespace mhplan
 {
+    /** \brief The eight moves of the 8-connected lattice, one table for A* and Theta*: four straight ones
+        first, then the diagonals; node offsets by the lattice's stride and the two step lengths. */
+    struct LatticeMoves
+    {
+        static constexpr double kSqrt2 = 1.41421356237309504880;
+        static constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1};
+        static constexpr int kDy[8] = {0, 0, 1, -1, 1, 1, -1, -1};
+
+        explicit LatticeMoves(const Lattice &lattice)
+            : stepCost{lattice.spacing(), lattice.spacing() * kSqrt2}
+        {
+            for (int d = 0; d < 8; ++d)
+                offset[d] = kDy[d] * lattice.stride() + kDx[d];
+        }
+        /** \brief Node id difference of move d. */
+        int offset[8];
+        /** \brief Length of a straight (0) and of a diagonal (1) move. */
+        double stepCost[2];
+    };
+
     /** \brief Base class of the lattice search planners (AStar, ThetaStar): parameters, the problem set-up
         (which lattice, start and goal links), search state, progress properties and solution reporting. A
         subclass writes only its search loop (search()).
@@ -42,7 +61,7 @@ namespace mhplan
         intermediate-solution callback fires once, when the goal is reached. Progress properties \c best
         \c cost (infinity before a solution), \c iterations (node expansions) and \c motion \c checks are
         atomics, safe to read from the benchmark's sampling thread. */
-    class LatticePlanner : public ompl::base::Planner
+    class LatticePlanner : public PlannerBase
     {
       public:
         LatticePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name);
@@ -60,14 +79,7 @@ namespace mhplan
         /** \brief "auto" (grid cells on grid worlds) or "sampled". */
         void setLattice(const std::string &lattice);
         std::string getLattice() const { return latticeName_; }
-        /** \brief Node expansions per solve() call, 0 = until the search ends (0..1e9). */
-        void setMaxIterations(unsigned int n);
-        unsigned int getMaxIterations() const { return maxIterations_; }
 
-        /** \brief Objective cost of the solution (infinity before one is found). */
-        double bestCost() const { return bestCostValue_.load(); }
-        /** \brief Node expansions since the last clear(). */
-        unsigned long iterationCount() const { return iterationCount_.load(); }
         /** \brief Motion-validator calls since the last clear(). */
         unsigned long motionCheckCount() const { return motionCheckCount_.load(); }
         /** \brief The lattice in use (built by the first solve()). */
@@ -106,6 +118,39 @@ namespace mhplan
                 bestApproxH_ = h;
                 bestApprox_ = n;
             }
+        }
+        /** \brief The head of every expansion of A* and Theta*: every checkMask + 1 expansions publish the
+            counts and test \e ptc (Interrupted), stop after \e maxExpansions in this call (Budget, 0 = no
+            limit), take the best node from the open list (Found when it is the goal). False with \e result
+            when the search stops here; else the expansion of \e top is counted (\e done too) and noted. */
+        bool beginExpansion(const ompl::base::PlannerTerminationCondition &ptc, unsigned long checkMask,
+                            unsigned long maxExpansions, unsigned long &done, LatticeOpenList::Item &top,
+                            SearchResult &result)
+        {
+            if ((expansions_ & checkMask) == 0)
+            {
+                publishCounts();
+                if (ptc())
+                {
+                    result = SearchResult::Interrupted;
+                    return false;
+                }
+            }
+            if (maxExpansions != 0 && done >= maxExpansions)
+            {
+                result = SearchResult::Budget;
+                return false;
+            }
+            top = open_.pop();
+            if (top.node == goalNode_)
+            {
+                result = SearchResult::Found;
+                return false;
+            }
+            ++expansions_;
+            ++done;
+            noteExpanded(top.node, top.f - top.g);
+            return true;
         }
         /** \brief Cost of the link from goal-linked node \e n to the goal. */
         double goalLinkCost(LatticeNode n) const;
@@ -151,7 +196,6 @@ namespace mhplan
 
         double resolution_{0.0};
         std::string latticeName_{"auto"};
-        unsigned int maxIterations_{0};
 
         bool problemReady_{false};
         bool linksReady_{false};
@@ -163,13 +207,7 @@ namespace mhplan
         ompl::base::Cost solutionCost_;
         LatticeNode bestApprox_{0};
         double bestApproxH_{std::numeric_limits<double>::infinity()};
-        ompl::base::State *costA_{nullptr};
-        ompl::base::State *costB_{nullptr};
-        /** \brief States handed to PlannerData (it keeps the pointers): owned here until clear(). */
-        mutable std::vector<ompl::base::State *> plannerDataStates_;
 
-        std::atomic<double> bestCostValue_;
-        std::atomic<unsigned long> iterationCount_{0};
         std::atomic<unsigned long> motionCheckCount_{0};
     };
 } // namespace mhplan

@@ -9,9 +9,8 @@ namespace mhplan
 {
     namespace
     {
-        constexpr double kSqrt2 = 1.41421356237309504880;
-        constexpr int kDx[8] = {1, -1, 0, 0, 1, -1, 1, -1};
-        constexpr int kDy[8] = {0, 0, 1, -1, 1, 1, -1, -1};
+        constexpr const int (&kDx)[8] = LatticeMoves::kDx;
+        constexpr const int (&kDy)[8] = LatticeMoves::kDy;
     } // namespace
 
     ThetaStar::ThetaStar(const ob::SpaceInformationPtr &si) : LatticePlanner(si, "ThetaStar") {}
@@ -55,31 +54,19 @@ namespace mhplan
     {
         const bool gridCells = lattice_.kind() == LatticeKind::GridCells;
         const int stride = lattice_.stride();
-        int offset[8];
-        for (int d = 0; d < 8; ++d)
-            offset[d] = kDy[d] * stride + kDx[d];
+        const LatticeMoves moves(lattice_);
+        const int *offset = moves.offset;
         const std::uint8_t *flags = lattice_.flags();
-        const double sp = lattice_.spacing();
-        const double stepCost[2] = {sp, sp * kSqrt2};
+        const double *stepCost = moves.stepCost;
 
         unsigned long done = 0;
         while (!open_.empty())
         {
-            if ((expansions_ & 63) == 0)
-            {
-                publishCounts();
-                if (ptc())
-                    return SearchResult::Interrupted;
-            }
-            if (maxExpansions != 0 && done >= maxExpansions)
-                return SearchResult::Budget;
-            const LatticeOpenList::Item top = open_.pop();
+            LatticeOpenList::Item top;
+            SearchResult stop;
+            if (!beginExpansion(ptc, 63, maxExpansions, done, top, stop))
+                return stop;
             const LatticeNode s = top.node;
-            if (s == goalNode_)
-                return SearchResult::Found;
-            ++expansions_;
-            ++done;
-            noteExpanded(s, top.f - top.g);
             const Vec2 ps = lattice_.position(s);
 
             if ((flags[s] & Lattice::kGoalLink) != 0 && !open_.closed(goalNode_))

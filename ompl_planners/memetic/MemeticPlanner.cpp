@@ -27,11 +27,6 @@ namespace mhplan
 {
     namespace
     {
-        constexpr ParamRange kPopulationSize{"population_size", 2, 1, 1000, "N, paths in the population"};
-        constexpr ParamRange kMaxIterations{"max_iterations", 0, 1, 1000000,
-                                            "generations per solve() call; 0 = until the time limit"};
-        constexpr ParamRange kSeed{"seed", 0, 1, 4294967295,
-                                   "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
         constexpr ParamRange kWalkNoise{"walk_noise", 0, 0.1, 10,
                                         "largest priority noise of the randomised lattice walks"};
         constexpr ParamRange kWalkWeight{"walk_weight", 1, 0.1, 10,
@@ -64,8 +59,7 @@ namespace mhplan
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
                                    unsigned int populationSize)
-        : ob::Planner(si, name), populationSize_(populationSize),
-          bestCostValue_(std::numeric_limits<double>::infinity())
+        : PlannerBase(si, name, true)
     {
         specs_.approximateSolutions = true;
         specs_.optimizingPaths = true;
@@ -74,12 +68,8 @@ namespace mhplan
         specs_.recognizedGoal = ob::GOAL_SAMPLEABLE_REGION;
         stop_ = [this] { return stopRequested(); };
 
-        declareRanged<unsigned int>(params(), this, kPopulationSize, &MemeticPlanner::setPopulationSize,
-                                    &MemeticPlanner::getPopulationSize);
-        declareRanged<unsigned int>(params(), this, kMaxIterations, &MemeticPlanner::setMaxIterations,
-                                    &MemeticPlanner::getMaxIterations);
-        declareRanged<unsigned long>(params(), this, kSeed, &MemeticPlanner::setSeed,
-                                     &MemeticPlanner::getSeed);
+        declarePopulationSize(populationSize, "N, paths in the population");
+        declareMaxIterations("generations per solve() call; 0 = until the time limit");
         declareRanged<double>(params(), this, kWalkNoise, &MemeticPlanner::setWalkNoise,
                               &MemeticPlanner::getWalkNoise);
         declareRanged<double>(params(), this, kWalkWeight, &MemeticPlanner::setWalkWeight,
@@ -105,10 +95,7 @@ namespace mhplan
         declareRanged<double>(params(), this, kValidatorClearance, &MemeticPlanner::setValidatorClearance,
                               &MemeticPlanner::getValidatorClearance);
 
-        addPlannerProgressProperty("best cost REAL", [this] { return formatCost(bestCost()); });
-        addPlannerProgressProperty("iterations INTEGER", [this] { return std::to_string(iterationCount()); });
-        addPlannerProgressProperty("fitness evaluations INTEGER",
-                                   [this] { return std::to_string(evaluationCount()); });
+        declareProgress(true);
         addPlannerProgressProperty("motion checks INTEGER",
                                    [this] { return std::to_string(motionCheckCount()); });
         addPlannerProgressProperty("state checks INTEGER",
@@ -119,31 +106,11 @@ namespace mhplan
                                    [this] { return std::to_string(improvementCount()); });
     }
 
-    MemeticPlanner::~MemeticPlanner()
-    {
-        if (costA_ != nullptr)
-            si_->freeState(costA_);
-        if (costB_ != nullptr)
-            si_->freeState(costB_);
-        freeStates(*si_, plannerDataStates_);
-    }
-
-    void MemeticPlanner::setPopulationSize(unsigned int n)
-    {
-        checkParameter(kPopulationSize, n);
-        populationSize_ = n;
-    }
-
-    void MemeticPlanner::setMaxIterations(unsigned int n)
-    {
-        checkParameter(kMaxIterations, n);
-        maxIterations_ = n;
-    }
+    MemeticPlanner::~MemeticPlanner() = default;
 
     void MemeticPlanner::setSeed(unsigned long seed)
     {
-        checkParameter(kSeed, static_cast<double>(seed));
-        seed_ = seed;
+        PlannerBase::setSeed(seed); // checks the range
         if (problemReady_)
             clear();
     }
@@ -229,14 +196,6 @@ namespace mhplan
         return validatorMargin_ * si_->getStateValidityCheckingResolution() * si_->getMaximumExtent();
     }
 
-    void MemeticPlanner::refuseSetup(const std::string &message)
-    {
-        setup_ = false;
-        const std::string text = getName() + ": " + message;
-        OMPL_ERROR("%s", text.c_str());
-        throw ompl::Exception(text);
-    }
-
     void MemeticPlanner::setup()
     {
         ob::Planner::setup();
@@ -257,10 +216,9 @@ namespace mhplan
 
     void MemeticPlanner::clear()
     {
-        ob::Planner::clear();
+        PlannerBase::clear(); // the PlannerData states, best cost, iterations, evaluations
         clearAlgorithm();
         pop_.clear();
-        freeStates(*si_, plannerDataStates_);
         problemReady_ = false;
         started_ = false;
         haveSolution_ = false;
@@ -292,26 +250,14 @@ namespace mhplan
         stateChecks_ = 0;
         cacheHits_ = 0;
         improvements_ = 0;
-        bestCostValue_ = std::numeric_limits<double>::infinity();
-        iterationCount_ = 0;
-        evaluationCount_ = 0;
         motionChecks_ = 0;
     }
 
     bool MemeticPlanner::prepareProblem()
     {
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        const ob::State *start = nullptr, *goal = nullptr;
+        if (!startAndGoal(start, goal))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
         if (stateMode_)
             return prepareStateProblem(start, goal);
         start_ = statePosition(start);
@@ -329,13 +275,7 @@ namespace mhplan
         toolkit_->resetCounts();
         toolkit_->clearCache(); // the margin and the fixed points are part of every cached verdict
         toolkit_->roadmapClear();
-        if (costA_ == nullptr)
-        {
-            costA_ = si_->allocState();
-            costB_ = si_->allocState();
-        }
-        if (seed_ != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        seedRng();
         closestDistance_ = std::numeric_limits<double>::infinity();
         closest_ = {start_};
         OMPL_INFORM("%s: seed %lu, N = %u", getName().c_str(),
@@ -350,11 +290,12 @@ namespace mhplan
         if (!opt)
             return MemeticToolkit::length(path);
         ob::Cost c = opt->identityCost();
+        ob::State *costA = scratchState(0), *costB = scratchState(1);
         for (std::size_t i = 1; i < path.size(); ++i)
         {
-            setStatePosition(costA_, path[i - 1]);
-            setStatePosition(costB_, path[i]);
-            c = opt->combineCosts(c, opt->motionCost(costA_, costB_));
+            setStatePosition(costA, path[i - 1]);
+            setStatePosition(costB, path[i]);
+            c = opt->combineCosts(c, opt->motionCost(costA, costB));
         }
         return c.value();
     }
@@ -389,9 +330,9 @@ namespace mhplan
         if (!improves(cost))
             return;
         bestPath_ = path;
-        reportImprovement(
-            this, pdef_, *si_, bestPath_.size(),
-            [this](ob::State *s, std::size_t i) { setStatePosition(s, bestPath_[i]); }, bestCostObj_);
+        reportImprovementOf(
+            bestPath_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, bestPath_[i]); },
+            bestCostObj_);
     }
 
     double MemeticPlanner::evaluate(const MemeticPath &path)
@@ -854,26 +795,24 @@ namespace mhplan
             return;
         exact = haveSolution_;
         approximate = !exact;
-        addSolution(
-            *this, pdef_, si_, points->size(),
-            [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); }, exact, bestCostObj_,
-            closestDistance_);
+        addSolutionPath(
+            points->size(), [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); },
+            exact, bestCostObj_, closestDistance_);
     }
 
     void MemeticPlanner::getPlannerData(ob::PlannerData &data) const
     {
-        ob::Planner::getPlannerData(data);
         if (stateMode_)
         {
             const StatePath &states = haveSolution_ ? bestStates_ : closestStates_;
-            addPathToPlannerData(
-                *si_, states.size(), [&](ob::State *s, std::size_t i) { fillState(s, states[i]); },
-                haveSolution_, data, plannerDataStates_);
+            pathToPlannerData(
+                data, states.size(), [&](ob::State *s, std::size_t i) { fillState(s, states[i]); },
+                haveSolution_);
             return;
         }
         const MemeticPath &points = haveSolution_ ? bestPath_ : closest_;
-        addPathToPlannerData(
-            *si_, points.size(), [&points](ob::State *s, std::size_t i) { setStatePosition(s, points[i]); },
-            haveSolution_, data, plannerDataStates_);
+        pathToPlannerData(
+            data, points.size(), [&points](ob::State *s, std::size_t i) { setStatePosition(s, points[i]); },
+            haveSolution_);
     }
 } // namespace mhplan

@@ -5,12 +5,10 @@
 #ifndef MHPLAN_MEMETIC_PLANNER_H
 #define MHPLAN_MEMETIC_PLANNER_H
 
+#include "mhplan/planners/common/PlannerBase.h"
 #include "mhplan/planners/common/StateParametrisation.h"
 #include "mhplan/planners/memetic/MemeticStateToolkit.h"
 #include "mhplan/planners/memetic/MemeticToolkit.h"
-
-#include <ompl/base/Planner.h>
-#include <ompl/util/RandomNumbers.h>
 
 #include <atomic>
 #include <functional>
@@ -79,7 +77,7 @@ namespace mhplan
           the walked path that came closest to the goal is reported as an approximate solution.
         - Randomness only from the member ompl::RNG (seeded from OMPL's global seed, or from \c seed when
           it is not 0): the same seed gives the same run under an iteration budget. */
-    class MemeticPlanner : public ompl::base::Planner
+    class MemeticPlanner : public PlannerBase
     {
       public:
         MemeticPlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
@@ -91,15 +89,10 @@ namespace mhplan
         void setup() override;
         void getPlannerData(ompl::base::PlannerData &data) const override;
 
-        /** \brief Population size N (2..1000). */
-        void setPopulationSize(unsigned int n);
-        unsigned int getPopulationSize() const { return populationSize_; }
-        /** \brief Generations per solve() call, 0 = until the termination condition (0..1000000). */
-        void setMaxIterations(unsigned int n);
-        unsigned int getMaxIterations() const { return maxIterations_; }
-        /** \brief Seed of this planner's RNG; 0 keeps the seed drawn from OMPL's global generator. */
-        void setSeed(unsigned long seed);
-        unsigned long getSeed() const { return seed_; }
+        /** \brief Seed of this planner's RNG (SharedParameterRanges); a change after the problem was prepared
+            starts afresh. Population size N and generations per solve() call (\c max_iterations, 0 = until
+            the termination condition) are PlannerBase's. */
+        void setSeed(unsigned long seed) override;
         /** \brief Largest priority noise of the walks (0..10). */
         void setWalkNoise(double noise);
         double getWalkNoise() const { return walkNoise_; }
@@ -143,9 +136,6 @@ namespace mhplan
             the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
         double marginDistance() const;
 
-        double bestCost() const { return bestCostValue_.load(); }
-        unsigned long iterationCount() const { return iterationCount_.load(); }
-        unsigned long evaluationCount() const { return evaluationCount_.load(); }
         unsigned long motionCheckCount() const { return motionChecks_.load(); }
         /** \brief Validity-checker calls the planner made itself (state mode; the motion validator's own are
             not seen). */
@@ -215,9 +205,6 @@ namespace mhplan
         bool haveSolution() const { return haveSolution_; }
         double coarseTurnLimit() const { return coarseTurn_; }
 
-        [[noreturn]] void refuseSetup(const std::string &message);
-
-        ompl::RNG rng_;
         std::vector<Individual> pop_;
 
       private:
@@ -266,9 +253,6 @@ namespace mhplan
         void reportStateSolution(bool &exact, bool &approximate);
         void fillState(ompl::base::State *s, const StatePoint &p) const;
 
-        unsigned int populationSize_;
-        unsigned int maxIterations_{0};
-        unsigned long seed_{0};
         double walkNoise_{3.0};
         double walkWeight_{2.0};
         unsigned int walkExpansions_{400000};
@@ -294,8 +278,6 @@ namespace mhplan
         std::unique_ptr<MemeticStateToolkit> stateToolkit_;
         StatePoint startState_, goalState_;
         StatePath bestStates_, closestStates_, polishedStates_;
-        ompl::base::State *costA_{nullptr};
-        ompl::base::State *costB_{nullptr};
         unsigned int level_{0};
         bool noPath_{false};
         bool fillCut_{false};
@@ -317,11 +299,7 @@ namespace mhplan
         MemeticPath polished_;
         double polishedSource_{0.0};
         double closestDistance_{0.0};
-        mutable std::vector<ompl::base::State *> plannerDataStates_;
 
-        std::atomic<double> bestCostValue_;
-        std::atomic<unsigned long> iterationCount_{0};
-        std::atomic<unsigned long> evaluationCount_{0};
         std::atomic<unsigned long> motionChecks_{0};
         std::atomic<unsigned long> stateChecks_{0};
         std::atomic<unsigned long> cacheHits_{0};

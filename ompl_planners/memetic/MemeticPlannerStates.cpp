@@ -61,8 +61,7 @@ namespace mhplan
             scale_ = std::max(scale_, param_->upper(j) - param_->lower(j));
         if (!(scale_ > 0.0))
             scale_ = 1.0;
-        if (seed_ != 0)
-            rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed_));
+        seedRng();
         closestDistance_ = std::numeric_limits<double>::infinity();
         closestStates_ = {startState_};
         OMPL_INFORM("%s: seed %lu, N = %u, state mode on '%s'", getName().c_str(),
@@ -79,9 +78,9 @@ namespace mhplan
         if (improves(c))
         {
             bestStates_ = path;
-            reportImprovement(
-                this, pdef_, *si_, bestStates_.size(),
-                [this](ob::State *s, std::size_t i) { fillState(s, bestStates_[i]); }, bestCostObj_);
+            reportImprovementOf(
+                bestStates_.size(), [this](ob::State *s, std::size_t i) { fillState(s, bestStates_[i]); },
+                bestCostObj_);
         }
         return c;
     }
@@ -204,9 +203,8 @@ namespace mhplan
             return;
         exact = haveSolution_;
         approximate = !exact;
-        addSolution(
-            *this, pdef_, si_, states->size(),
-            [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact, bestCostObj_,
-            closestDistance_);
+        addSolutionPath(
+            states->size(), [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact,
+            bestCostObj_, closestDistance_);
     }
 } // namespace mhplan
