@@ -151,3 +151,18 @@ TEST(CampaignCfg, BenchRunsTheProblemIntoTheDatabase)
         }
     EXPECT_TRUE(poses);
 }
+
+TEST(CampaignCfg, ShippedOmplAppCampaignEnumerates)
+{
+    // benchmarks/omplapp.yaml (benchmarks/README.md, "OMPL.app problems"): five problems, every planner
+    // runs on each of their spaces (SE(2), Dubins, SE(3)).
+    const Campaign c = loadCampaign(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/../benchmarks/omplapp.yaml");
+    const auto all = enumerateExperiments(c, [](const std::string &s) { return s; });
+    ASSERT_EQ(all.size(), 5u);
+    for (const auto &e : all)
+    {
+        EXPECT_TRUE(e.cfg) << e.name;
+        EXPECT_TRUE(e.skipped.empty()) << e.name;
+    }
+    EXPECT_EQ(all[2].name, "bugtrap_dubins");
+}
