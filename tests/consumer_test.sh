@@ -9,12 +9,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 test -f "$work/prefix/lib/cmake/mhplan/mhplanConfig.cmake"
-test -f "$work/prefix/include/mhplan/planners/population/SlimeMould.h"
-test -f "$work/prefix/include/mhplan/base/VersionConfig.h"
-test -f "$work/prefix/include/mhplan/draw/GifWriter.h"
+test -f "$work/prefix/include/mhplan/ompl_planners/population/SlimeMould.h"
+test -f "$work/prefix/include/mhplan/src/base/VersionConfig.h"
+test -f "$work/prefix/include/mhplan/src/draw/GifWriter.h"
 # A layer's detail/ headers are shared by its own sources only: not installed.
-test ! -e "$work/prefix/include/mhplan/optimum/detail"
-test ! -e "$work/prefix/include/mhplan/draw/detail"
+test ! -e "$work/prefix/include/mhplan/src/optimum/detail"
+test ! -e "$work/prefix/include/mhplan/src/draw/detail"
 test -x "$work/prefix/bin/mhplan"
 # The installed program finds its installed worlds (not the source tree's).
 worlds=$(env -u MHPLAN_ENVIRONMENTS "$work/prefix/bin/mhplan" worlds)
