@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignSetups.h"
-#include "mhplan/bench/CfgWorlds.h"
-#include "mhplan/bench/MovingAIWorlds.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignSetups.h"
+#include "benchmarks/CfgWorlds.h"
+#include "benchmarks/MovingAIWorlds.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidBody.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/base/World.h"
-#include "mhplan/io/InputFile.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/io/YamlReader.h"
+#include "src/collision/Collision.h"
+#include "src/sim/Controllers.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidBody.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/base/World.h"
+#include "src/io/InputFile.h"
+#include "src/io/WorldIO.h"
+#include "src/io/YamlReader.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -5,11 +5,11 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_H
 #define MHPLAN_BENCH_CAMPAIGN_H
 
-#include "mhplan/base/PlannerRegistry.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/base/World.h"
-#include "mhplan/bench/GeneratedWorlds.h"
-#include "mhplan/collision/Problem.h"
+#include "src/base/PlannerRegistry.h"
+#include "src/registry/Registry.h"
+#include "src/base/World.h"
+#include "benchmarks/GeneratedWorlds.h"
+#include "src/collision/Problem.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -7,8 +7,8 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 #define MHPLAN_BENCH_CAMPAIGN_RUNNER_H
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/sim/Simulation.h"
+#include "benchmarks/Campaign.h"
+#include "src/sim/Simulation.h"
 
 #include <iosfwd>
 #include <string>

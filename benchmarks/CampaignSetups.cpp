@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench: the 'setup' key of a campaign and of its world entries (docs/setups.md,
    benchmarks/README.md "Set-ups"): which validity checker and motion validator the experiments run with. */
-#include "mhplan/bench/CampaignSetups.h"
+#include "benchmarks/CampaignSetups.h"
 
 #include <yaml-cpp/yaml.h>
 

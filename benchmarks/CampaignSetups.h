@@ -3,8 +3,8 @@
 #ifndef MHPLAN_BENCH_CAMPAIGN_SETUPS_H
 #define MHPLAN_BENCH_CAMPAIGN_SETUPS_H
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/io/YamlReader.h"
+#include "benchmarks/Campaign.h"
+#include "src/io/YamlReader.h"
 
 #include <string>
 #include <vector>

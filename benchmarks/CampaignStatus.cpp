@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench: the cores a campaign may use (oversubscription) and where each experiment stands
    (--status): complete logs, markers of experiments in flight and of failed attempts. */
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/CampaignRunner.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <sched.h>
 #include <signal.h>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/CfgWorlds.h"
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/CfgWorlds.h"
+#include "benchmarks/ExperimentRuns.h"
 
-#include "mhplan/collision/MeshRigidBody.h"
-#include "mhplan/io/InputFile.h"
+#include "src/collision/MeshRigidBody.h"
+#include "src/io/InputFile.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>

@@ -5,9 +5,9 @@
 #ifndef MHPLAN_BENCH_CFG_WORLDS_H
 #define MHPLAN_BENCH_CFG_WORLDS_H
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/io/CfgIO.h"
-#include "mhplan/io/YamlReader.h"
+#include "benchmarks/Campaign.h"
+#include "src/io/CfgIO.h"
+#include "src/io/YamlReader.h"
 
 #include <functional>
 #include <set>

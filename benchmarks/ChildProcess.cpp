@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/ChildProcess.h"
+#include "benchmarks/ChildProcess.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>

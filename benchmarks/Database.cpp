@@ -4,13 +4,13 @@
    appends the logs there with ompl_benchmark_statistics, records them in mhplan_logs in the same file and
    only then renames the work file over the target. A merge killed at any moment leaves the old database
    as it was, and the next merge appends exactly what is missing. */
-#include "mhplan/bench/Database.h"
+#include "benchmarks/Database.h"
 
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/bench/ChildProcess.h"
-#include "mhplan/bench/ExperimentRuns.h"
-#include "mhplan/bench/Improvements.h"
-#include "mhplan/io/InputFile.h"
+#include "benchmarks/CampaignRunner.h"
+#include "benchmarks/ChildProcess.h"
+#include "benchmarks/ExperimentRuns.h"
+#include "benchmarks/Improvements.h"
+#include "src/io/InputFile.h"
 
 #include <sqlite3.h>
 

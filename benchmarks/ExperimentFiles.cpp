@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench: what the planning and the simulation experiment processes share: run reports, crash
    records and the experiment's files. */
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/ExperimentRuns.h"
 
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/CampaignRunner.h"
 
-#include "mhplan/base/Version.h"
+#include "src/base/Version.h"
 
 #include <ompl/base/PlannerStatus.h>
 

@@ -6,13 +6,13 @@
 #ifndef MHPLAN_BENCH_EXPERIMENT_RUNS_H
 #define MHPLAN_BENCH_EXPERIMENT_RUNS_H
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/ChildProcess.h"
-#include "mhplan/bench/OmplAdapters.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/CfgIO.h"
-#include "mhplan/sim/Simulation.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/ChildProcess.h"
+#include "benchmarks/OmplAdapters.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/io/CfgIO.h"
+#include "src/sim/Simulation.h"
 
 #include <ompl/geometric/SimpleSetup.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/GeneratedWorlds.h"
+#include "benchmarks/GeneratedWorlds.h"
 
-#include "mhplan/bench/Campaign.h"
+#include "benchmarks/Campaign.h"
 
-#include "mhplan/io/WorldIO.h"
+#include "src/io/WorldIO.h"
 
 #include <filesystem>
 #include <fstream>

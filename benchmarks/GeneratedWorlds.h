@@ -8,8 +8,8 @@
 #ifndef MHPLAN_BENCH_GENERATED_WORLDS_H
 #define MHPLAN_BENCH_GENERATED_WORLDS_H
 
-#include "mhplan/bench/WorldFamilies.h"
-#include "mhplan/io/YamlReader.h"
+#include "benchmarks/WorldFamilies.h"
+#include "src/io/YamlReader.h"
 
 #include <string>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/Improvements.h"
+#include "benchmarks/Improvements.h"
 
 #include <ompl/base/OptimizationObjective.h>
 

@@ -23,7 +23,7 @@
 #ifndef MHPLAN_BENCH_IMPROVEMENTS_H
 #define MHPLAN_BENCH_IMPROVEMENTS_H
 
-#include "mhplan/bench/Campaign.h"
+#include "benchmarks/Campaign.h"
 
 #include <ompl/base/ProblemDefinition.h>
 

@@ -6,7 +6,7 @@
    in a program that otherwise never starts one. mhplan defines that function itself (the dynamic linker
    binds OMPL's calls to the program's definition, docs/conventions.md "No shell"): the same lscpu output,
    read once per process tree by fork and exec with an argument vector and kept. */
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/ExperimentRuns.h"
 
 #include <ompl/tools/benchmark/MachineSpecs.h>
 

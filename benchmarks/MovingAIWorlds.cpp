@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/MovingAIWorlds.h"
+#include "benchmarks/MovingAIWorlds.h"
 
-#include "mhplan/base/World.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/ScenIO.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/optimum/Optimum.h"
+#include "src/base/World.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/io/ScenIO.h"
+#include "src/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
 
 #include <yaml-cpp/yaml.h>
 

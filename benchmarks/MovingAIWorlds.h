@@ -5,8 +5,8 @@
 #ifndef MHPLAN_BENCH_MOVINGAI_WORLDS_H
 #define MHPLAN_BENCH_MOVINGAI_WORLDS_H
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/io/YamlReader.h"
+#include "benchmarks/Campaign.h"
+#include "src/io/YamlReader.h"
 
 #include <set>
 #include <string>

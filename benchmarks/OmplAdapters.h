@@ -5,7 +5,7 @@
 #ifndef MHPLAN_BENCH_OMPL_ADAPTERS_H
 #define MHPLAN_BENCH_OMPL_ADAPTERS_H
 
-#include "mhplan/bench/Improvements.h"
+#include "benchmarks/Improvements.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/tools/benchmark/Benchmark.h>

@@ -2,18 +2,18 @@
 /* mhplan bench: planning experiments. Every run of every planner is one child process that runs the
    planner once through ompl::tools::Benchmark and sends its record; the experiment process assembles the
    runs into OMPL's experiment record and writes the log. */
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/ExperimentRuns.h"
 
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/CampaignRunner.h"
 
-#include "mhplan/base/Version.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/io/InputFile.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/metrics/MetricList.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/registry/Registry.h"
+#include "src/base/Version.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidValidity.h"
+#include "src/io/InputFile.h"
+#include "src/io/WorldIO.h"
+#include "src/metrics/MetricList.h"
+#include "src/optimum/Optimum.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/SimpleSetup.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/Progress.h"
+#include "benchmarks/Progress.h"
 
 #include <cmath>
 #include <iomanip>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_BENCH_PROGRESS_H
 #define MHPLAN_BENCH_PROGRESS_H
 
-#include "mhplan/bench/ChildProcess.h"
+#include "benchmarks/ChildProcess.h"
 
 #include <string>
 #include <vector>

@@ -2,16 +2,16 @@
 /* mhplan bench: the scheduler of a campaign. It checks the campaign, skips the experiments whose logs
    are complete (resume), runs the others in up to `jobs` experiment processes at a time, follows their
    run reports for the progress bar and the summary, and merges the logs into the database. */
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/CampaignRunner.h"
 
-#include "mhplan/bench/Database.h"
-#include "mhplan/bench/ExperimentRuns.h"
-#include "mhplan/bench/Improvements.h"
-#include "mhplan/bench/Progress.h"
-#include "mhplan/io/InputFile.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "benchmarks/Database.h"
+#include "benchmarks/ExperimentRuns.h"
+#include "benchmarks/Improvements.h"
+#include "benchmarks/Progress.h"
+#include "src/io/InputFile.h"
+#include "src/io/WorldIO.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <fcntl.h>
 #include <poll.h>

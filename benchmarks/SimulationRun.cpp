@@ -2,12 +2,12 @@
 /* mhplan bench: simulation experiments. Every run of every controller is one child process that runs the
    simulation once and sends its record; the experiment process writes the log in OMPL's format. Also the
    start perturbation of the runs. */
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/CampaignRunner.h"
+#include "benchmarks/ExperimentRuns.h"
 
-#include "mhplan/base/Version.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "src/base/Version.h"
+#include "src/sim/Controllers.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/SimpleSetup.h>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench --slurm: the batch scripts of a campaign's array and merge jobs, and their submission. */
-#include "mhplan/bench/Slurm.h"
+#include "benchmarks/Slurm.h"
 
-#include "mhplan/base/World.h"
-#include "mhplan/bench/CampaignRunner.h"
+#include "src/base/World.h"
+#include "benchmarks/CampaignRunner.h"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -7,7 +7,7 @@
 #ifndef MHPLAN_BENCH_SLURM_H
 #define MHPLAN_BENCH_SLURM_H
 
-#include "mhplan/bench/Campaign.h"
+#include "benchmarks/Campaign.h"
 
 #include <string>
 #include <vector>

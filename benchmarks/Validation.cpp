@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench: a campaign's planners and controllers checked before any run, in throw-away processes. */
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/ExperimentRuns.h"
 
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/Controllers.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/sim/Controllers.h"
 
 #include <ompl/geometric/SimpleSetup.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/bench/WorldFamilies.h"
+#include "benchmarks/WorldFamilies.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/optimum/Optimum.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "src/optimum/Optimum.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #ifndef MHPLAN_WORLD_FAMILIES_H
 #define MHPLAN_WORLD_FAMILIES_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cstdint>
 #include <string>

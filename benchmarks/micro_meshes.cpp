@@ -5,7 +5,7 @@
    a bumpy height field of 2 k^2 triangles over [-10, 10]^2, the robot the 1.6 x 0.5 x 0.5 rod of
    environments/omplapp; poses and motions are drawn before the timed loops.
    Run: mhplan_mesh_microbench --benchmark_min_time=0.2 */
-#include "mhplan/collision/MeshRigidBody.h"
+#include "src/collision/MeshRigidBody.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/SE3StateSpace.h>

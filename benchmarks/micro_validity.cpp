@@ -3,11 +3,11 @@
    and exact motion checks, on the 12-circle world of [BFO] case 2 and on generated worlds of 1,000 and
    10,000 circles. Query points and segments
    are drawn before the timed loops. Run: mhplan_microbench --benchmark_min_time=0.2 */
-#include "mhplan/base/Geometry.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/FclCollision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/Validity.h"
+#include "src/base/Geometry.h"
+#include "src/collision/Collision.h"
+#include "src/collision/FclCollision.h"
+#include "src/collision/Problem.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>

@@ -4,7 +4,7 @@
    tree of the same text (YAML::LoadAll, what the reader built before) and yaml-cpp's parse events alone (the
    floor of any reading with yaml-cpp), for worlds of 10^3, 10^4 and 10^5 queries (3.7 MB).
    Run: mhplan_world_microbench --benchmark_min_time=0.5 */
-#include "mhplan/io/WorldIO.h"
+#include "src/io/WorldIO.h"
 
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>

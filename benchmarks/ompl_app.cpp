@@ -13,12 +13,12 @@
                    [--params KEY=VALUE,...] [--seed N] [--verbose 1]
    --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks).
  */
-#include "mhplan/bench/WorldFamilies.h"
+#include "benchmarks/WorldFamilies.h"
 
-#include "mhplan/io/Generators.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/planners/memetic/MemeticPlanner.h"
-#include "mhplan/registry/Registry.h"
+#include "src/io/Generators.h"
+#include "src/optimum/Optimum.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

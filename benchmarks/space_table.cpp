@@ -8,11 +8,11 @@
 
    mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...]
                       [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3] */
-#include "mhplan/metrics/Metrics.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/registry/Registry.h"
+#include "src/metrics/Metrics.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidValidity.h"
+#include "src/io/WorldIO.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

@@ -1,21 +1,21 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/Registration.h"
+#include "ompl_planners/Registration.h"
 
-#include "mhplan/planners/field/ArtificialPotentialField.h"
-#include "mhplan/planners/field/BacterialForaging.h"
-#include "mhplan/planners/field/BacterialWalk.h"
-#include "mhplan/planners/lattice/AStar.h"
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/planners/memetic/MemeticGenetic.h"
-#include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
-#include "mhplan/planners/pagmo/PagmoPlanner.h"
-#include "mhplan/planners/population/Genetic.h"
-#include "mhplan/planners/population/GreyWolf.h"
-#include "mhplan/planners/population/LRSMA.h"
-#include "mhplan/planners/population/MountainGazelle.h"
-#include "mhplan/planners/population/ParticleSwarm.h"
-#include "mhplan/planners/population/SlimeMould.h"
-#include "mhplan/planners/population/Whale.h"
+#include "ompl_planners/field/ArtificialPotentialField.h"
+#include "ompl_planners/field/BacterialForaging.h"
+#include "ompl_planners/field/BacterialWalk.h"
+#include "ompl_planners/lattice/AStar.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "ompl_planners/memetic/MemeticGenetic.h"
+#include "ompl_planners/memetic/MemeticOffsetPlanners.h"
+#include "ompl_planners/pagmo/PagmoPlanner.h"
+#include "ompl_planners/population/Genetic.h"
+#include "ompl_planners/population/GreyWolf.h"
+#include "ompl_planners/population/LRSMA.h"
+#include "ompl_planners/population/MountainGazelle.h"
+#include "ompl_planners/population/ParticleSwarm.h"
+#include "ompl_planners/population/SlimeMould.h"
+#include "ompl_planners/population/Whale.h"
 
 namespace ob = ompl::base;
 
@@ -74,7 +74,7 @@ namespace mhplan
     void registerMhplanPlanners(PlannerRegistry &r)
     {
         // One line each: name, origin, description, allocator, capabilities (cap::,
-        // mhplan/base/PlannerRegistry.h).
+        // src/base/PlannerRegistry.h).
         r.add({"AStar", "mhplan",
                "A* on an 8-connected lattice (grid cells, MovingAI rules) (Hart et al. 1968)",
                allocatorFor<AStar>(), cap::Planar | cap::Deterministic});

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_PLANNERS_REGISTRATION_H
 #define MHPLAN_PLANNERS_REGISTRATION_H
 
-#include "mhplan/base/PlannerRegistry.h"
+#include "src/base/PlannerRegistry.h"
 
 namespace mhplan
 {

@@ -5,9 +5,9 @@
 #ifndef MHPLAN_TESTS_BENCH_SUPPORT_H
 #define MHPLAN_TESTS_BENCH_SUPPORT_H
 
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/registry/Registry.h"
+#include "benchmarks/CampaignRunner.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Exception.h>

@@ -5,10 +5,10 @@
 #ifndef MHPLAN_TESTS_CONTRACT_SUPPORT_H
 #define MHPLAN_TESTS_CONTRACT_SUPPORT_H
 
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/registry/Registry.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/SimpleSetup.h>

@@ -6,9 +6,9 @@
 #ifndef MHPLAN_TESTS_OPTIMUM_SUPPORT_H
 #define MHPLAN_TESTS_OPTIMUM_SUPPORT_H
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/optimum/Optimum.h"
+#include "src/collision/Collision.h"
+#include "src/collision/GridCollision.h"
+#include "src/optimum/Optimum.h"
 
 #include <gtest/gtest.h>
 

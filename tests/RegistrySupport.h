@@ -5,12 +5,12 @@
 #ifndef MHPLAN_TESTS_REGISTRY_SUPPORT_H
 #define MHPLAN_TESTS_REGISTRY_SUPPORT_H
 
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/planners/field/ArtificialPotentialField.h"
-#include "mhplan/planners/field/BacterialWalk.h"
-#include "mhplan/planners/lattice/LatticePlanner.h"
-#include "mhplan/planners/memetic/MemeticPlanner.h"
-#include "mhplan/registry/Registry.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "ompl_planners/field/ArtificialPotentialField.h"
+#include "ompl_planners/field/BacterialWalk.h"
+#include "ompl_planners/lattice/LatticePlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

@@ -5,7 +5,7 @@
 #ifndef MHPLAN_TESTS_SPACE_PROBLEMS_H
 #define MHPLAN_TESTS_SPACE_PROBLEMS_H
 
-#include "mhplan/collision/CarSpaces.h"
+#include "src/collision/CarSpaces.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>

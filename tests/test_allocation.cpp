@@ -4,9 +4,9 @@
    and, in the normal build, the interposed C allocation functions (AllocationCounter.h); the counter itself
    is tested first: every form of operator new once, the containers' allocations, and the C allocations in
    exactly the builds that count them. */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "src/io/WorldIO.h"
 
 #include "AllocationCounter.h"
 

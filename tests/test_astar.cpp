@@ -2,15 +2,15 @@
 /* The lattice baselines: A* equals the 8-connected (MovingAI) optimum, computed here by a plain Dijkstra and
    by the foundation's computeGridOctileOptimum; Theta* lies between the any-angle optimum and A*; geometric
    worlds, off-centre endpoints, disc robots, continuation, determinism; the 'mhplan scen' tool end to end. */
-#include "mhplan/planners/lattice/AStar.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/collision/Validity.h"
-#include "mhplan/io/WorldIO.h"
+#include "ompl_planners/lattice/AStar.h"
+#include "src/io/Generators.h"
+#include "src/io/GridIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "src/collision/Validity.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerTerminationCondition.h>

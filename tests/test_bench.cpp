@@ -5,23 +5,23 @@
    sharded runs merge to the unsharded row count with identical results; a re-run resumes (skips finished
    experiments). A planner that hangs (ignores its termination condition) is killed after the campaign's
    wall_limit and recorded as Crash. Simulation experiments are in test_bench_sim.cpp. */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
 #include "CliSupport.h"
 #include "BenchSupport.h"
 #include "TimeScale.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/sim/Simulation.h"
-#include "mhplan/base/World.h"
-#include "mhplan/bench/Improvements.h"
-#include "mhplan/bench/ExperimentRuns.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/metrics/MetricList.h"
+#include "src/sim/Controllers.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/sim/Simulation.h"
+#include "src/base/World.h"
+#include "benchmarks/Improvements.h"
+#include "benchmarks/ExperimentRuns.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "src/metrics/MetricList.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Console.h>

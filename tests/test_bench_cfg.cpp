@@ -3,7 +3,7 @@
    in one campaign, its experiment's fingerprint covering the .cfg and both meshes, the refusals (missing
    file, unknown key, a planner that cannot plan in SE(2)/SE(3), a .cfg error naming its own file and line),
    and a round trip through `mhplan bench` into the database with every path checked densely. */
-#include "mhplan/bench/Campaign.h"
+#include "benchmarks/Campaign.h"
 #include "BenchSupport.h"
 #include "CliSupport.h"
 

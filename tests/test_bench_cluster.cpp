@@ -5,7 +5,7 @@
 #include "BenchSupport.h"
 #include "CliSupport.h"
 
-#include "mhplan/bench/Slurm.h"
+#include "benchmarks/Slurm.h"
 
 #include <sched.h>
 #include <unistd.h>

@@ -10,8 +10,8 @@
    once each, the same runs with the same seeds and costs. Shards:
    uneven sizes, k > 2, disjoint, covering every experiment, planning and simulation mixed; shards run at the
    same time into one log directory and merged at the end give the uninterrupted database again. */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
 
 #include <ompl/util/RandomNumbers.h>
 

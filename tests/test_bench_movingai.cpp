@@ -3,11 +3,11 @@
    octile optimum (LF and CRLF files, full-precision and 6-significant-digit optima), a disagreement refused
    with file:line, both optima recorded, A*'s lengths equal to them. Data: tests/data/movingai/
    (make_scen.py). */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
 #include "BenchSupport.h"
 #include "CliSupport.h"
-#include "mhplan/io/ScenIO.h"
+#include "src/io/ScenIO.h"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>

@@ -2,17 +2,17 @@
 /* Simulation experiments in campaigns: parsed and refused with file:line, their rows carry exactly what an
    independent run of the simulator with the same seed and start perturbation returns; a hanging simulation
    run is killed and recorded as Crash; plan:<P> controllers draw from the campaign's registry. */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
 #include "CliSupport.h"
 #include "BenchSupport.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/sim/Simulation.h"
-#include "mhplan/base/World.h"
-#include "mhplan/bench/Improvements.h"
+#include "src/sim/Controllers.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/sim/Simulation.h"
+#include "src/base/World.h"
+#include "benchmarks/Improvements.h"
 
 #include <ompl/base/Planner.h>
 #include <ompl/util/Exception.h>

@@ -15,13 +15,13 @@
         y=3  +--------+       G (9,5) behind it
             x=3    x=6 x=6.5
 */
-#include "mhplan/planners/field/ArtificialPotentialField.h"
-#include "mhplan/planners/field/BacterialForaging.h"
-#include "mhplan/planners/field/BacterialWalk.h"
-#include "mhplan/planners/field/PotentialField.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/collision/Validity.h"
+#include "ompl_planners/field/ArtificialPotentialField.h"
+#include "ompl_planners/field/BacterialForaging.h"
+#include "ompl_planners/field/BacterialWalk.h"
+#include "ompl_planners/field/PotentialField.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/util/Exception.h>
 #include <ompl/base/ProblemDefinition.h>

@@ -6,9 +6,9 @@
    it lacks, keeps its link, mode and hard links, and no file that is not the campaign's own is deleted. */
 #include "BenchSupport.h"
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/bench/ExperimentRuns.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
+#include "benchmarks/ExperimentRuns.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
    The termination conditions count their calls (no clock). */
 #include "RegistrySupport.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/SE3StateSpace.h>

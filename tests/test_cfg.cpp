@@ -2,9 +2,9 @@
 /* OMPL.app's .cfg problem files (docs/omplapp.md): the keys read as OMPL.app's benchmark program reads them,
    every refusal naming the file, line and key, and the problems of environments/omplapp solved by OMPL's
    planners with paths that pass the independent dense check. */
-#include "mhplan/base/World.h"
-#include "mhplan/io/CfgIO.h"
-#include "mhplan/registry/Registry.h"
+#include "src/base/World.h"
+#include "src/io/CfgIO.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/Console.h>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the collision models: the FCL-backed model against the analytic oracle on many worlds, both
    against closed forms, and the exact motion validator. */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/FclCollision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Collision.h"
+#include "src/collision/FclCollision.h"
+#include "src/collision/Problem.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/ScopedState.h>
 

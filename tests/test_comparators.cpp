@@ -3,12 +3,12 @@
    cases (the numbers the papers' equations give), the leader archive, a parameter that switches a rule off
    and changes what the planner does, and collision-free paths on an [LRSMA] scenario with the papers'
    budget. The registry-driven contract, determinism and quality tests run them too. */
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/population/GreyWolf.h"
-#include "mhplan/planners/population/ParticleSwarm.h"
-#include "mhplan/planners/population/Whale.h"
-#include "mhplan/registry/Registry.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/population/GreyWolf.h"
+#include "ompl_planners/population/ParticleSwarm.h"
+#include "ompl_planners/population/Whale.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/util/Console.h>

@@ -2,7 +2,7 @@
 /* mhplan tests: controllers declare their parameters (name, default, range, description) like planners;
    every declared default and range round-trips through setParameter, bad values are refused naming the
    parameter and its range, and the listing shows every parameter. */
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
 #include <gtest/gtest.h>
 

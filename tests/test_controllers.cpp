@@ -3,9 +3,9 @@
    every recorded step that no robot overlaps a static obstacle, a moving obstacle or another robot,
    determinism per seed, robots joining and tasks assigned during a run, the U-shaped trap, 15 robots
    crossing, BFO on a static world, plan-then-follow replanning and evasion. */
-#include "mhplan/planners/lattice/ThetaStar.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "ompl_planners/lattice/ThetaStar.h"
+#include "src/sim/Controllers.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ompl/util/Console.h>
 

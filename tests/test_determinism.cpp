@@ -2,8 +2,8 @@
 /* Determinism per seed (docs/conventions.md, "Randomness and seeds"): every planner of the contract registry
    (ContractSupport.h: every built-in mhplan planner and the test's own), run twice from fresh planner objects
    on fresh problems with the same seed, repeats its run; another seed gives another run. */
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

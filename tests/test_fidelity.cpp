@@ -8,15 +8,15 @@
    population;
    - the GA's crossover finds a common node within a tolerance (or by cell on grids), not by exact equality.
  */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/common/Fitness.h"
-#include "mhplan/planners/field/BacterialColony.h"
-#include "mhplan/planners/population/Genetic.h"
-#include "mhplan/planners/population/LRSMA.h"
-#include "mhplan/planners/population/SlimeMould.h"
-#include "mhplan/registry/Registry.h"
+#include "benchmarks/Campaign.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/field/BacterialColony.h"
+#include "ompl_planners/population/Genetic.h"
+#include "ompl_planners/population/LRSMA.h"
+#include "ompl_planners/population/SlimeMould.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/SimpleSetup.h>

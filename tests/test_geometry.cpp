@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Closed-form geometry against hand computations (the drawings are y-up). */
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Occupancy grids: MovingAI and PGM parsing, and the exact grid collision model against brute force over
    every blocked square (drawings are y-up: row 0 of a file is the top). */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/io/GridIO.h"
+#include "src/collision/Collision.h"
+#include "src/collision/GridCollision.h"
+#include "src/io/GridIO.h"
 
 #include <gtest/gtest.h>
 

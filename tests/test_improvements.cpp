@@ -5,13 +5,13 @@
    with neither gets one "final" row. Rows are strictly improving in cost, non-decreasing in time, within
    the solve time, never below the exact optimum, and end at the returned solution's cost. The side-file
    encoding round-trips. Planners run for a fixed 0.3 s: the assertions hold for any number of iterations. */
-#include "mhplan/bench/Improvements.h"
+#include "benchmarks/Improvements.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/collision/Collision.h"
+#include "src/optimum/Optimum.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/geometric/SimpleSetup.h>

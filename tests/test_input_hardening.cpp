@@ -3,12 +3,12 @@
  */
 #include "CliSupport.h"
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/Database.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/Database.h"
+#include "src/io/GridIO.h"
+#include "src/io/WorldIO.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

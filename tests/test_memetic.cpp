@@ -4,14 +4,14 @@
    generation budget on a generated 100-circle world and a maze, reproducible from the seed, clear() then
    solve(), the termination condition honoured; the anytime restarts of the [GMS] variants only without an
    iteration budget. Budgets are generations (never wall-clock), so the results are deterministic. */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/planners/memetic/MemeticToolkit.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
+#include "src/optimum/Optimum.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>

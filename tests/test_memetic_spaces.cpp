@@ -5,10 +5,10 @@
    checks; with OMPL's DiscreteMotionValidator and a plain point checker the validator margin keeps the
    returned paths clear of what the validator's samples miss (an independent dense check). Budgets are
    generations, never wall-clock. */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/planners/memetic/MemeticPlanner.h"
-#include "mhplan/planners/memetic/MemeticStateToolkit.h"
-#include "mhplan/registry/Registry.h"
+#include "benchmarks/Campaign.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticStateToolkit.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

@@ -2,10 +2,10 @@
 /* Meshes (docs/meshes.md): reading COLLADA (nested transforms, instances, up axis), OBJ, STL and PLY;
    refusing unreadable, empty, degenerate and oversized meshes; collision and clearance by FCL against
    analytic answers; the certified motion validator against dense pose checks. */
-#include "mhplan/base/PlannerRegistry.h"
-#include "mhplan/base/World.h"
-#include "mhplan/collision/MeshRigidBody.h"
-#include "mhplan/io/MeshIO.h"
+#include "src/base/PlannerRegistry.h"
+#include "src/base/World.h"
+#include "src/collision/MeshRigidBody.h"
+#include "src/io/MeshIO.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>

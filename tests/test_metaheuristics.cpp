@@ -2,13 +2,13 @@
 /* mhplan's metaheuristic planners (ompl_planners/): the shared encoding and fitness, determinism per seed,
    and solution quality on every shipped seed world with the papers' settings (20 fixed seeds each), measured
    against the exact optimum. */
-#include "mhplan/planners/common/Fitness.h"
-#include "mhplan/planners/common/PathEncoding.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/collision/Validity.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/optimum/Optimum.h"
+#include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/PathEncoding.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/collision/Validity.h"
+#include "src/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>

@@ -10,9 +10,9 @@
                                    2 |  A ------------- B   |  A = (1, 2), B = (9, 2)
                                    0 +----------------------+ x
                                      0                     10                                      */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/metrics/MetricList.h"
-#include "mhplan/metrics/Metrics.h"
+#include "src/collision/Collision.h"
+#include "src/metrics/MetricList.h"
+#include "src/metrics/Metrics.h"
 
 #include <gtest/gtest.h>
 

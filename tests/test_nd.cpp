@@ -7,11 +7,11 @@
 
    Every returned path is checked independently (densely sampled against the sphere, not through the
    planner's motion validator), and setup() refuses unsupported spaces with a clear ompl::Exception. */
-#include "mhplan/planners/common/Fitness.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/planners/memetic/MemeticPlanner.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/planners/population/SlimeMould.h"
+#include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
+#include "src/registry/Registry.h"
+#include "ompl_planners/population/SlimeMould.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/PlannerData.h>

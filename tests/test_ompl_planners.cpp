@@ -2,8 +2,8 @@
 /* OMPL's geometric planners in the registry (docs/cli.md, "OMPL's planners"): every one solves a small
    problem on R^2 and on SE(2) (iteration-bounded), OMPL.app's names resolve to one entry whatever their
    case, and OMPL's parameter range suggestions are hints (large values accepted, garbage refused). */
-#include "mhplan/base/World.h"
-#include "mhplan/registry/Registry.h"
+#include "src/base/World.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/ProjectionEvaluator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

@@ -2,15 +2,15 @@
 /* The switchable [GMS] operators of PopulationPlanner (gms_repair, gms_revise, gms_simplify, gms_improve,
    gms_scope, gms_replace_fraction): validation, defaults, refusal where they cannot apply, and what the
    improved variants SMA-OPS, LRSMA-OPS and MGO-OPS achieve on bfo_case2 with the papers' budgets. */
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/io/WorldIO.h"
 
-#include "mhplan/planners/population/LRSMA.h"
-#include "mhplan/planners/population/MountainGazelle.h"
-#include "mhplan/planners/common/Operators.h"
-#include "mhplan/planners/population/SlimeMould.h"
+#include "ompl_planners/population/LRSMA.h"
+#include "ompl_planners/population/MountainGazelle.h"
+#include "ompl_planners/common/Operators.h"
+#include "ompl_planners/population/SlimeMould.h"
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/MotionValidator.h>

@@ -5,11 +5,11 @@
    maze). */
 #include "OptimumSupport.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "src/collision/GridCollision.h"
+#include "src/optimum/Optimum.h"
+#include "src/io/WorldIO.h"
 
 #include <gtest/gtest.h>
 

@@ -3,12 +3,12 @@
    the algorithms' parameters, pagmo's own refusals at setup(), the smallest population, the termination
    condition inside an evolve() call, and pagmo's GWO and PSO against mhplan's on constructed cases (11.3).
    The registry-driven contract and determinism tests run every "pagmo:" planner too. */
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/pagmo/PagmoPlanner.h"
-#include "mhplan/planners/population/GreyWolf.h"
-#include "mhplan/planners/population/ParticleSwarm.h"
-#include "mhplan/registry/Registry.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/pagmo/PagmoPlanner.h"
+#include "ompl_planners/population/GreyWolf.h"
+#include "ompl_planners/population/ParticleSwarm.h"
+#include "src/registry/Registry.h"
 #include "RegistrySupport.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>

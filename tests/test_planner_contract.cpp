@@ -7,11 +7,11 @@
    searches (isLatticeSearch) and potential-field walks (isWalk) keep it too, with the checks adapted where
    their nature differs. The registry, the seed problem and the planner kinds: ContractSupport.h; determinism
    per seed: test_determinism.cpp. */
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/collision/Validity.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/collision/Validity.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
 #include <ompl/util/Exception.h>
 #include <ompl/base/PlannerData.h>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
    and every registered planner solves a seed world through the shared exact validity checking. */
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/planners/common/PlannerBase.h"
+#include "src/base/Parameters.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/io/WorldIO.h"
+#include "ompl_planners/common/PlannerBase.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -300,7 +300,7 @@ namespace
         return out;
     }
 
-    /** The installed header (include/mhplan/planners/FAMILY/FILE.h, the tree of ompl_planners/) that defines
+    /** The header (ompl_planners/FAMILY/FILE.h, installed as include/mhplan/ompl_planners/...) that defines
         class \e cls ("mhplan::SlimeMould"); "" when none does. */
     std::string headerOf(const std::string &cls)
     {
@@ -318,7 +318,7 @@ namespace
             std::stringstream text;
             text << in.rdbuf();
             if (std::regex_search(text.str(), definition))
-                return "mhplan/planners/" + std::filesystem::relative(f, root).generic_string();
+                return "ompl_planners/" + std::filesystem::relative(f, root).generic_string();
         }
         return "";
     }

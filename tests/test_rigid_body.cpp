@@ -4,11 +4,11 @@
    src/base/Geometry.h, the displacement bound against OMPL's interpolation, and thousands of random motions
    on the shipped worlds (and a disc robot, and a grid world) of which no accepted one collides under a dense
    independent check at 1e-3 steps, while most motions the dense check finds free are accepted. */
-#include "mhplan/collision/CarSpaces.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidBody.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/collision/CarSpaces.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidBody.h"
+#include "src/collision/RigidValidity.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/util/RandomNumbers.h>
 

@@ -4,12 +4,12 @@
    the requested share of the diagonal apart), generated campaign worlds (refused with file:line and field
    for bad entries; written once and reused), benchmarks/scaling.yaml parses, and the smoke campaign
    (benchmarks/scaling_smoke.yaml) runs end to end into a database with optima and improvements. */
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/bench/WorldFamilies.h"
-#include "mhplan/io/WorldIO.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
+#include "src/collision/Collision.h"
+#include "src/optimum/Optimum.h"
+#include "benchmarks/WorldFamilies.h"
+#include "src/io/WorldIO.h"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>

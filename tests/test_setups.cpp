@@ -8,13 +8,13 @@
 #include "BenchSupport.h"
 #include "CliSupport.h"
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Metrics.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/Validity.h"
-#include "mhplan/io/WorldIO.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Metrics.h"
+#include "src/collision/Problem.h"
+#include "src/collision/Validity.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 

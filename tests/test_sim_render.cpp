@@ -3,9 +3,9 @@
    independent GIF and LZW decoder written here, the rasteriser and SVG on a small run, and `mhplan sim` end
    to end. */
 #include "CliSupport.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/draw/SimRender.h"
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/draw/SimRender.h"
+#include "src/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 

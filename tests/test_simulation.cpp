@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* Tests of the simulator core and scenario files (src/sim/Simulation.h, src/sim/ScenarioIO.h), with
    controllers defined here so that the physics is tested independently of mhplan's controllers. */
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 

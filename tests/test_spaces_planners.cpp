@@ -4,13 +4,13 @@
    that supports them (the global BFO among them) with paths checked densely by the test's own geometry,
    reported costs equal to the space's distances, the cusp count, and the refusals of unsupported spaces and
    switches. */
-#include "mhplan/metrics/Metrics.h"
-#include "mhplan/planners/common/PlannerSupport.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/planners/common/StateParametrisation.h"
-#include "mhplan/planners/common/StatePathFitness.h"
-#include "mhplan/planners/population/MountainGazelle.h"
-#include "mhplan/registry/Registry.h"
+#include "src/metrics/Metrics.h"
+#include "ompl_planners/common/PlannerSupport.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/StateParametrisation.h"
+#include "ompl_planners/common/StatePathFitness.h"
+#include "ompl_planners/population/MountainGazelle.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/spaces/DiscreteStateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>

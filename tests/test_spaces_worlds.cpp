@@ -5,14 +5,14 @@
    campaign benchmarks/spaces_smoke.yaml end to end with its report. */
 #include "CliSupport.h"
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/metrics/Metrics.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/registry/Registry.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
+#include "src/metrics/Metrics.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidValidity.h"
+#include "src/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/util/RandomNumbers.h>

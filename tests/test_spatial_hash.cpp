@@ -5,8 +5,8 @@
    robots, for random points (inside and outside the bounds), points on obstacle boundaries and vertices,
    short and long random segments and segments along polygon edges; it is chosen automatically above
    kAutoAnalyticMaxObstacles geometric obstacles. */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/SpatialHash.h"
+#include "src/collision/Collision.h"
+#include "src/collision/SpatialHash.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* World files: every malformed input is refused with the file, the line and the field; shipped worlds load.
  */
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/io/QueryList.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/io/YamlReader.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "src/io/QueryList.h"
+#include "src/io/WorldIO.h"
+#include "src/io/YamlReader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/Fitness.h"
+#include "ompl_planners/common/Fitness.h"
 
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>

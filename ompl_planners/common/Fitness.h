@@ -4,8 +4,8 @@
 #ifndef MHPLAN_FITNESS_H
 #define MHPLAN_FITNESS_H
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/planners/common/PathEncoding.h"
+#include "src/collision/Collision.h"
+#include "ompl_planners/common/PathEncoding.h"
 
 #include <ompl/base/SpaceInformation.h>
 

@@ -3,9 +3,9 @@
    initial population (gms_initial), and after each iteration the path operators on the operated individuals
    with greedy re-insertion, the replacement of the worst, and the re-encoding of an operated polyline into m
    waypoints. */
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
-#include "mhplan/planners/common/Operators.h"
+#include "ompl_planners/common/Operators.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/Operators.h"
+#include "ompl_planners/common/Operators.h"
 
 #include <algorithm>
 #include <array>

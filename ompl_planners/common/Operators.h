@@ -3,7 +3,7 @@
 #ifndef MHPLAN_OPERATORS_H
 #define MHPLAN_OPERATORS_H
 
-#include "mhplan/planners/common/Fitness.h"
+#include "ompl_planners/common/Fitness.h"
 
 #include <ompl/util/RandomNumbers.h>
 

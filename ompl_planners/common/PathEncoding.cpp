@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/PathEncoding.h"
+#include "ompl_planners/common/PathEncoding.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 #ifndef MHPLAN_PATH_ENCODING_H
 #define MHPLAN_PATH_ENCODING_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <cstddef>
 #include <string>

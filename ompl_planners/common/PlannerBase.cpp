@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/PlannerBase.h"
+#include "ompl_planners/common/PlannerBase.h"
 
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>

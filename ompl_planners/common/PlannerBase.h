@@ -4,7 +4,7 @@
 #ifndef MHPLAN_PLANNER_BASE_H
 #define MHPLAN_PLANNER_BASE_H
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <ompl/base/Cost.h>
 #include <ompl/base/Planner.h>

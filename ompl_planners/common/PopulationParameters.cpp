@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* PopulationPlanner: its parameters (each range written once, in kRanges below) and their setters. */
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/base/Parameters.h"
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "src/base/Parameters.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/planners/common/Operators.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/GridCollision.h"
+#include "ompl_planners/common/Operators.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>

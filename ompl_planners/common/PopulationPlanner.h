@@ -5,12 +5,12 @@
 #ifndef MHPLAN_POPULATION_PLANNER_H
 #define MHPLAN_POPULATION_PLANNER_H
 
-#include "mhplan/planners/common/Fitness.h"
-#include "mhplan/planners/common/PlannerBase.h"
-#include "mhplan/planners/common/PathEncoding.h"
-#include "mhplan/planners/common/StateParametrisation.h"
-#include "mhplan/planners/common/StatePathFitness.h"
-#include "mhplan/base/Parameters.h"
+#include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/PlannerBase.h"
+#include "ompl_planners/common/PathEncoding.h"
+#include "ompl_planners/common/StateParametrisation.h"
+#include "ompl_planners/common/StatePathFitness.h"
+#include "src/base/Parameters.h"
 
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* StateParametrisation: the leaves of a state space and their coordinates (docs/spaces.md). */
-#include "mhplan/planners/common/StateParametrisation.h"
+#include "ompl_planners/common/StateParametrisation.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SO2StateSpace.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/common/StatePathFitness.h"
+#include "ompl_planners/common/StatePathFitness.h"
 
 #include <algorithm>
 #include <utility>

@@ -4,8 +4,8 @@
 #ifndef MHPLAN_STATE_PATH_FITNESS_H
 #define MHPLAN_STATE_PATH_FITNESS_H
 
-#include "mhplan/planners/common/Fitness.h"
-#include "mhplan/planners/common/StateParametrisation.h"
+#include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/StateParametrisation.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/ArtificialPotentialField.h"
-#include "mhplan/base/Parameters.h"
+#include "ompl_planners/field/ArtificialPotentialField.h"
+#include "src/base/Parameters.h"
 
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
 

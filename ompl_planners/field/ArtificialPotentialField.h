@@ -3,7 +3,7 @@
 #ifndef MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
 #define MHPLAN_ARTIFICIAL_POTENTIAL_FIELD_H
 
-#include "mhplan/planners/field/FieldWalkPlanner.h"
+#include "ompl_planners/field/FieldWalkPlanner.h"
 
 #include <string>
 #include <utility>

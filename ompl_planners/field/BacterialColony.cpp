@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/BacterialColony.h"
+#include "ompl_planners/field/BacterialColony.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/BacterialForaging.h"
+#include "ompl_planners/field/BacterialForaging.h"
 
 namespace ob = ompl::base;
 

@@ -4,9 +4,9 @@
 #ifndef MHPLAN_BACTERIAL_FORAGING_H
 #define MHPLAN_BACTERIAL_FORAGING_H
 
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/planners/field/BacterialColony.h"
-#include "mhplan/planners/field/ColonyParameters.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "ompl_planners/field/BacterialColony.h"
+#include "ompl_planners/field/ColonyParameters.h"
 
 #include <memory>
 

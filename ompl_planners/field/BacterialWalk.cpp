@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/BacterialWalk.h"
-#include "mhplan/base/Parameters.h"
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/field/BacterialWalk.h"
+#include "src/base/Parameters.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

@@ -4,9 +4,9 @@
 #ifndef MHPLAN_BACTERIAL_WALK_H
 #define MHPLAN_BACTERIAL_WALK_H
 
-#include "mhplan/planners/field/BacterialColony.h"
-#include "mhplan/planners/field/ColonyParameters.h"
-#include "mhplan/planners/field/FieldWalkPlanner.h"
+#include "ompl_planners/field/BacterialColony.h"
+#include "ompl_planners/field/ColonyParameters.h"
+#include "ompl_planners/field/FieldWalkPlanner.h"
 
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/ColonyParameters.h"
-#include "mhplan/base/Parameters.h"
+#include "ompl_planners/field/ColonyParameters.h"
+#include "src/base/Parameters.h"
 
 namespace mhplan
 {

@@ -5,7 +5,7 @@
 #ifndef MHPLAN_COLONY_PARAMETERS_H
 #define MHPLAN_COLONY_PARAMETERS_H
 
-#include "mhplan/planners/field/BacterialColony.h"
+#include "ompl_planners/field/BacterialColony.h"
 
 #include <ompl/base/GenericParam.h>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/FieldWalkPlanner.h"
+#include "ompl_planners/field/FieldWalkPlanner.h"
 
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/Validity.h"
+#include "src/base/Parameters.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
 

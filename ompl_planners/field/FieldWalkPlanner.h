@@ -3,8 +3,8 @@
 #ifndef MHPLAN_FIELD_WALK_PLANNER_H
 #define MHPLAN_FIELD_WALK_PLANNER_H
 
-#include "mhplan/planners/common/PlannerBase.h"
-#include "mhplan/planners/field/PotentialField.h"
+#include "ompl_planners/common/PlannerBase.h"
+#include "ompl_planners/field/PotentialField.h"
 
 #include <memory>
 #include <string>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/field/PotentialField.h"
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/field/PotentialField.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/Validity.h"
+#include "src/base/Parameters.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

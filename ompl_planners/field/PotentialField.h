@@ -4,8 +4,8 @@
 #ifndef MHPLAN_POTENTIAL_FIELD_H
 #define MHPLAN_POTENTIAL_FIELD_H
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "src/collision/Collision.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
 #include <ompl/base/GenericParam.h>
 #include <ompl/base/Planner.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/lattice/AStar.h"
+#include "ompl_planners/lattice/AStar.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_ASTAR_H
 #define MHPLAN_ASTAR_H
 
-#include "mhplan/planners/lattice/LatticePlanner.h"
+#include "ompl_planners/lattice/LatticePlanner.h"
 
 namespace mhplan
 {

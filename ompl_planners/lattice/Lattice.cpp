@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/lattice/Lattice.h"
-#include "mhplan/planners/lattice/LatticePlanner.h"
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/lattice/Lattice.h"
+#include "ompl_planners/lattice/LatticePlanner.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/GridCollision.h"
+#include "src/base/Parameters.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/PlannerData.h>

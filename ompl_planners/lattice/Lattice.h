@@ -4,7 +4,7 @@
 #ifndef MHPLAN_LATTICE_H
 #define MHPLAN_LATTICE_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <ompl/base/Planner.h>
 

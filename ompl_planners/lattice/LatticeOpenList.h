@@ -3,7 +3,7 @@
 #ifndef MHPLAN_LATTICE_OPEN_LIST_H
 #define MHPLAN_LATTICE_OPEN_LIST_H
 
-#include "mhplan/planners/lattice/Lattice.h"
+#include "ompl_planners/lattice/Lattice.h"
 
 #include <cstddef>
 #include <cstdint>

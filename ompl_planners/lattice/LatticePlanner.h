@@ -3,9 +3,9 @@
 #ifndef MHPLAN_LATTICE_PLANNER_H
 #define MHPLAN_LATTICE_PLANNER_H
 
-#include "mhplan/planners/common/PlannerBase.h"
-#include "mhplan/planners/lattice/Lattice.h"
-#include "mhplan/planners/lattice/LatticeOpenList.h"
+#include "ompl_planners/common/PlannerBase.h"
+#include "ompl_planners/lattice/Lattice.h"
+#include "ompl_planners/lattice/LatticeOpenList.h"
 
 #include <atomic>
 #include <cstddef>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/lattice/ThetaStar.h"
+#include "ompl_planners/lattice/ThetaStar.h"
 
 #include <cmath>
 

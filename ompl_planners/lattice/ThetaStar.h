@@ -3,7 +3,7 @@
 #ifndef MHPLAN_THETA_STAR_H
 #define MHPLAN_THETA_STAR_H
 
-#include "mhplan/planners/lattice/LatticePlanner.h"
+#include "ompl_planners/lattice/LatticePlanner.h"
 
 namespace mhplan
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/memetic/MemeticGenetic.h"
+#include "ompl_planners/memetic/MemeticGenetic.h"
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 namespace ob = ompl::base;
 

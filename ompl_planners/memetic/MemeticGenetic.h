@@ -3,7 +3,7 @@
 #ifndef MHPLAN_MEMETIC_GENETIC_H
 #define MHPLAN_MEMETIC_GENETIC_H
 
-#include "mhplan/planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
 
 namespace mhplan
 {

@@ -3,9 +3,9 @@
    (docs/variants.md, "No corner the validator cannot see" and "Checks"): a loose verdict (the motion
    validator alone) for the search, a strict one (the margin too) for every path the planner reports. Part of
    MemeticToolkit. */
-#include "mhplan/planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
 
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <algorithm>
 #include <cmath>

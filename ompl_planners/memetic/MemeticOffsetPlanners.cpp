@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
+#include "ompl_planners/memetic/MemeticOffsetPlanners.h"
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <boost/math/constants/constants.hpp>
 

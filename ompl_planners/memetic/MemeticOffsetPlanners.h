@@ -4,7 +4,7 @@
 #ifndef MHPLAN_MEMETIC_OFFSET_PLANNERS_H
 #define MHPLAN_MEMETIC_OFFSET_PLANNERS_H
 
-#include "mhplan/planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
 
 #include <string>
 #include <vector>

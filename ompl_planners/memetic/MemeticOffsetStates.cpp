@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the state mode of SMA-MEM, LRSMA-MEM and MGO-MEM (docs/spaces.md, "The memetic planners off the
    plane"): station displacements along the reference path of states. */
-#include "mhplan/planners/memetic/MemeticOffsetPlanners.h"
+#include "ompl_planners/memetic/MemeticOffsetPlanners.h"
 
 #include <algorithm>
 #include <cmath>

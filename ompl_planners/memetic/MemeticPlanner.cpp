@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
 
-#include "mhplan/planners/common/PlannerSupport.h"
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/Validity.h"
+#include "ompl_planners/common/PlannerSupport.h"
+#include "src/base/Parameters.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/OptimizationObjective.h>

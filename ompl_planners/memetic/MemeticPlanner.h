@@ -5,10 +5,10 @@
 #ifndef MHPLAN_MEMETIC_PLANNER_H
 #define MHPLAN_MEMETIC_PLANNER_H
 
-#include "mhplan/planners/common/PlannerBase.h"
-#include "mhplan/planners/common/StateParametrisation.h"
-#include "mhplan/planners/memetic/MemeticStateToolkit.h"
-#include "mhplan/planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/common/PlannerBase.h"
+#include "ompl_planners/common/StateParametrisation.h"
+#include "ompl_planners/memetic/MemeticStateToolkit.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
 
 #include <atomic>
 #include <functional>

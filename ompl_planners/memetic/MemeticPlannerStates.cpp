@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the state mode of the memetic planners (docs/spaces.md, "The memetic planners off the plane"):
    MemeticPlanner on any state space with a StateParametrisation. */
-#include "mhplan/planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticPlanner.h"
 
-#include "mhplan/planners/common/PlannerSupport.h"
+#include "ompl_planners/common/PlannerSupport.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/util/Exception.h>

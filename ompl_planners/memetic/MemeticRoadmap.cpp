@@ -3,7 +3,7 @@
    roadmap"): samples in the incumbent's informed set, k-nearest edges, A* routes under route penalties, only
    the edges of a found route checked. Part of MemeticToolkit; its path operators are in MemeticToolkit.cpp.
  */
-#include "mhplan/planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
 
 #include <algorithm>
 #include <cmath>

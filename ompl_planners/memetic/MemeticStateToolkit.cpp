@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/memetic/MemeticStateToolkit.h"
+#include "ompl_planners/memetic/MemeticStateToolkit.h"
 
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>

@@ -6,7 +6,7 @@
 #ifndef MHPLAN_MEMETIC_STATE_TOOLKIT_H
 #define MHPLAN_MEMETIC_STATE_TOOLKIT_H
 
-#include "mhplan/planners/common/StateParametrisation.h"
+#include "ompl_planners/common/StateParametrisation.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/SpaceInformation.h>

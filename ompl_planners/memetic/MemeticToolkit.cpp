@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
 
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <algorithm>
 #include <cmath>

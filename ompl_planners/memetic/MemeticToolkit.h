@@ -5,7 +5,7 @@
 #ifndef MHPLAN_MEMETIC_TOOLKIT_H
 #define MHPLAN_MEMETIC_TOOLKIT_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/util/RandomNumbers.h>

@@ -2,8 +2,8 @@
 /* The pagmo 2.18 algorithms the bridge offers (docs/algorithms.md 11.1): their parameters with pagmo's
    defaults and accepted ranges, how much of each one planner iteration runs (11.2), their smallest
    population, and the algorithms refused with the reason. */
-#include "mhplan/planners/pagmo/PagmoCatalogue.h"
-#include "mhplan/planners/pagmo/detail/PagmoHandle.h"
+#include "ompl_planners/pagmo/PagmoCatalogue.h"
+#include "ompl_planners/pagmo/detail/PagmoHandle.h"
 
 #include <pagmo/algorithms/bee_colony.hpp>
 #include <pagmo/algorithms/cmaes.hpp>

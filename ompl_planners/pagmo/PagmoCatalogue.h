@@ -4,7 +4,7 @@
 #ifndef MHPLAN_PAGMO_CATALOGUE_H
 #define MHPLAN_PAGMO_CATALOGUE_H
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <functional>
 #include <memory>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/pagmo/PagmoPlanner.h"
-#include "mhplan/planners/pagmo/detail/PagmoHandle.h"
+#include "ompl_planners/pagmo/PagmoPlanner.h"
+#include "ompl_planners/pagmo/detail/PagmoHandle.h"
 
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>

@@ -4,9 +4,9 @@
 #ifndef MHPLAN_PAGMO_PLANNER_H
 #define MHPLAN_PAGMO_PLANNER_H
 
-#include "mhplan/base/PlannerRegistry.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
-#include "mhplan/planners/pagmo/PagmoCatalogue.h"
+#include "src/base/PlannerRegistry.h"
+#include "ompl_planners/common/PopulationPlanner.h"
+#include "ompl_planners/pagmo/PagmoCatalogue.h"
 
 #include <memory>
 #include <string>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/Genetic.h"
-#include "mhplan/base/Parameters.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/collision/Validity.h"
+#include "ompl_planners/population/Genetic.h"
+#include "src/base/Parameters.h"
+#include "src/collision/GridCollision.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

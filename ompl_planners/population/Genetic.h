@@ -3,9 +3,9 @@
 #ifndef MHPLAN_GENETIC_H
 #define MHPLAN_GENETIC_H
 
-#include "mhplan/base/World.h"
-#include "mhplan/planners/common/Operators.h"
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "src/base/World.h"
+#include "ompl_planners/common/Operators.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
 #include <memory>
 #include <string>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/GreyWolf.h"
+#include "ompl_planners/population/GreyWolf.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_GREY_WOLF_H
 #define MHPLAN_GREY_WOLF_H
 
-#include "mhplan/planners/population/SwarmPlanner.h"
+#include "ompl_planners/population/SwarmPlanner.h"
 
 namespace mhplan
 {

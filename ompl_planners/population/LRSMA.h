@@ -3,7 +3,7 @@
 #ifndef MHPLAN_LRSMA_H
 #define MHPLAN_LRSMA_H
 
-#include "mhplan/planners/population/SlimeMould.h"
+#include "ompl_planners/population/SlimeMould.h"
 
 namespace mhplan
 {

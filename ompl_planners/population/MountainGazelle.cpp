@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/MountainGazelle.h"
+#include "ompl_planners/population/MountainGazelle.h"
 
 #include <algorithm>
 #include <cmath>

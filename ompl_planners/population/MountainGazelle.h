@@ -3,7 +3,7 @@
 #ifndef MHPLAN_MOUNTAIN_GAZELLE_H
 #define MHPLAN_MOUNTAIN_GAZELLE_H
 
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
 namespace mhplan
 {

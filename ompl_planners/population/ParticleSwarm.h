@@ -3,7 +3,7 @@
 #ifndef MHPLAN_PARTICLE_SWARM_H
 #define MHPLAN_PARTICLE_SWARM_H
 
-#include "mhplan/planners/population/SwarmPlanner.h"
+#include "ompl_planners/population/SwarmPlanner.h"
 
 namespace mhplan
 {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/SlimeMould.h"
-#include "mhplan/base/Parameters.h"
+#include "ompl_planners/population/SlimeMould.h"
+#include "src/base/Parameters.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_SLIME_MOULD_H
 #define MHPLAN_SLIME_MOULD_H
 
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
 namespace mhplan
 {

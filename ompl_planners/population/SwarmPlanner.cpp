@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/SwarmPlanner.h"
+#include "ompl_planners/population/SwarmPlanner.h"
 
 #include <algorithm>
 #include <limits>

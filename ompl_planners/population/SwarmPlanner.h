@@ -5,7 +5,7 @@
 #ifndef MHPLAN_SWARM_PLANNER_H
 #define MHPLAN_SWARM_PLANNER_H
 
-#include "mhplan/planners/common/PopulationPlanner.h"
+#include "ompl_planners/common/PopulationPlanner.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/planners/population/Whale.h"
-#include "mhplan/base/Parameters.h"
+#include "ompl_planners/population/Whale.h"
+#include "src/base/Parameters.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_WHALE_H
 #define MHPLAN_WHALE_H
 
-#include "mhplan/planners/population/SwarmPlanner.h"
+#include "ompl_planners/population/SwarmPlanner.h"
 
 #include <cmath>
 

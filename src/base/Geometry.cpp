@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <cerrno>
 #include <cstdlib>

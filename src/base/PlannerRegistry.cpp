@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/base/PlannerRegistry.h"
+#include "src/base/PlannerRegistry.h"
 
-#include "mhplan/base/Parameters.h"
-#include "mhplan/base/World.h"
+#include "src/base/Parameters.h"
+#include "src/base/World.h"
 
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
@@ -342,7 +342,7 @@ namespace mhplan
             // declared range suggestion, e.g. PRM's max_nearest_neighbors).
             if (kv.second == ps[kv.first].getValue())
                 continue; // nothing to change (OMPL's own default may be "inf" or outside its suggestion)
-            // mhplan's own parameters (declared with a description, mhplan/base/Parameters.h) have ranges
+            // mhplan's own parameters (declared with a description, src/base/Parameters.h) have ranges
             // that are limits, checked by their setters too; OMPL's suggestions are hints.
             const bool limit = dynamic_cast<const ParameterDescription *>(&ps[kv.first]) != nullptr;
             std::string problem =

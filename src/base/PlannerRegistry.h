@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the string-keyed planner registry shared by the CLI, the benchmark driver and the tests (the
-   generic class; the built-in planners are registered by the registry layer, mhplan/registry/Registry.h). */
+   generic class; the built-in planners are registered by the registry layer, src/registry/Registry.h). */
 #ifndef MHPLAN_PLANNER_REGISTRY_H
 #define MHPLAN_PLANNER_REGISTRY_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <ompl/base/Planner.h>
 
@@ -92,7 +92,7 @@ namespace mhplan
 
     /** \brief Planner name -> allocator: a generic registry, filled by whoever owns one. The built-in
         registry, every planner mhplan knows, belongs to the registry layer (builtinPlanners() in
-        mhplan/registry/Registry.h); adding a planner is one line in its family's registration
+        src/registry/Registry.h); adding a planner is one line in its family's registration
         (ompl_planners/Registration.cpp). Campaigns, controllers and the CLI take the registry they are
         handed. */
     class PlannerRegistry

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/base/Version.h"
+#include "src/base/Version.h"
 
-#include "mhplan/base/VersionConfig.h"
+#include "src/base/VersionConfig.h"
 
 #include <ompl/config.h>
 

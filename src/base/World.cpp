@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <algorithm>
 #include <sstream>

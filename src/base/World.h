@@ -3,7 +3,7 @@
 #ifndef MHPLAN_WORLD_H
 #define MHPLAN_WORLD_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <cstdint>
 #include <memory>

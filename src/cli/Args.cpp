@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/cli/Args.h"
+#include "src/cli/Args.h"
 
 #include <cerrno>
 #include <cmath>

@@ -3,9 +3,9 @@
 #ifndef MHPLAN_CLI_ARGS_H
 #define MHPLAN_CLI_ARGS_H
 
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/base/World.h"
-#include "mhplan/collision/Problem.h"
+#include "src/optimum/Optimum.h"
+#include "src/base/World.h"
+#include "src/collision/Problem.h"
 
 #include <cstdint>
 #include <map>

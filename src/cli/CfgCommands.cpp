@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan plan PROBLEM.cfg and mhplan bench PROBLEM.cfg: OMPL.app's problem files (docs/omplapp.md). */
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/CfgDraw.h"
-#include "mhplan/cli/Commands.h"
-#include "mhplan/draw/Svg.h"
+#include "src/cli/Args.h"
+#include "src/cli/CfgDraw.h"
+#include "src/cli/Commands.h"
+#include "src/draw/Svg.h"
 
-#include "mhplan/io/CfgIO.h"
-#include "mhplan/registry/Registry.h"
+#include "src/io/CfgIO.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Time.h>

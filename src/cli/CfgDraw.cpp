@@ -3,12 +3,12 @@
    draws the problem from above (the environment's triangles projected onto the x-y plane) with the path and
    the robot's footprint at poses along it; `mhplan worlds PROBLEM.cfg --json` exports the meshes as the
    planner uses them (the robot centred), which the report draws (analysis/mhplan_analysis/meshes.py). */
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Commands.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/cli/CfgDraw.h"
+#include "src/cli/Args.h"
+#include "src/cli/Commands.h"
+#include "src/cli/Json.h"
+#include "src/cli/CfgDraw.h"
 
-#include "mhplan/draw/Svg.h"
+#include "src/draw/Svg.h"
 
 #include <ompl/base/ScopedState.h>
 

@@ -3,8 +3,8 @@
 #ifndef MHPLAN_CLI_CFG_DRAW_H
 #define MHPLAN_CLI_CFG_DRAW_H
 
-#include "mhplan/cli/Commands.h"
-#include "mhplan/io/CfgIO.h"
+#include "src/cli/Commands.h"
+#include "src/io/CfgIO.h"
 
 #include <string>
 #include <vector>

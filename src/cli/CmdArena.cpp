@@ -3,11 +3,11 @@
    scripts/arena/install.sh (Debian's installed app where it runs, else a private patched copy); it runs as an
    R child in its own process group; SIGINT, SIGTERM and SIGHUP are forwarded to it and it is reaped before
    mhplan exits. */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/bench/Database.h"
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
+#include "benchmarks/Database.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>

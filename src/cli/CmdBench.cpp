@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan bench CAMPAIGN: run a benchmark campaign (benchmarks/README.md) and build its database. */
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Commands.h"
-#include "mhplan/cli/Help.h"
+#include "src/cli/Args.h"
+#include "src/cli/Commands.h"
+#include "src/cli/Help.h"
 
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/bench/CampaignRunner.h"
-#include "mhplan/bench/Slurm.h"
+#include "benchmarks/Campaign.h"
+#include "benchmarks/CampaignRunner.h"
+#include "benchmarks/Slurm.h"
 
 #include <algorithm>
 #include <cstdlib>

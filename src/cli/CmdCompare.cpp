@@ -2,18 +2,18 @@
 /* mhplan compare: every planner on every world's first query (or --query); a table (or JSON) of success,
    lengths, the optimum, the gap and time; "n/a" where a planner's declared capabilities exclude the world's
    space (PlannerRegistry::whyNotApplicable). */
-#include "mhplan/metrics/Metrics.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/cli/Commands.h"
+#include "src/metrics/Metrics.h"
+#include "src/collision/RigidValidity.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/registry/Registry.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/util/Time.h>
 

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan planners / controllers / scenarios: what can be planned with, driven by and simulated, with every
    parameter's default, range and meaning. */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/base/Parameters.h"
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "src/base/Parameters.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/registry/Registry.h"
+#include "src/sim/Controllers.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan optimum WORLD: the exact shortest path of the world's robot, its length and the path itself. */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/draw/Svg.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/optimum/Optimum.h"
+#include "src/draw/Svg.h"
+#include "src/io/WorldIO.h"
 
 #include <iomanip>
 #include <iostream>

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan plan WORLD: one planner on one query; the path, its length, the exact optimum and the gap. */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/metrics/Metrics.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/draw/Svg.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/registry/Registry.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/collision/Collision.h"
+#include "src/metrics/Metrics.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidValidity.h"
+#include "src/draw/Svg.h"
+#include "src/io/WorldIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/registry/Registry.h"
 
 #include <ompl/util/Time.h>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan report DB -o DIR: runs analysis/report.py with an interpreter that has matplotlib and numpy. */
-#include "mhplan/cli/Commands.h"
-#include "mhplan/cli/Help.h"
+#include "src/cli/Commands.h"
+#include "src/cli/Help.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cerrno>
 #include <csignal>

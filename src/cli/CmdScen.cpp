@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan scen: run every problem of a MovingAI scenario file and compare the lengths with the file's optima.
  */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/io/ScenIO.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/collision/Collision.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/io/ScenIO.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/util/Time.h>

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan sim SCENARIO: run a moving-world scenario with a controller, print per-robot and run metrics, and
    draw the run (SVG with a replay, animated GIF) or write its trajectories (CSV). */
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/draw/SimRender.h"
-#include "mhplan/sim/Simulation.h"
-#include "mhplan/sim/SimulationReport.h"
-#include "mhplan/draw/Svg.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/sim/Controllers.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/draw/SimRender.h"
+#include "src/sim/Simulation.h"
+#include "src/sim/SimulationReport.h"
+#include "src/draw/Svg.h"
 
 #include <ompl/util/Time.h>
 

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan worlds / generate: describe, validate and export worlds (text or JSON with their geometry), and
    generate new ones. */
-#include "mhplan/cli/CfgDraw.h"
-#include "mhplan/cli/Commands.h"
+#include "src/cli/CfgDraw.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/cli/Json.h"
-#include "mhplan/draw/Svg.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/cli/Args.h"
+#include "src/cli/Help.h"
+#include "src/cli/Json.h"
+#include "src/draw/Svg.h"
+#include "src/io/Generators.h"
+#include "src/io/GridIO.h"
+#include "src/io/WorldIO.h"
 
 #include <iomanip>
 #include <iostream>

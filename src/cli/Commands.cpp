@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/cli/Commands.h"
+#include "src/cli/Commands.h"
 
-#include "mhplan/cli/Args.h"
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/Generators.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/optimum/Optimum.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/draw/Svg.h"
-#include "mhplan/collision/Validity.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/cli/Args.h"
+#include "src/collision/Collision.h"
+#include "src/io/Generators.h"
+#include "src/io/GridIO.h"
+#include "src/optimum/Optimum.h"
+#include "src/collision/Problem.h"
+#include "src/registry/Registry.h"
+#include "src/sim/Controllers.h"
+#include "src/draw/Svg.h"
+#include "src/collision/Validity.h"
+#include "src/io/WorldIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/RandomNumbers.h>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_CLI_COMMANDS_H
 #define MHPLAN_CLI_COMMANDS_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/cli/Help.h"
+#include "src/cli/Help.h"
 
 #include <algorithm>
 #include <sstream>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/cli/Json.h"
+#include "src/cli/Json.h"
 
-#include "mhplan/base/Parameters.h"
+#include "src/base/Parameters.h"
 
 #include <cmath>
 #include <cstdio>

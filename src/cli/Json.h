@@ -5,8 +5,8 @@
 #ifndef MHPLAN_CLI_JSON_H
 #define MHPLAN_CLI_JSON_H
 
-#include "mhplan/base/Geometry.h"
-#include "mhplan/base/World.h"
+#include "src/base/Geometry.h"
+#include "src/base/World.h"
 
 #include <ostream>
 #include <string>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the command-line program. One table of subcommands; each lives in its own function. */
-#include "mhplan/cli/Commands.h"
-#include "mhplan/cli/Help.h"
-#include "mhplan/base/Version.h"
-#include "mhplan/base/World.h"
+#include "src/cli/Commands.h"
+#include "src/cli/Help.h"
+#include "src/base/Version.h"
+#include "src/base/World.h"
 
 #include <ompl/util/Console.h>
 #include <ompl/util/Exception.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/CarSpaces.h"
+#include "src/collision/CarSpaces.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 

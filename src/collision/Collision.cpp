@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/ContactRule.h"
+#include "src/collision/Collision.h"
+#include "src/collision/ContactRule.h"
 
-#include "mhplan/collision/FclCollision.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/collision/SpatialHash.h"
+#include "src/collision/FclCollision.h"
+#include "src/collision/GridCollision.h"
+#include "src/collision/SpatialHash.h"
 
 #include <algorithm>
 #include <limits>

@@ -4,7 +4,7 @@
 #ifndef MHPLAN_COLLISION_H
 #define MHPLAN_COLLISION_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <memory>
 #include <string>

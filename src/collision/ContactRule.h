@@ -7,8 +7,8 @@
 #ifndef MHPLAN_CONTACT_RULE_H
 #define MHPLAN_CONTACT_RULE_H
 
-#include "mhplan/base/Geometry.h"
-#include "mhplan/base/World.h"
+#include "src/base/Geometry.h"
+#include "src/base/World.h"
 
 namespace mhplan::contact
 {

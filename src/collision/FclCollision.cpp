@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/FclCollision.h"
-#include "mhplan/collision/ContactRule.h"
+#include "src/collision/FclCollision.h"
+#include "src/collision/ContactRule.h"
 
-#include "mhplan/collision/detail/FclShapes.h"
+#include "src/collision/detail/FclShapes.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>

@@ -19,7 +19,7 @@
    scan: within one row the nearest blocked (or free) cell on each side of p's column is read from the run
    tables runStart_/runEnd_, and rows are visited outwards from p until the vertical gap alone exceeds the
    best distance found, so a query costs O(1 + dist / cellSize). */
-#include "mhplan/collision/GridCollision.h"
+#include "src/collision/GridCollision.h"
 
 #include <algorithm>
 #include <cmath>

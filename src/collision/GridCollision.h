@@ -3,7 +3,7 @@
 #ifndef MHPLAN_GRID_COLLISION_H
 #define MHPLAN_GRID_COLLISION_H
 
-#include "mhplan/collision/Collision.h"
+#include "src/collision/Collision.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/Mesh.h"
+#include "src/collision/Mesh.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBBRSS.h>

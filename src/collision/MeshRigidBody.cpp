@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/MeshRigidBody.h"
+#include "src/collision/MeshRigidBody.h"
 
-#include "mhplan/base/World.h"
-#include "mhplan/collision/CarSpaces.h"
+#include "src/base/World.h"
+#include "src/collision/CarSpaces.h"
 
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/MaximizeMinClearanceObjective.h>

@@ -5,8 +5,8 @@
 #ifndef MHPLAN_MESH_RIGID_BODY_H
 #define MHPLAN_MESH_RIGID_BODY_H
 
-#include "mhplan/collision/Mesh.h"
-#include "mhplan/collision/Problem.h"
+#include "src/collision/Mesh.h"
+#include "src/collision/Problem.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/Problem.h"
+#include "src/collision/Problem.h"
 
-#include "mhplan/collision/CarSpaces.h"
-#include "mhplan/collision/RigidValidity.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/CarSpaces.h"
+#include "src/collision/RigidValidity.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_PROBLEM_H
 #define MHPLAN_PROBLEM_H
 
-#include "mhplan/collision/Collision.h"
+#include "src/collision/Collision.h"
 
 #include <ompl/geometric/SimpleSetup.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/RigidBody.h"
+#include "src/collision/RigidBody.h"
 
-#include "mhplan/collision/detail/FclShapes.h"
+#include "src/collision/detail/FclShapes.h"
 
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/cylinder.h>

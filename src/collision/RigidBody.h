@@ -5,7 +5,7 @@
 #ifndef MHPLAN_RIGID_BODY_H
 #define MHPLAN_RIGID_BODY_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cmath>
 #include <memory>

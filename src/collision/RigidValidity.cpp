@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/RigidValidity.h"
+#include "src/collision/RigidValidity.h"
 
-#include "mhplan/collision/CarSpaces.h"
+#include "src/collision/CarSpaces.h"
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 

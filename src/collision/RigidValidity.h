@@ -5,8 +5,8 @@
 #ifndef MHPLAN_RIGID_VALIDITY_H
 #define MHPLAN_RIGID_VALIDITY_H
 
-#include "mhplan/collision/RigidBody.h"
-#include "mhplan/collision/Validity.h"
+#include "src/collision/RigidBody.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/SpatialHash.h"
-#include "mhplan/collision/ContactRule.h"
+#include "src/collision/SpatialHash.h"
+#include "src/collision/ContactRule.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_SPATIAL_HASH_H
 #define MHPLAN_SPATIAL_HASH_H
 
-#include "mhplan/collision/Collision.h"
+#include "src/collision/Collision.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/collision/Validity.h"
+#include "src/collision/Validity.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_VALIDITY_H
 #define MHPLAN_VALIDITY_H
 
-#include "mhplan/collision/Collision.h"
+#include "src/collision/Collision.h"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/draw/GifWriter.h"
+#include "src/draw/GifWriter.h"
 
 #include <gif_lib.h>
 

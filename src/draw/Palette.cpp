@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/draw/SimRender.h"
+#include "src/draw/SimRender.h"
 
-#include "mhplan/draw/detail/Palette.h"
+#include "src/draw/detail/Palette.h"
 
 namespace mhplan
 {

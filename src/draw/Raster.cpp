@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/draw/detail/Raster.h"
+#include "src/draw/detail/Raster.h"
 
 namespace mhplan
 {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the trajectories of a run as CSV. */
-#include "mhplan/draw/SimRender.h"
+#include "src/draw/SimRender.h"
 
 #include <algorithm>
 #include <iomanip>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the animated GIF of a run: the frames rasterised (static world once, trails accumulated, robots and
    moving obstacles per frame), then encoded (GifWriter.cpp). */
-#include "mhplan/draw/SimRender.h"
+#include "src/draw/SimRender.h"
 
-#include "mhplan/draw/detail/Palette.h"
-#include "mhplan/draw/detail/Raster.h"
-#include "mhplan/draw/detail/Timeline.h"
+#include "src/draw/detail/Palette.h"
+#include "src/draw/detail/Raster.h"
+#include "src/draw/detail/Timeline.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 #ifndef MHPLAN_SIM_RENDER_H
 #define MHPLAN_SIM_RENDER_H
 
-#include "mhplan/draw/GifWriter.h"
-#include "mhplan/sim/Simulation.h"
+#include "src/draw/GifWriter.h"
+#include "src/sim/Simulation.h"
 
 #include <array>
 #include <cstdint>

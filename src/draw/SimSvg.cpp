@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the SVG of a run: trajectories, markers, moving obstacles, legend, and the SMIL replay. */
-#include "mhplan/draw/SimRender.h"
+#include "src/draw/SimRender.h"
 
-#include "mhplan/draw/Svg.h"
-#include "mhplan/draw/detail/Raster.h"
-#include "mhplan/draw/detail/Timeline.h"
+#include "src/draw/Svg.h"
+#include "src/draw/detail/Raster.h"
+#include "src/draw/detail/Timeline.h"
 
 #include <algorithm>
 #include <cmath>

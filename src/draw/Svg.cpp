@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/draw/Svg.h"
+#include "src/draw/Svg.h"
 
 #include <algorithm>
 #include <fstream>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_SVG_H
 #define MHPLAN_SVG_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <string>
 #include <vector>

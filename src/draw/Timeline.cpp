@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/draw/detail/Timeline.h"
+#include "src/draw/detail/Timeline.h"
 
 #include <algorithm>
 #include <cmath>

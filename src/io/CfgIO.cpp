@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/CfgIO.h"
+#include "src/io/CfgIO.h"
 
-#include "mhplan/base/World.h"
-#include "mhplan/io/InputFile.h"
+#include "src/base/World.h"
+#include "src/io/InputFile.h"
 
 #include <algorithm>
 #include <cerrno>

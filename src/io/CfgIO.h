@@ -5,8 +5,8 @@
 #ifndef MHPLAN_CFG_IO_H
 #define MHPLAN_CFG_IO_H
 
-#include "mhplan/collision/MeshRigidBody.h"
-#include "mhplan/io/MeshIO.h"
+#include "src/collision/MeshRigidBody.h"
+#include "src/io/MeshIO.h"
 
 #include <limits>
 #include <map>

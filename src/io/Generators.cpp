@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/Generators.h"
+#include "src/io/Generators.h"
 
-#include "mhplan/io/GridIO.h"
-#include "mhplan/io/WorldIO.h"
+#include "src/io/GridIO.h"
+#include "src/io/WorldIO.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_GENERATORS_H
 #define MHPLAN_GENERATORS_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cstdint>
 #include <random>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/GridIO.h"
+#include "src/io/GridIO.h"
 
-#include "mhplan/io/InputFile.h"
+#include "src/io/InputFile.h"
 
 #include <algorithm>
 #include <cctype>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_GRID_IO_H
 #define MHPLAN_GRID_IO_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <istream>
 #include <string>

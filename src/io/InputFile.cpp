@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/InputFile.h"
+#include "src/io/InputFile.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

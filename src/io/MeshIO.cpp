@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/MeshIO.h"
+#include "src/io/MeshIO.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>

@@ -4,7 +4,7 @@
 #ifndef MHPLAN_MESH_IO_H
 #define MHPLAN_MESH_IO_H
 
-#include "mhplan/collision/Mesh.h"
+#include "src/collision/Mesh.h"
 
 #include <string>
 

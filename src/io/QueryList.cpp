@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/QueryList.h"
+#include "src/io/QueryList.h"
 
-#include "mhplan/io/WorldIO.h"
+#include "src/io/WorldIO.h"
 
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/exceptions.h>

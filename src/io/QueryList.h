@@ -3,7 +3,7 @@
 #ifndef MHPLAN_QUERY_LIST_H
 #define MHPLAN_QUERY_LIST_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cstddef>
 #include <optional>

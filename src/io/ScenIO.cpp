@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/ScenIO.h"
+#include "src/io/ScenIO.h"
 
-#include "mhplan/io/InputFile.h"
+#include "src/io/InputFile.h"
 
-#include "mhplan/io/GridIO.h"
+#include "src/io/GridIO.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/WorldIO.h"
+#include "src/io/WorldIO.h"
 
-#include "mhplan/io/InputFile.h"
+#include "src/io/InputFile.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/io/QueryList.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/collision/RigidBody.h"
-#include "mhplan/io/YamlReader.h"
+#include "src/collision/Collision.h"
+#include "src/io/GridIO.h"
+#include "src/io/QueryList.h"
+#include "src/collision/Problem.h"
+#include "src/collision/RigidBody.h"
+#include "src/io/YamlReader.h"
 
 #include <yaml-cpp/yaml.h>
 

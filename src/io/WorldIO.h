@@ -3,8 +3,8 @@
 #ifndef MHPLAN_WORLD_IO_H
 #define MHPLAN_WORLD_IO_H
 
-#include "mhplan/base/World.h"
-#include "mhplan/io/YamlReader.h"
+#include "src/base/World.h"
+#include "src/io/YamlReader.h"
 
 #include <set>
 

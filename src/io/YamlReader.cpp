@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/io/YamlReader.h"
+#include "src/io/YamlReader.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_YAML_READER_H
 #define MHPLAN_YAML_READER_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <yaml-cpp/yaml.h>
 

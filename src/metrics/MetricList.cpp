@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/metrics/MetricList.h"
+#include "src/metrics/MetricList.h"
 
 #include <algorithm>
 #include <regex>

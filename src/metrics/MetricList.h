@@ -7,7 +7,7 @@
 #ifndef MHPLAN_METRIC_LIST_H
 #define MHPLAN_METRIC_LIST_H
 
-#include "mhplan/metrics/Metrics.h"
+#include "src/metrics/Metrics.h"
 
 #include <functional>
 #include <limits>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/metrics/Metrics.h"
+#include "src/metrics/Metrics.h"
 
-#include "mhplan/collision/RigidValidity.h"
+#include "src/collision/RigidValidity.h"
 
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 

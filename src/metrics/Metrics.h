@@ -7,8 +7,8 @@
 #ifndef MHPLAN_METRICS_H
 #define MHPLAN_METRICS_H
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/RigidBody.h"
+#include "src/collision/Collision.h"
+#include "src/collision/RigidBody.h"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/geometric/PathGeometric.h>

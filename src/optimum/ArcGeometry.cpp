@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/optimum/detail/ArcGeometry.h"
+#include "src/optimum/detail/ArcGeometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the exact any-angle optimum of a point robot on a grid, the visibility graph of the blocked
    region's convex corners found by octant sweeps (computeOptimum in Optimum.h describes the method). */
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
-#include "mhplan/optimum/detail/PathGraph.h"
+#include "src/collision/GridCollision.h"
+#include "src/optimum/detail/OptimumInternal.h"
+#include "src/optimum/detail/PathGraph.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the exact optimum of a disc robot on a grid, the tangent graph over the blocked cells on the
    region's boundary (computeOptimum in Optimum.h describes the method). */
-#include "mhplan/base/World.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
+#include "src/base/World.h"
+#include "src/optimum/detail/OptimumInternal.h"
 
 #include <cmath>
 #include <string>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the 8-connected grid optimum with MovingAI semantics (computeGridOctileOptimum). */
-#include "mhplan/optimum/Optimum.h"
+#include "src/optimum/Optimum.h"
 
-#include "mhplan/optimum/detail/OptimumInternal.h"
+#include "src/optimum/detail/OptimumInternal.h"
 
 #include <algorithm>
 #include <chrono>

@@ -2,13 +2,13 @@
 /* mhplan: the exact optimum's entry point (one solver per kind of world: TangentGraph.cpp, GridAnyAngle.cpp,
    GridDiscRobot.cpp; the 8-connected grid optimum in Octile.cpp), the polyline of a piecewise path and the
    optimality gap. */
-#include "mhplan/optimum/Optimum.h"
+#include "src/optimum/Optimum.h"
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/collision/GridCollision.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/optimum/detail/ArcGeometry.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
+#include "src/collision/Collision.h"
+#include "src/collision/GridCollision.h"
+#include "src/collision/Problem.h"
+#include "src/optimum/detail/ArcGeometry.h"
+#include "src/optimum/detail/OptimumInternal.h"
 
 #include <algorithm>
 #include <chrono>

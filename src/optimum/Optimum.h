@@ -3,7 +3,7 @@
 #ifndef MHPLAN_OPTIMUM_H
 #define MHPLAN_OPTIMUM_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <cstddef>
 #include <limits>

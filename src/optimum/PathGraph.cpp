@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/optimum/detail/PathGraph.h"
+#include "src/optimum/detail/PathGraph.h"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the exact optimum of geometric worlds, the reduced visibility (tangent) graph over inflated discs
    and polygon corners (computeOptimum in Optimum.h describes the method). */
-#include "mhplan/optimum/detail/ArcGeometry.h"
-#include "mhplan/optimum/detail/BucketIndex.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
-#include "mhplan/optimum/detail/PathGraph.h"
-#include "mhplan/optimum/detail/PolygonEdgeIndex.h"
+#include "src/optimum/detail/ArcGeometry.h"
+#include "src/optimum/detail/BucketIndex.h"
+#include "src/optimum/detail/OptimumInternal.h"
+#include "src/optimum/detail/PathGraph.h"
+#include "src/optimum/detail/PolygonEdgeIndex.h"
 
 #include <algorithm>
 #include <cmath>

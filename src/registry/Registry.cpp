@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mhplan/registry/Registry.h"
+#include "src/registry/Registry.h"
 
-#include "mhplan/planners/Registration.h"
+#include "ompl_planners/Registration.h"
 
 #include <ompl/geometric/planners/cforest/CForest.h>
 #include <ompl/geometric/planners/est/BiEST.h>

@@ -3,7 +3,7 @@
 #ifndef MHPLAN_REGISTRY_REGISTRY_H
 #define MHPLAN_REGISTRY_REGISTRY_H
 
-#include "mhplan/base/PlannerRegistry.h"
+#include "src/base/PlannerRegistry.h"
 
 #include <map>
 #include <string>

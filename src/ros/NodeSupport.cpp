@@ -2,7 +2,7 @@
 /* mhplan ROS 1 component: shared plumbing of the node programs (see NodeSupport.h). */
 #include "NodeSupport.h"
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <ompl/util/RandomNumbers.h>
 

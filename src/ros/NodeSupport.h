@@ -3,7 +3,7 @@
 #ifndef MHPLAN_ROS_NODE_SUPPORT_H
 #define MHPLAN_ROS_NODE_SUPPORT_H
 
-#include "mhplan/cli/Args.h"
+#include "src/cli/Args.h"
 
 #include <cstdint>
 #include <functional>

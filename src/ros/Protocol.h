@@ -4,7 +4,7 @@
 #ifndef MHPLAN_ROS_PROTOCOL_H
 #define MHPLAN_ROS_PROTOCOL_H
 
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/Simulation.h"
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>

@@ -7,8 +7,8 @@
 #include "NodeSupport.h"
 #include "Protocol.h"
 
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "src/sim/Controllers.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ros/callback_queue.h>
 #include <ros/ros.h>

@@ -7,9 +7,9 @@
 #include "NodeSupport.h"
 #include "Protocol.h"
 
-#include "mhplan/draw/SimRender.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/sim/SimulationReport.h"
+#include "src/draw/SimRender.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/sim/SimulationReport.h"
 
 #include <ros/callback_queue.h>
 #include <ros/ros.h>

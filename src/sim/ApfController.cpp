@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the dapf / aapf controllers (see Controllers.h). */
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
-#include "mhplan/sim/detail/Sensing.h"
+#include "src/sim/detail/Sensing.h"
 
 #include <algorithm>
 #include <cmath>

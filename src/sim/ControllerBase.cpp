@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the controllers' parameter table and the safety brake (see Controllers.h). */
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
-#include "mhplan/sim/detail/Sensing.h"
+#include "src/sim/detail/Sensing.h"
 
-#include "mhplan/base/PlannerRegistry.h"
+#include "src/base/PlannerRegistry.h"
 
 #include <cstdlib>
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: controllers by name (see Controllers.h). */
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
-#include "mhplan/base/Parameters.h"
-#include "mhplan/sim/detail/Sensing.h"
+#include "src/base/Parameters.h"
+#include "src/sim/detail/Sensing.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>

@@ -4,9 +4,9 @@
 #ifndef MHPLAN_CONTROLLERS_H
 #define MHPLAN_CONTROLLERS_H
 
-#include "mhplan/planners/field/BacterialColony.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/Simulation.h"
+#include "ompl_planners/field/BacterialColony.h"
+#include "src/registry/Registry.h"
+#include "src/sim/Simulation.h"
 
 #include <cstdint>
 #include <iosfwd>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: plan-then-follow with any registered planner (see Controllers.h). */
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
-#include "mhplan/sim/detail/Sensing.h"
-#include "mhplan/collision/Problem.h"
+#include "src/sim/detail/Sensing.h"
+#include "src/collision/Problem.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

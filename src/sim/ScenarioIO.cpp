@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: scenario files (format: environments/README.md, "Scenario files"). */
-#include "mhplan/sim/ScenarioIO.h"
+#include "src/sim/ScenarioIO.h"
 
-#include "mhplan/io/InputFile.h"
+#include "src/io/InputFile.h"
 
-#include "mhplan/io/WorldIO.h"
+#include "src/io/WorldIO.h"
 
 #include <cmath>
 #include <fstream>

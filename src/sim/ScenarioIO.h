@@ -3,7 +3,7 @@
 #ifndef MHPLAN_SCENARIO_IO_H
 #define MHPLAN_SCENARIO_IO_H
 
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/Simulation.h"
 
 #include <string>
 

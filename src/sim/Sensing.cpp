@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: surface distances of sensed obstacles (detail/Sensing.h). */
-#include "mhplan/sim/detail/Sensing.h"
+#include "src/sim/detail/Sensing.h"
 
 #include <sstream>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the time-stepped multi-robot simulator (see Simulation.h). */
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/Simulation.h"
 
 #include <algorithm>
 #include <chrono>

@@ -4,8 +4,8 @@
 #ifndef MHPLAN_SIMULATION_H
 #define MHPLAN_SIMULATION_H
 
-#include "mhplan/collision/Collision.h"
-#include "mhplan/base/World.h"
+#include "src/collision/Collision.h"
+#include "src/base/World.h"
 
 #include <ompl/util/RandomNumbers.h>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the metrics of a simulation run as `mhplan sim` prints them (see SimulationReport.h). */
-#include "mhplan/sim/SimulationReport.h"
+#include "src/sim/SimulationReport.h"
 
 #include <cmath>
 #include <iomanip>

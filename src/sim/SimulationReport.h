@@ -4,7 +4,7 @@
 #ifndef MHPLAN_SIMULATION_REPORT_H
 #define MHPLAN_SIMULATION_REPORT_H
 
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/Simulation.h"
 
 #include <iosfwd>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Your own OMPL program, with mhplan's Slime Mould planner added in a few lines.
-#include <mhplan/registry/Registry.h>
-#include <mhplan/planners/population/SlimeMould.h>
+#include <src/registry/Registry.h>
+#include <ompl_planners/population/SlimeMould.h>
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

@@ -8,14 +8,14 @@
 #ifndef MHPLAN_FUZZ_TARGETS_H
 #define MHPLAN_FUZZ_TARGETS_H
 
-#include "mhplan/base/PlannerRegistry.h"
-#include "mhplan/bench/Campaign.h"
-#include "mhplan/cli/Args.h"
-#include "mhplan/io/GridIO.h"
-#include "mhplan/io/ScenIO.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/ScenarioIO.h"
+#include "src/base/PlannerRegistry.h"
+#include "benchmarks/Campaign.h"
+#include "src/cli/Args.h"
+#include "src/io/GridIO.h"
+#include "src/io/ScenIO.h"
+#include "src/io/WorldIO.h"
+#include "src/registry/Registry.h"
+#include "src/sim/ScenarioIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/util/Console.h>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Compiled as a sim-layer source: every layer below the simulator is reachable. The control for the upward
 // fixtures (tests/CMakeLists.txt: layering_downward): it must build.
-#include "mhplan/base/World.h"
-#include "mhplan/collision/Problem.h"
-#include "mhplan/io/WorldIO.h"
-#include "mhplan/registry/Registry.h"
-#include "mhplan/sim/Simulation.h"
+#include "src/base/World.h"
+#include "src/collision/Problem.h"
+#include "src/io/WorldIO.h"
+#include "src/registry/Registry.h"
+#include "src/sim/Simulation.h"

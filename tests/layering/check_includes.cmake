@@ -9,7 +9,7 @@ endif()
 string(REPLACE "|" ";" entries "${LAYERS}")
 # The folder of each layer, and every layer folder of the project (the table may name only some layers, as
 # the check's own test does): an include below one of these folders is a project include.
-set(layerFolders src/base src/collision src/io src/optimum src/registry src/sim src/draw src/cli ompl_planners
+set(layerFolders src/base src/collision src/metrics src/io src/optimum src/registry src/sim src/draw src/cli ompl_planners
     benchmarks)
 foreach(entry ${entries})
   string(REPLACE "=" ";" parts "${entry}")

@@ -2,9 +2,9 @@
 /* The simulator hooks the ROS nodes rely on (docs/ros.md), without ROS: a controller run on observed states
    in a mirror (Simulation::observe) and handed to the world as a unicycle command gives the in-process run
    exactly; tasks added during a run and join times moved before a robot joins. */
-#include "mhplan/sim/Controllers.h"
-#include "mhplan/sim/ScenarioIO.h"
-#include "mhplan/sim/Simulation.h"
+#include "src/sim/Controllers.h"
+#include "src/sim/ScenarioIO.h"
+#include "src/sim/Simulation.h"
 
 #include <gtest/gtest.h>
 

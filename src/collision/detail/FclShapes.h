@@ -3,7 +3,7 @@
 #ifndef MHPLAN_COLLISION_DETAIL_FCL_SHAPES_H
 #define MHPLAN_COLLISION_DETAIL_FCL_SHAPES_H
 
-#include "mhplan/base/World.h"
+#include "src/base/World.h"
 
 #include <fcl/geometry/collision_geometry.h>
 

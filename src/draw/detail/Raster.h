@@ -4,7 +4,7 @@
 #ifndef MHPLAN_DRAW_DETAIL_RASTER_H
 #define MHPLAN_DRAW_DETAIL_RASTER_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <algorithm>
 #include <array>

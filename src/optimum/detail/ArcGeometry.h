@@ -4,9 +4,9 @@
 #ifndef MHPLAN_OPTIMUM_DETAIL_ARC_GEOMETRY_H
 #define MHPLAN_OPTIMUM_DETAIL_ARC_GEOMETRY_H
 
-#include "mhplan/base/Geometry.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
-#include "mhplan/optimum/detail/PolygonEdgeIndex.h"
+#include "src/base/Geometry.h"
+#include "src/optimum/detail/OptimumInternal.h"
+#include "src/optimum/detail/PolygonEdgeIndex.h"
 
 #include <cmath>
 #include <vector>

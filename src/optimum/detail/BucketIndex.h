@@ -4,7 +4,7 @@
 #ifndef MHPLAN_OPTIMUM_DETAIL_BUCKET_INDEX_H
 #define MHPLAN_OPTIMUM_DETAIL_BUCKET_INDEX_H
 
-#include "mhplan/base/Geometry.h"
+#include "src/base/Geometry.h"
 
 #include <algorithm>
 #include <cmath>

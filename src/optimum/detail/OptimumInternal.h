@@ -4,7 +4,7 @@
 #ifndef MHPLAN_OPTIMUM_DETAIL_OPTIMUM_INTERNAL_H
 #define MHPLAN_OPTIMUM_DETAIL_OPTIMUM_INTERNAL_H
 
-#include "mhplan/optimum/Optimum.h"
+#include "src/optimum/Optimum.h"
 
 #include <algorithm>
 #include <chrono>

@@ -4,8 +4,8 @@
 #ifndef MHPLAN_OPTIMUM_DETAIL_PATH_GRAPH_H
 #define MHPLAN_OPTIMUM_DETAIL_PATH_GRAPH_H
 
-#include "mhplan/optimum/detail/ArcGeometry.h"
-#include "mhplan/optimum/detail/OptimumInternal.h"
+#include "src/optimum/detail/ArcGeometry.h"
+#include "src/optimum/detail/OptimumInternal.h"
 
 #include <utility>
 #include <vector>

@@ -7,8 +7,8 @@
 #ifndef MHPLAN_OPTIMUM_DETAIL_POLYGON_EDGE_INDEX_H
 #define MHPLAN_OPTIMUM_DETAIL_POLYGON_EDGE_INDEX_H
 
-#include "mhplan/base/Geometry.h"
-#include "mhplan/optimum/detail/BucketIndex.h"
+#include "src/base/Geometry.h"
+#include "src/optimum/detail/BucketIndex.h"
 
 #include <algorithm>
 #include <cmath>

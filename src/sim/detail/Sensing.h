@@ -4,7 +4,7 @@
 #ifndef MHPLAN_SIM_DETAIL_SENSING_H
 #define MHPLAN_SIM_DETAIL_SENSING_H
 
-#include "mhplan/sim/Controllers.h"
+#include "src/sim/Controllers.h"
 
 #include <algorithm>
 #include <cmath>

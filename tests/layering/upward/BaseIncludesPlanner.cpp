@@ -1,4 +1,4 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Compiled as a base-layer source: the base may not include a planner (the registry once did). This must not
 // build (tests/CMakeLists.txt: layering_base_includes_planner).
-#include "mhplan/planners/population/SlimeMould.h"
+#include "ompl_planners/population/SlimeMould.h"
