@@ -308,9 +308,9 @@ int main(int argc, char **argv)
             }
             if (verbose)
                 std::cout << "run: query " << q << " " << name << " gap " << fixed(row.gaps.back(), 3)
-                          << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4) << " s within-1% " << fixed(within, 4)
-                          << " s state checks " << stateChecks.load() << " motion checks "
-                          << motionChecks.load() << "\n";
+                          << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4)
+                          << " s within-1% " << fixed(within, 4) << " s state checks " << stateChecks.load()
+                          << " motion checks " << motionChecks.load() << "\n";
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))

@@ -68,9 +68,9 @@ namespace mhplan
         std::unique_ptr<State> state_;
     };
 
-    /** \brief Register "pagmo:<algorithm>" in \e registry (origin "pagmo", capabilities cap::AllSpaces | cap::Anytime); throws
-        std::invalid_argument for an unknown algorithm (listing those that exist) or one that cannot plan
-        (gradients, constraints, several objectives). */
+    /** \brief Register "pagmo:<algorithm>" in \e registry (origin "pagmo", capabilities cap::AllSpaces |
+       cap::Anytime); throws std::invalid_argument for an unknown algorithm (listing those that exist) or one
+       that cannot plan (gradients, constraints, several objectives). */
     void registerPagmoPlanner(PlannerRegistry &registry, const std::string &algorithm);
     /** \brief Register every algorithm of pagmoAlgorithms(). */
     void registerPagmoPlanners(PlannerRegistry &registry);

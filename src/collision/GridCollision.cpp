@@ -526,9 +526,9 @@ namespace mhplan
                     return d2 < r2 && std::sqrt(d2) < radius_ - halfTol;
                 });
         }
-        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor pass
-        // within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to e), and
-        // so is the segment.
+        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor
+        // pass within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to
+        // e), and so is the segment.
         const double pinchTol2 = tol_ * tol_;
         bool pinch = false;
         const double q = 0.25 * tol_;
@@ -550,10 +550,12 @@ namespace mhplan
                         // clipped part lies within e / 4 of a side whose neighbour is free, or of a vertex of
                         // a free cell, so every point of it is within e / 4 of free space.
                         const Vec2 p0 = a + (b - a) * t0, p1 = a + (b - a) * t1;
-                        const auto band = [&](double u0, double u1, double side, int nk, int nl)
-                        { return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl); };
-                        bool shallow = band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
-                                       band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
+                        const auto band = [&](double u0, double u1, double side, int nk, int nl) {
+                            return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl);
+                        };
+                        bool shallow =
+                            band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
+                            band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
                         for (int vy = l; vy <= l + 1 && !shallow; ++vy)
                             for (int vx = k; vx <= k + 1 && !shallow; ++vx)
                             {
