@@ -426,14 +426,15 @@ namespace mhplan::bench
             if (!root["worlds"].IsDefined())
                 r.fail(root, "worlds", "missing");
             readWorlds(r, root["worlds"], c);
-            const bool app = std::any_of(c.setups.begin(), c.setups.end(),
-                                         [](const ValiditySetup &s) { return s.app(); });
+            const bool app =
+                std::any_of(c.setups.begin(), c.setups.end(), [](const ValiditySetup &s) { return s.app(); });
             for (std::size_t i = 0; app && i < c.worlds.size(); ++i)
                 if (!c.worlds[i].scen.empty())
-                    r.fail(root["setup"], "setup",
-                           "worlds[" + std::to_string(i) +
-                               "] is a MovingAI set, which runs the exact set-up only; give the app set-up to "
-                               "the other world entries (their key setup) instead");
+                    r.fail(
+                        root["setup"], "setup",
+                        "worlds[" + std::to_string(i) +
+                            "] is a MovingAI set, which runs the exact set-up only; give the app set-up to "
+                            "the other world entries (their key setup) instead");
             if (!root["planners"].IsDefined())
                 r.fail(root, "planners", "missing");
             readPlanners(r, root["planners"], c, registry);
@@ -621,48 +622,48 @@ namespace mhplan::bench
             const std::vector<ValiditySetup> &setups = spec.setups.empty() ? campaign.setups : spec.setups;
             for (const Query *qp : queries)
                 for (const ValiditySetup &setup : setups)
-            {
-                const Query &q = *qp;
-                if (!plainName(q.name))
-                    throw InputError(
-                        campaign.file + ": worlds[" + std::to_string(wi) + "]: query name '" + q.name +
-                        "' of world '" + world.name + "' (" + file +
-                        ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
-                if (rigid)
-                    validateRigidQuery(world, q, *rigid);
-                else
-                    validateQuery(world, q, *model);
-                Experiment e;
-                e.index = out.size();
-                e.name = world.name + "-" + q.name + setupSuffix(setup);
-                e.setup = setup;
-                e.worldFile = file;
-                e.worldName = world.name;
-                e.query = q.name;
-                e.runs = campaign.runs;
-                e.skipped = skipped;
-                if (!names.insert(e.name).second)
-                    throw InputError(campaign.file + ": experiment '" + e.name +
-                                     "' appears twice (the same world and query listed twice)");
-                // The seed of the world and query alone: both set-ups of a query run the same seeds.
-                e.seed = deriveSeed(campaign.seed, world.name + "-" + q.name, 0);
-                // After the world's bytes (the same fingerprint as before): the query's name and points as
-                // an ostream of precision 17 writes them ("%.17g"; a world may have 10^5 queries).
-                char points[4 * 32];
-                std::snprintf(points, sizeof points, " %.17g %.17g %.17g %.17g\n", q.start.x, q.start.y,
-                              q.goal.x, q.goal.y);
-                Fingerprint all = prefix;
-                all.add("\nquery " + q.name + points);
-                if (setup.app()) // exact experiments keep the fingerprints they had before set-ups
                 {
-                    char res[48];
-                    std::snprintf(res, sizeof res, "setup app %.17g\n", setup.resolution);
-                    all.add(res);
+                    const Query &q = *qp;
+                    if (!plainName(q.name))
+                        throw InputError(
+                            campaign.file + ": worlds[" + std::to_string(wi) + "]: query name '" + q.name +
+                            "' of world '" + world.name + "' (" + file +
+                            ") cannot name an experiment: no blanks, ';', ',' or quotes (rename it)");
+                    if (rigid)
+                        validateRigidQuery(world, q, *rigid);
+                    else
+                        validateQuery(world, q, *model);
+                    Experiment e;
+                    e.index = out.size();
+                    e.name = world.name + "-" + q.name + setupSuffix(setup);
+                    e.setup = setup;
+                    e.worldFile = file;
+                    e.worldName = world.name;
+                    e.query = q.name;
+                    e.runs = campaign.runs;
+                    e.skipped = skipped;
+                    if (!names.insert(e.name).second)
+                        throw InputError(campaign.file + ": experiment '" + e.name +
+                                         "' appears twice (the same world and query listed twice)");
+                    // The seed of the world and query alone: both set-ups of a query run the same seeds.
+                    e.seed = deriveSeed(campaign.seed, world.name + "-" + q.name, 0);
+                    // After the world's bytes (the same fingerprint as before): the query's name and points
+                    // as an ostream of precision 17 writes them ("%.17g"; a world may have 10^5 queries).
+                    char points[4 * 32];
+                    std::snprintf(points, sizeof points, " %.17g %.17g %.17g %.17g\n", q.start.x, q.start.y,
+                                  q.goal.x, q.goal.y);
+                    Fingerprint all = prefix;
+                    all.add("\nquery " + q.name + points);
+                    if (setup.app()) // exact experiments keep the fingerprints they had before set-ups
+                    {
+                        char res[48];
+                        std::snprintf(res, sizeof res, "setup app %.17g\n", setup.resolution);
+                        all.add(res);
+                    }
+                    e.configHash = all.hex();
+                    e.inputHash = inputHash;
+                    out.push_back(std::move(e));
                 }
-                e.configHash = all.hex();
-                e.inputHash = inputHash;
-                out.push_back(std::move(e));
-            }
         }
 
         for (std::size_t si = 0; si < campaign.simulations.size(); ++si)

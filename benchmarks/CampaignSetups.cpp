@@ -27,8 +27,7 @@ namespace mhplan::bench
                 const std::string sub = field + "." + kind;
                 if (kind != "app")
                     r.fail(n, field,
-                           "unknown set-up '" + kind + "'; " + kSetupForms +
-                               " (exact takes no settings)");
+                           "unknown set-up '" + kind + "'; " + kSetupForms + " (exact takes no settings)");
                 double resolution = std::nan("");
                 if (body.IsDefined() && !body.IsNull())
                 {

@@ -130,9 +130,9 @@ TEST(Setups, AppSetUpIsAPointCheckerAndOmplsDiscreteValidatorAndCountsChecks)
 
 TEST(Setups, PlanOptionsRoundTripAndRefuse)
 {
-    const CliResult ok =
-        runCliStdout("plan bfo_case1 --planner RRTConnect --time 0.05 --seed 3 --setup app --resolution 0.004 "
-                     "--json --quiet");
+    const CliResult ok = runCliStdout(
+        "plan bfo_case1 --planner RRTConnect --time 0.05 --seed 3 --setup app --resolution 0.004 "
+        "--json --quiet");
     EXPECT_EQ(pyJson(ok.out, "d['setup'], d['resolution'], d['motion_checks'] > 0", "setup"),
               "app 0.004 True")
         << ok.out;
@@ -162,10 +162,11 @@ TEST(Setups, TheDatabaseRecordsEachExperimentsSetUpAndItsChecks)
     c.logDir = (dir / "logs").string();
     runCampaign(c, options());
     const Sql sql(c.database);
-    const auto rows = sql.rows("SELECT experiments.validity_setup, experiments.validity_resolution, "
-                               "runs.state_checks > 0, runs.motion_checks > 0, runs.collision_free IS NOT NULL "
-                               "FROM runs JOIN experiments ON runs.experimentid = experiments.id ORDER BY "
-                               "experiments.name");
+    const auto rows =
+        sql.rows("SELECT experiments.validity_setup, experiments.validity_resolution, "
+                 "runs.state_checks > 0, runs.motion_checks > 0, runs.collision_free IS NOT NULL "
+                 "FROM runs JOIN experiments ON runs.experimentid = experiments.id ORDER BY "
+                 "experiments.name");
     ASSERT_EQ(rows.size(), 2u);
     EXPECT_EQ(rows[0], (std::vector<std::string>{"exact", "NULL", "1", "1", "1"}));
     EXPECT_EQ(rows[1][0], "app");

@@ -135,9 +135,10 @@ namespace mhplan::cli
         if (args.has("resolution"))
         {
             if (kind != "app")
-                throw InputError("mhplan " + args.command() +
-                                 ": --resolution belongs to --setup app (the exact set-up decides every point "
-                                 "of a motion)");
+                throw InputError(
+                    "mhplan " + args.command() +
+                    ": --resolution belongs to --setup app (the exact set-up decides every point "
+                    "of a motion)");
             resolution = args.number("resolution", kDefaultAppResolution);
         }
         try

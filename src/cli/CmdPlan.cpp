@@ -114,11 +114,11 @@ namespace mhplan::cli
     {
         if (isCfgArgument(argv))
             return cmdPlanCfg(argv);
-        const Args args("plan", argv,
-                        {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg", "setup",
-                          "resolution"},
-                         {"set"},
-                         {"json", "quiet"}});
+        const Args args(
+            "plan", argv,
+            {{"query", "start", "goal", "planner", "time", "seed", "backend", "svg", "setup", "resolution"},
+             {"set"},
+             {"json", "quiet"}});
         checkOutputFile(args, "svg");
         const ValiditySetup setup = setupFromArgs(args);
         // The seed must be fixed before any OMPL random number generator exists.

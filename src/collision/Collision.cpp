@@ -12,8 +12,8 @@
 namespace mhplan
 {
     CollisionModel::CollisionModel(const World &world)
-        : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)), radius_(world.robotRadius),
-          tol_(contact::tolerance(world.bounds))
+        : bounds_(world.bounds), inner_(world.bounds.inflated(-world.robotRadius)),
+          radius_(world.robotRadius), tol_(contact::tolerance(world.bounds))
     {
     }
 

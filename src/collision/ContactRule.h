@@ -49,7 +49,8 @@ namespace mhplan::contact
         the segment between two boundary crossings enters when its midpoint lies deeper than tol / 4 - radius
         (inside a convex polygon the depth along a piece is concave, so an accepted piece stays within
         tol / 2; docs/contact.md states the non-convex case). */
-    inline bool segmentHitsPolygon(const Vec2 &a, const Vec2 &b, const Polygon &poly, double radius, double tol)
+    inline bool segmentHitsPolygon(const Vec2 &a, const Vec2 &b, const Polygon &poly, double radius,
+                                   double tol)
     {
         const double d = segmentPolygonDistance(a, b, poly.vertices);
         if (d < radius - 0.5 * tol)

@@ -227,7 +227,8 @@ namespace mhplan
 
         struct SegmentCollisionData
         {
-            SegmentCollisionData(const Impl *i, const Vec2 &s, const Vec2 &e, double r, double t, const Box &box)
+            SegmentCollisionData(const Impl *i, const Vec2 &s, const Vec2 &e, double r, double t,
+                                 const Box &box)
                 : impl(i), a(s), b(e), radius(r), tol(t), sb(box)
             {
             }
@@ -253,7 +254,8 @@ namespace mhplan
             else if (!d.recent.seen(id))
             {
                 const Polygon &poly = d.impl->polygon(id);
-                d.hit = d.sb.overlaps(poly.bbox) && contact::segmentHitsPolygon(d.a, d.b, poly, d.radius, d.tol);
+                d.hit =
+                    d.sb.overlaps(poly.bbox) && contact::segmentHitsPolygon(d.a, d.b, poly, d.radius, d.tol);
             }
             return d.hit;
         }

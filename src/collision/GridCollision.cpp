@@ -20,6 +20,7 @@
    tables runStart_/runEnd_, and rows are visited outwards from p until the vertical gap alone exceeds the
    best distance found, so a query costs O(1 + dist / cellSize). */
 #include "mhplan/collision/GridCollision.h"
+#include "mhplan/collision/detail/DistanceTransform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,49 +100,6 @@ namespace mhplan
             return best;
         }
 
-        /** \brief 1D squared Euclidean distance transform of f (Felzenszwalb & Huttenlocher 2012): d[q] =
-            min over p of (q - p)^2 + f[p]. Infinite f values are not sites. v, z are scratch (n and n + 1).
-         */
-        void distanceTransform1D(const double *f, int n, double *d, int *v, double *z)
-        {
-            int k = -1;
-            for (int q = 0; q < n; ++q)
-            {
-                if (!std::isfinite(f[q]))
-                    continue;
-                double s = -kInf;
-                while (k >= 0)
-                {
-                    const int p = v[k];
-                    s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) /
-                        (2.0 * (q - p));
-                    if (s <= z[k])
-                        --k;
-                    else
-                        break;
-                }
-                if (k < 0)
-                    s = -kInf;
-                ++k;
-                v[k] = q;
-                z[k] = s;
-                z[k + 1] = kInf;
-            }
-            if (k < 0)
-            {
-                std::fill(d, d + n, kInf);
-                return;
-            }
-            int j = 0;
-            for (int q = 0; q < n; ++q)
-            {
-                while (z[j + 1] < q)
-                    ++j;
-                const double dq = q - v[j];
-                d[q] = dq * dq + f[v[j]];
-            }
-        }
-
         /** \brief Relative safety margins for the float distance transform bounds. */
         constexpr double kEdtRelMargin = 1e-6;
     } // namespace
@@ -189,7 +147,7 @@ namespace mhplan
         {
             for (int y = 0; y < ph; ++y)
                 in[y] = f[static_cast<std::size_t>(y) * pw + x];
-            distanceTransform1D(in.data(), ph, out.data(), v.data(), z.data());
+            detail::distanceTransform1D(in.data(), ph, out.data(), v.data(), z.data());
             for (int y = 0; y < ph; ++y)
                 f[static_cast<std::size_t>(y) * pw + x] = out[y];
         }
@@ -197,7 +155,8 @@ namespace mhplan
         const double s = grid_->cellSize();
         for (int y = 1; y <= h; ++y)
         {
-            distanceTransform1D(&f[static_cast<std::size_t>(y) * pw], pw, out.data(), v.data(), z.data());
+            detail::distanceTransform1D(&f[static_cast<std::size_t>(y) * pw], pw, out.data(), v.data(),
+                                        z.data());
             for (int x = 1; x <= w; ++x)
                 edt_[static_cast<std::size_t>(y - 1) * w + (x - 1)] =
                     static_cast<float>(std::sqrt(out[x]) * s);
@@ -526,9 +485,9 @@ namespace mhplan
                     return d2 < r2 && std::sqrt(d2) < radius_ - halfTol;
                 });
         }
-        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor pass
-        // within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to e), and
-        // so is the segment.
+        // Point robot: the segment must not enter the interior of B beyond rounding (docs/contact.md) nor
+        // pass within e of a pinch corner. Both endpoints are valid, hence in the grid's closed box (up to
+        // e), and so is the segment.
         const double pinchTol2 = tol_ * tol_;
         bool pinch = false;
         const double q = 0.25 * tol_;
@@ -550,10 +509,12 @@ namespace mhplan
                         // clipped part lies within e / 4 of a side whose neighbour is free, or of a vertex of
                         // a free cell, so every point of it is within e / 4 of free space.
                         const Vec2 p0 = a + (b - a) * t0, p1 = a + (b - a) * t1;
-                        const auto band = [&](double u0, double u1, double side, int nk, int nl)
-                        { return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl); };
-                        bool shallow = band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
-                                       band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
+                        const auto band = [&](double u0, double u1, double side, int nk, int nl) {
+                            return std::abs(u0 - side) <= q && std::abs(u1 - side) <= q && !g.blocked(nk, nl);
+                        };
+                        bool shallow =
+                            band(p0.x, p1.x, box.x0, k - 1, l) || band(p0.x, p1.x, box.x1, k + 1, l) ||
+                            band(p0.y, p1.y, box.y0, k, l - 1) || band(p0.y, p1.y, box.y1, k, l + 1);
                         for (int vy = l; vy <= l + 1 && !shallow; ++vy)
                             for (int vx = k; vx <= k + 1 && !shallow; ++vx)
                             {

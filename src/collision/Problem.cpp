@@ -75,14 +75,16 @@ namespace mhplan
         if (kind == "exact")
         {
             if (!std::isnan(resolution))
-                throw InputError("a resolution belongs to the app set-up only; the exact set-up decides every "
-                                 "point of a motion (accepted: exact, or app with a resolution)");
+                throw InputError(
+                    "a resolution belongs to the app set-up only; the exact set-up decides every "
+                    "point of a motion (accepted: exact, or app with a resolution)");
             return s;
         }
         if (kind != "app")
-            throw InputError("unknown set-up '" + kind +
-                             "'; accepted: exact (mhplan's exact checker and motion validator) or app (a point "
-                             "checker and OMPL's DiscreteMotionValidator at a resolution)");
+            throw InputError(
+                "unknown set-up '" + kind +
+                "'; accepted: exact (mhplan's exact checker and motion validator) or app (a point "
+                "checker and OMPL's DiscreteMotionValidator at a resolution)");
         s.kind = ValiditySetup::Kind::App;
         if (!std::isnan(resolution))
         {
