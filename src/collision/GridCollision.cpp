@@ -20,6 +20,7 @@
    tables runStart_/runEnd_, and rows are visited outwards from p until the vertical gap alone exceeds the
    best distance found, so a query costs O(1 + dist / cellSize). */
 #include "src/collision/GridCollision.h"
+#include "src/collision/detail/DistanceTransform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,49 +100,6 @@ namespace mhplan
             return best;
         }
 
-        /** \brief 1D squared Euclidean distance transform of f (Felzenszwalb & Huttenlocher 2012): d[q] =
-            min over p of (q - p)^2 + f[p]. Infinite f values are not sites. v, z are scratch (n and n + 1).
-         */
-        void distanceTransform1D(const double *f, int n, double *d, int *v, double *z)
-        {
-            int k = -1;
-            for (int q = 0; q < n; ++q)
-            {
-                if (!std::isfinite(f[q]))
-                    continue;
-                double s = -kInf;
-                while (k >= 0)
-                {
-                    const int p = v[k];
-                    s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) /
-                        (2.0 * (q - p));
-                    if (s <= z[k])
-                        --k;
-                    else
-                        break;
-                }
-                if (k < 0)
-                    s = -kInf;
-                ++k;
-                v[k] = q;
-                z[k] = s;
-                z[k + 1] = kInf;
-            }
-            if (k < 0)
-            {
-                std::fill(d, d + n, kInf);
-                return;
-            }
-            int j = 0;
-            for (int q = 0; q < n; ++q)
-            {
-                while (z[j + 1] < q)
-                    ++j;
-                const double dq = q - v[j];
-                d[q] = dq * dq + f[v[j]];
-            }
-        }
-
         /** \brief Relative safety margins for the float distance transform bounds. */
         constexpr double kEdtRelMargin = 1e-6;
     } // namespace
@@ -189,7 +147,7 @@ namespace mhplan
         {
             for (int y = 0; y < ph; ++y)
                 in[y] = f[static_cast<std::size_t>(y) * pw + x];
-            distanceTransform1D(in.data(), ph, out.data(), v.data(), z.data());
+            detail::distanceTransform1D(in.data(), ph, out.data(), v.data(), z.data());
             for (int y = 0; y < ph; ++y)
                 f[static_cast<std::size_t>(y) * pw + x] = out[y];
         }
@@ -197,7 +155,8 @@ namespace mhplan
         const double s = grid_->cellSize();
         for (int y = 1; y <= h; ++y)
         {
-            distanceTransform1D(&f[static_cast<std::size_t>(y) * pw], pw, out.data(), v.data(), z.data());
+            detail::distanceTransform1D(&f[static_cast<std::size_t>(y) * pw], pw, out.data(), v.data(),
+                                        z.data());
             for (int x = 1; x <= w; ++x)
                 edt_[static_cast<std::size_t>(y - 1) * w + (x - 1)] =
                     static_cast<float>(std::sqrt(out[x]) * s);
