@@ -5,6 +5,7 @@
 #include "mhplan/collision/Problem.h"
 #include "mhplan/registry/Registry.h"
 #include "mhplan/io/WorldIO.h"
+#include "mhplan/planners/common/PlannerBase.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
@@ -179,8 +180,9 @@ TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
         if (name == "LBTRRT")
             continue;
         ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(world, world.queries[0], model);
-        // SST's default radii (selection 5, pruning 3) are half and a third of this 10 m world: it prunes nearly
-        // every node and reaches the goal, a zero-tolerance state, only by chance. Scaled, as a user would.
+        // SST's default radii (selection 5, pruning 3) are half and a third of this 10 m world: it prunes
+        // nearly every node and reaches the goal, a zero-tolerance state, only by chance. Scaled, as a user
+        // would.
         std::map<std::string, std::string> params;
         if (name == "SST")
             params = {{"selection_radius", "0.5"}, {"pruning_radius", "0.2"}};
@@ -348,4 +350,71 @@ TEST(Registry, TheClassTableListsEveryMhplanPlanner)
     EXPECT_TRUE(missing.empty()) << "docs/planner_classes.md lacks these rows:\n"
                                  << missing << "the whole table:\n"
                                  << table;
+}
+
+// The shared parameters (seed, max_iterations, population_size) have one declaration and one set of limits in
+// PlannerBase: every registered mhplan planner declaring one of them advertises the same range, accepts its
+// ends and refuses the values just outside, with a message naming the parameter and the accepted range.
+TEST(Registry, SharedParametersHaveOneSetOfLimits)
+{
+    const auto si = unitSquare();
+    const PlannerRegistry &reg = builtinPlanners();
+    const ParamRange shared[] = {SharedParameterRanges::seed, SharedParameterRanges::maxIterations,
+                                 SharedParameterRanges::populationSize};
+    std::map<std::string, int> declaring;
+    for (const auto &name : reg.names())
+    {
+        const ob::PlannerPtr planner = reg.create(name, si);
+        auto *base = dynamic_cast<PlannerBase *>(planner.get());
+        if (base == nullptr)
+            continue; // OMPL's own planners
+        for (const ParamRange &range : shared)
+        {
+            if (!planner->params().hasParam(range.name))
+                continue;
+            ++declaring[range.name];
+            const std::string what = std::string(range.name) + " of " + name;
+            EXPECT_EQ(planner->params()[range.name].getRangeSuggestion(), rangeSuggestion(range)) << what;
+            const auto text = [](double v) { return formatParameter(v); };
+            const std::string accepted = "[" + text(range.lo) + ", " + text(range.hi) + "]";
+            for (const double v : {range.lo, range.hi})
+                EXPECT_EQ(errorOf(
+                              [&] {
+                                  applyPlannerParameters(*planner, {{range.name, text(v)}});
+                              }),
+                          "")
+                    << what << " = " << v;
+            for (const double v : {range.lo - 1, range.hi + 1})
+            {
+                const std::string msg = errorOf(
+                    [&] {
+                        applyPlannerParameters(*planner, {{range.name, text(v)}});
+                    });
+                EXPECT_NE(msg.find("parameter '" + std::string(range.name) + "'"), std::string::npos) << msg;
+                EXPECT_NE(msg.find(accepted), std::string::npos) << what << ": " << msg;
+            }
+            // The setters check too (a program may call them without the registry).
+            std::string msg;
+            try
+            {
+                if (range.name == std::string("seed"))
+                    base->setSeed(static_cast<unsigned long>(range.hi) + 1);
+                else if (range.name == std::string("max_iterations"))
+                    base->setMaxIterations(static_cast<unsigned int>(range.hi) + 1);
+                else
+                    base->setPopulationSize(1);
+            }
+            catch (const std::invalid_argument &e)
+            {
+                msg = e.what();
+            }
+            EXPECT_NE(msg.find("parameter '" + std::string(range.name) + "' must be in " + accepted),
+                      std::string::npos)
+                << what << ": " << msg;
+        }
+    }
+    // The families that have them: every population, memetic, pagmo, field and lattice planner.
+    EXPECT_GE(declaring["seed"], 20);
+    EXPECT_GE(declaring["max_iterations"], 22);
+    EXPECT_GE(declaring["population_size"], 20);
 }

@@ -12,16 +12,17 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
-    const ParamRange SharedParameterRanges::seed{"seed", 0, 1, 4294967295,
-                                                 "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
+    const ParamRange SharedParameterRanges::seed{
+        "seed", 0, 1, 4294967295, "seed of this planner's RNG; 0 = drawn from OMPL's global seed"};
     const ParamRange SharedParameterRanges::maxIterations{"max_iterations", 0, 1, 1000000000, ""};
     const ParamRange SharedParameterRanges::populationSize{"population_size", 2, 1, 10000, ""};
 
     PlannerBase::PlannerBase(const ob::SpaceInformationPtr &si, const std::string &name, bool seeded)
         : ob::Planner(si, name)
-        // ompl::RNG() draws its seed from OMPL's global generator; a planner without randomness must not
-        // consume one (the seeds of the planners constructed after it would change).
-        , rng_(seeded ? ompl::RNG() : ompl::RNG(1u)), bestCostValue_(std::numeric_limits<double>::infinity())
+          // ompl::RNG() draws its seed from OMPL's global generator; a planner without randomness must not
+          // consume one (the seeds of the planners constructed after it would change).
+          ,
+          rng_(seeded ? ompl::RNG() : ompl::RNG(1u)), bestCostValue_(std::numeric_limits<double>::infinity())
     {
         if (seeded)
             declareSeed();
@@ -109,13 +110,34 @@ namespace mhplan
         throw ompl::Exception(text);
     }
 
+    bool PlannerBase::startAndGoal(const ob::State *&start, const ob::State *&goal, ob::PlannerStatus *status)
+    {
+        start = pis_.nextStart();
+        if (start == nullptr)
+        {
+            OMPL_ERROR("%s: no valid start state", getName().c_str());
+            if (status != nullptr)
+                *status = ob::PlannerStatus::INVALID_START;
+            return false;
+        }
+        goal = pis_.nextGoal();
+        if (goal == nullptr)
+        {
+            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
+            if (status != nullptr)
+                *status = ob::PlannerStatus::INVALID_GOAL;
+            return false;
+        }
+        return true;
+    }
+
     void PlannerBase::reportImprovementOf(std::size_t count, const PathFill &fill, const ob::Cost &cost)
     {
         reportImprovement(this, pdef_, *si_, count, fill, cost);
     }
 
-    void PlannerBase::addSolutionPath(std::size_t count, const PathFill &fill, bool exact, const ob::Cost &cost,
-                                      double approximateDistance)
+    void PlannerBase::addSolutionPath(std::size_t count, const PathFill &fill, bool exact,
+                                      const ob::Cost &cost, double approximateDistance)
     {
         addSolution(*this, pdef_, si_, count, fill, exact, cost, approximateDistance);
     }

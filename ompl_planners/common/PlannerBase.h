@@ -80,20 +80,26 @@ namespace mhplan
             \c evaluations when \e evaluations. */
         void declareProgress(bool evaluations);
 
-        /** \brief Seed the RNG with \c seed when it is not 0 (else it keeps the seed drawn at construction). */
+        /** \brief Seed the RNG with \c seed when it is not 0 (else it keeps the seed drawn at construction).
+         */
         void seedRng();
 
         /** \brief Leave the planner not set up, log \e message with OMPL_ERROR (prefixed with the planner's
             name) and throw ompl::Exception with the same text: how setup() refuses a problem. */
         [[noreturn]] void refuseSetup(const std::string &message);
 
+        /** \brief The first start state and one goal sample of the problem; false, with OMPL_ERROR naming the
+            planner and \e status (when given) INVALID_START or INVALID_GOAL, when there is none. */
+        bool startAndGoal(const ompl::base::State *&start, const ompl::base::State *&goal,
+                          ompl::base::PlannerStatus *status = nullptr);
+
         /** \brief Writes point i of a path into a state. */
         using PathFill = std::function<void(ompl::base::State *, std::size_t)>;
         /** \brief The intermediate-solution callback on an improvement (reportImprovement()). */
         void reportImprovementOf(std::size_t count, const PathFill &fill, const ompl::base::Cost &cost);
         /** \brief The solution epilogue: the path added to the problem definition (addSolution()). */
-        void addSolutionPath(std::size_t count, const PathFill &fill, bool exact, const ompl::base::Cost &cost,
-                             double approximateDistance);
+        void addSolutionPath(std::size_t count, const PathFill &fill, bool exact,
+                             const ompl::base::Cost &cost, double approximateDistance);
         /** \brief ompl::base::Planner::getPlannerData(), then the path as a chain of vertices
             (addPathToPlannerData(); the states are the planner's until clear()). */
         void pathToPlannerData(ompl::base::PlannerData &data, std::size_t count, const PathFill &fill,

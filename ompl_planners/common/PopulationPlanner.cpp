@@ -170,18 +170,9 @@ namespace mhplan
     {
         checkSpace();
         const unsigned int k = spaceDim_;
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        const ob::State *start = nullptr, *goal = nullptr;
+        if (!startAndGoal(start, goal))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
         if (!realVector_)
             return prepareStateProblem(start, goal);
         const double *sv = start->as<ob::RealVectorStateSpace::StateType>()->values;
@@ -496,7 +487,8 @@ namespace mhplan
     void PopulationPlanner::fireIntermediate()
     {
         reportImprovementOf(
-            pathCount(true), [this](ob::State *s, std::size_t i) { pathState(true, s, i); }, bestFeasibleCost_);
+            pathCount(true), [this](ob::State *s, std::size_t i) { pathState(true, s, i); },
+            bestFeasibleCost_);
     }
 
     void PopulationPlanner::reportSolution(bool &exact, bool &approximate)
@@ -516,8 +508,8 @@ namespace mhplan
     {
         const bool feasible = haveFeasible_;
         pathToPlannerData(
-            data, pathCount(feasible), [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); },
-            true);
+            data, pathCount(feasible),
+            [this, feasible](ob::State *s, std::size_t i) { pathState(feasible, s, i); }, true);
     }
 
 } // namespace mhplan

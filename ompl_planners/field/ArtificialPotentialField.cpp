@@ -225,7 +225,8 @@ namespace mhplan
         if (!ready_ && !prepare())
             return ob::PlannerStatus::INVALID_START;
         unsigned int done = 0;
-        while (state_ == State::Descending && !ptc() && (getMaxIterations() == 0 || done < getMaxIterations()))
+        while (state_ == State::Descending && !ptc() &&
+               (getMaxIterations() == 0 || done < getMaxIterations()))
         {
             if (!step(ptc))
                 break;

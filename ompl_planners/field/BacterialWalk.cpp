@@ -40,8 +40,9 @@ namespace mhplan
 
     BacterialWalk::BacterialWalk(const ob::SpaceInformationPtr &si, bool adaptiveTumble)
         : FieldWalkPlanner(si, adaptiveTumble ? "ATBFO" : "BFO", true,
-                           {"robot_step", "lambda, the robot's step", "goal tolerance of the walk; 0 = robot_step",
-                            "robot step budget of a walk", "robot steps per solve() call; 0 = until the walk ends"},
+                           {"robot_step", "lambda, the robot's step",
+                            "goal tolerance of the walk; 0 = robot_step", "robot step budget of a walk",
+                            "robot steps per solve() call; 0 = until the walk ends"},
                            2000),
           ColonyParameters(adaptiveTumble), adapter_(std::make_unique<Adapter>(*this))
     {
@@ -209,7 +210,8 @@ namespace mhplan
 
         ptc_ = &ptc;
         unsigned int done = 0;
-        while (walkState_ == WalkState::Walking && !ptc() && (getMaxIterations() == 0 || done < getMaxIterations()))
+        while (walkState_ == WalkState::Walking && !ptc() &&
+               (getMaxIterations() == 0 || done < getMaxIterations()))
         {
             if (!runActive_)
             {

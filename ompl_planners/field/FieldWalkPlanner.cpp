@@ -17,8 +17,8 @@ namespace mhplan
         constexpr double kStepLow = 0.000001, kStepHigh = 1000000;
     } // namespace
 
-    FieldWalkPlanner::FieldWalkPlanner(const ob::SpaceInformationPtr &si, const std::string &name, bool seeded,
-                                       const WalkParameterNames &names, unsigned int maxSteps)
+    FieldWalkPlanner::FieldWalkPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
+                                       bool seeded, const WalkParameterNames &names, unsigned int maxSteps)
         : PlannerBase(si, name, seeded), stepName_(names.step), maxSteps_(maxSteps)
     {
         specs_.approximateSolutions = true;

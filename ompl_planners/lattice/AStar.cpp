@@ -58,21 +58,11 @@ namespace mhplan
         unsigned long done = 0;
         while (!open_.empty())
         {
-            if ((expansions_ & checkMask) == 0)
-            {
-                publishCounts();
-                if (ptc())
-                    return SearchResult::Interrupted;
-            }
-            if (maxExpansions != 0 && done >= maxExpansions)
-                return SearchResult::Budget;
-            const LatticeOpenList::Item top = open_.pop();
+            LatticeOpenList::Item top;
+            SearchResult stop;
+            if (!beginExpansion(ptc, checkMask, maxExpansions, done, top, stop))
+                return stop;
             const LatticeNode s = top.node;
-            if (s == goal)
-                return SearchResult::Found;
-            ++expansions_;
-            ++done;
-            noteExpanded(s, top.f - top.g);
 
             if ((flags[s] & Lattice::kGoalLink) != 0 && !open_.closed(goal))
             {

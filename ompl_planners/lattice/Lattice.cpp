@@ -302,21 +302,10 @@ namespace mhplan
                 status = ob::PlannerStatus::ABORT;
                 return false;
             }
-            const ob::State *start = pis_.nextStart();
-            if (start == nullptr)
-            {
-                OMPL_ERROR("%s: no valid start state", getName().c_str());
-                status = ob::PlannerStatus::INVALID_START;
+            const ob::State *start = nullptr, *goal = nullptr;
+            if (!startAndGoal(start, goal, &status))
                 return false;
-            }
             startPos_ = statePosition(start);
-            const ob::State *goal = pis_.nextGoal();
-            if (goal == nullptr)
-            {
-                OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-                status = ob::PlannerStatus::INVALID_GOAL;
-                return false;
-            }
             goalPos_ = statePosition(goal);
             try
             {
@@ -547,7 +536,7 @@ namespace mhplan
     void LatticePlanner::getPlannerData(ob::PlannerData &data) const
     {
         pathToPlannerData(
-            data, solution_.size(), [this](ob::State *s, std::size_t i) { setStatePosition(s, solution_[i]); },
-            true);
+            data, solution_.size(),
+            [this](ob::State *s, std::size_t i) { setStatePosition(s, solution_[i]); }, true);
     }
 } // namespace mhplan

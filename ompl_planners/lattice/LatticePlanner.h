@@ -25,7 +25,7 @@ namespace mhplan
         static constexpr int kDy[8] = {0, 0, 1, -1, 1, 1, -1, -1};
 
         explicit LatticeMoves(const Lattice &lattice)
-          : stepCost{lattice.spacing(), lattice.spacing() * kSqrt2}
+            : stepCost{lattice.spacing(), lattice.spacing() * kSqrt2}
         {
             for (int d = 0; d < 8; ++d)
                 offset[d] = kDy[d] * lattice.stride() + kDx[d];
@@ -118,6 +118,39 @@ namespace mhplan
                 bestApproxH_ = h;
                 bestApprox_ = n;
             }
+        }
+        /** \brief The head of every expansion of A* and Theta*: every checkMask + 1 expansions publish the
+            counts and test \e ptc (Interrupted), stop after \e maxExpansions in this call (Budget, 0 = no
+            limit), take the best node from the open list (Found when it is the goal). False with \e result
+            when the search stops here; else the expansion of \e top is counted (\e done too) and noted. */
+        bool beginExpansion(const ompl::base::PlannerTerminationCondition &ptc, unsigned long checkMask,
+                            unsigned long maxExpansions, unsigned long &done, LatticeOpenList::Item &top,
+                            SearchResult &result)
+        {
+            if ((expansions_ & checkMask) == 0)
+            {
+                publishCounts();
+                if (ptc())
+                {
+                    result = SearchResult::Interrupted;
+                    return false;
+                }
+            }
+            if (maxExpansions != 0 && done >= maxExpansions)
+            {
+                result = SearchResult::Budget;
+                return false;
+            }
+            top = open_.pop();
+            if (top.node == goalNode_)
+            {
+                result = SearchResult::Found;
+                return false;
+            }
+            ++expansions_;
+            ++done;
+            noteExpanded(top.node, top.f - top.g);
+            return true;
         }
         /** \brief Cost of the link from goal-linked node \e n to the goal. */
         double goalLinkCost(LatticeNode n) const;

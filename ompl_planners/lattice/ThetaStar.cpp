@@ -62,21 +62,11 @@ namespace mhplan
         unsigned long done = 0;
         while (!open_.empty())
         {
-            if ((expansions_ & 63) == 0)
-            {
-                publishCounts();
-                if (ptc())
-                    return SearchResult::Interrupted;
-            }
-            if (maxExpansions != 0 && done >= maxExpansions)
-                return SearchResult::Budget;
-            const LatticeOpenList::Item top = open_.pop();
+            LatticeOpenList::Item top;
+            SearchResult stop;
+            if (!beginExpansion(ptc, 63, maxExpansions, done, top, stop))
+                return stop;
             const LatticeNode s = top.node;
-            if (s == goalNode_)
-                return SearchResult::Found;
-            ++expansions_;
-            ++done;
-            noteExpanded(s, top.f - top.g);
             const Vec2 ps = lattice_.position(s);
 
             if ((flags[s] & Lattice::kGoalLink) != 0 && !open_.closed(goalNode_))

@@ -243,18 +243,9 @@ namespace mhplan
 
     bool MemeticPlanner::prepareProblem()
     {
-        const ob::State *start = pis_.nextStart();
-        if (start == nullptr)
-        {
-            OMPL_ERROR("%s: no valid start state", getName().c_str());
+        const ob::State *start = nullptr, *goal = nullptr;
+        if (!startAndGoal(start, goal))
             return false;
-        }
-        const ob::State *goal = pis_.nextGoal();
-        if (goal == nullptr)
-        {
-            OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
-            return false;
-        }
         if (stateMode_)
             return prepareStateProblem(start, goal);
         start_ = statePosition(start);
@@ -765,8 +756,8 @@ namespace mhplan
         exact = haveSolution_;
         approximate = !exact;
         addSolutionPath(
-            points->size(), [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); }, exact,
-            bestCostObj_, closestDistance_);
+            points->size(), [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); },
+            exact, bestCostObj_, closestDistance_);
     }
 
     void MemeticPlanner::getPlannerData(ob::PlannerData &data) const
@@ -775,7 +766,8 @@ namespace mhplan
         {
             const StatePath &states = haveSolution_ ? bestStates_ : closestStates_;
             pathToPlannerData(
-                data, states.size(), [&](ob::State *s, std::size_t i) { fillState(s, states[i]); }, haveSolution_);
+                data, states.size(), [&](ob::State *s, std::size_t i) { fillState(s, states[i]); },
+                haveSolution_);
             return;
         }
         const MemeticPath &points = haveSolution_ ? bestPath_ : closest_;

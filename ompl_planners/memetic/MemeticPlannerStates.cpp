@@ -204,7 +204,7 @@ namespace mhplan
         exact = haveSolution_;
         approximate = !exact;
         addSolutionPath(
-            states->size(), [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact, bestCostObj_,
-            closestDistance_);
+            states->size(), [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact,
+            bestCostObj_, closestDistance_);
     }
 } // namespace mhplan
