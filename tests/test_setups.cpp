@@ -11,7 +11,7 @@
 #include "benchmarks/Campaign.h"
 #include "benchmarks/CampaignRunner.h"
 #include "src/collision/Collision.h"
-#include "src/collision/Metrics.h"
+#include "src/metrics/Metrics.h"
 #include "src/collision/Problem.h"
 #include "src/collision/Validity.h"
 #include "src/io/WorldIO.h"
