@@ -224,7 +224,7 @@ TEST(World3d, PlanCommandReadsA3dWorld)
     const auto r = mhplan::test::runCli("plan " + kDir +
                                         "narrow_passage.yaml --planner RRTstar --time 0.3 --seed 2 --quiet");
     EXPECT_EQ(r.code, 0) << r.out;
-    EXPECT_TRUE(mhplan::test::contains(r.out, "problem:   narrow_passage_3d (R^3, 6 obstacles")) << r.out;
+    EXPECT_TRUE(mhplan::test::contains(r.out, "problem:   narrow_passage_3d (R^3, 6 obstacles (0 mesh triangles)")) << r.out;
     EXPECT_TRUE(mhplan::test::contains(r.out, "valid:     yes (independent dense check")) << r.out;
     const auto bad = mhplan::test::runCli("plan " + kDir + "narrow_passage.yaml --query nosuch");
     EXPECT_EQ(bad.code, 1) << bad.out;

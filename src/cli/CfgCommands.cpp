@@ -182,8 +182,10 @@ namespace mhplan::cli
             throw InputError("mhplan plan: --time must be > 0 seconds");
         const auto &volume = p.spec.volume;
         std::cout << "problem:   " << p.cfg.name << " (" << spaceLabel(p.cfg) << ", "
-                  << p.spec.model->obstacles().size() << " obstacles, "
-                  << p.spec.model->environmentTriangles() << " environment triangles, "
+                  << (p.cfg.world3d
+                          ? std::to_string(p.spec.model->obstacles().size()) + " obstacles (" +
+                                std::to_string(p.spec.model->environmentTriangles()) + " mesh triangles), "
+                          : std::to_string(p.spec.model->environmentTriangles()) + " environment triangles, ")
                   << (p.spec.model->robotRadius() < 0.0
                           ? std::to_string(p.spec.model->robotTriangles()) + " robot triangles"
                       : p.spec.model->robotRadius() > 0.0 ? "sphere robot"

@@ -192,7 +192,11 @@ namespace mhplan::cli
         {
             for (const auto &p : problems)
                 std::cout << p.cfg.name << "\t" << p.cfg.spaceName() << "\t"
-                          << p.spec.model->environmentTriangles() << " environment triangles\t"
+                          << (p.cfg.world3d
+                                  ? std::to_string(p.spec.model->obstacles().size()) + " obstacles, "
+                                  : "")
+                          << p.spec.model->environmentTriangles()
+                          << (p.cfg.world3d ? " mesh triangles\t" : " environment triangles\t")
                           << p.spec.model->robotTriangles() << " robot triangles\treach "
                           << p.spec.model->reach() << "\t" << p.cfg.file << "\n";
             return 0;

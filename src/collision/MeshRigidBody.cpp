@@ -434,6 +434,21 @@ namespace mhplan
         }
     }
 
+    namespace
+    {
+        /** The first \e dims coordinates of \e volume as OMPL bounds. */
+        ob::RealVectorBounds positionBounds(const Eigen::AlignedBox3d &volume, int dims)
+        {
+            ob::RealVectorBounds b(static_cast<unsigned>(dims));
+            for (int i = 0; i < dims; ++i)
+            {
+                b.setLow(static_cast<unsigned>(i), volume.min()[i]);
+                b.setHigh(static_cast<unsigned>(i), volume.max()[i]);
+            }
+            return b;
+        }
+    } // namespace
+
     og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec)
     {
         return makeMeshSetup(spec, nullptr);
@@ -446,13 +461,7 @@ namespace mhplan
         if (spec.model->space() == RigidSpace::R3)
         {
             auto r3 = std::make_shared<ob::RealVectorStateSpace>(3);
-            ob::RealVectorBounds b(3);
-            for (int i = 0; i < 3; ++i)
-            {
-                b.setLow(i, spec.volume.min()[i]);
-                b.setHigh(i, spec.volume.max()[i]);
-            }
-            r3->setBounds(b);
+            r3->setBounds(positionBounds(spec.volume, 3));
             space = r3;
         }
         else if (planar)
@@ -466,25 +475,13 @@ namespace mhplan
                 se2 = std::make_shared<ob::SE2StateSpace>();
             else
                 throw InputError("car '" + spec.car + "': expected dubins or reeds_shepp");
-            ob::RealVectorBounds b(2);
-            for (int i = 0; i < 2; ++i)
-            {
-                b.setLow(i, spec.volume.min()[i]);
-                b.setHigh(i, spec.volume.max()[i]);
-            }
-            se2->setBounds(b);
+            se2->setBounds(positionBounds(spec.volume, 2));
             space = se2;
         }
         else
         {
             auto se3 = std::make_shared<ob::SE3StateSpace>();
-            ob::RealVectorBounds b(3);
-            for (int i = 0; i < 3; ++i)
-            {
-                b.setLow(i, spec.volume.min()[i]);
-                b.setHigh(i, spec.volume.max()[i]);
-            }
-            se3->setBounds(b);
+            se3->setBounds(positionBounds(spec.volume, 3));
             space = se3;
         }
         const og::SimpleSetupPtr ss = make ? make(space) : std::make_shared<og::SimpleSetup>(space);

@@ -490,6 +490,12 @@ namespace mhplan
                         ": the environment is flat along an axis; give the volume (volume.min.*, "
                         "volume.max.*)");
         }
+        applyCfgSettings(c, s);
+        return out;
+    }
+
+    void applyCfgSettings(const CfgProblem &c, MeshProblemSpec &s)
+    {
         s.start = c.start;
         s.goal = c.goal;
         s.threshold = c.threshold;
@@ -501,6 +507,5 @@ namespace mhplan
         s.turningRadius = c.turningRadius;
         for (const auto &[key, value] : c.context)
             s.context[key] = value.value;
-        return out;
     }
 } // namespace mhplan

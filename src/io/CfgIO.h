@@ -120,6 +120,10 @@ namespace mhplan
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits = {});
     /** \brief The same for a problem already parsed (parseCfg). */
     LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits = {});
+
+    /** \brief Copy the problem's settings (start, goal, threshold, objective, motion validator, resolution,
+        car, context) into \e spec; the model and the volume are the caller's. */
+    void applyCfgSettings(const CfgProblem &cfg, MeshProblemSpec &spec);
 } // namespace mhplan
 
 #endif

@@ -440,11 +440,7 @@ namespace mhplan
             s.model = std::make_shared<MeshRigidModel>(std::move(scene),
                                                        w.robot == "sphere" ? w.robotRadius : 0.0, w.space);
         s.volume = w.bounds;
-        s.start = c.start;
-        s.goal = c.goal;
-        s.threshold = c.threshold;
-        s.motionValidator = c.motionValidator;
-        s.resolution = c.resolution;
+        applyCfgSettings(c, s);
         // The query's poses: inside the bounds and free, else refused naming the query's line.
         const World3dQuery &q = w.queries.at(static_cast<std::size_t>(c.lines.at("query")));
         for (const auto &[what, pose] :
