@@ -315,7 +315,7 @@ TEST(MeshCertifiedValidator, ThreeDWorldsAgainstDenseChecks)
     {
         SCOPED_TRACE(file);
         const LoadedCfgProblem p = loadCfgProblem(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/3d/" + file);
-        certifiedAgainstDense(makeMeshSetup(p.spec), *p.spec.model, 2.0, 150, 2e-3);
+        certifiedAgainstDense(makeMeshSetup(p.spec), *p.spec.model, 6.0, 150, 2e-3);
     }
 }
 

@@ -186,6 +186,31 @@ TEST(World3d, SolidPrimitivesAndAPointRobot)
     EXPECT_EQ(ball.environmentMesh().triangles.size(), 12u + sphereTriangles(0.5, {}).triangles.size());
 }
 
+TEST(World3d, MeshObstaclesAreSurfaces)
+{
+    // The wall of environments/omplapp/passage_env.stl (closed boxes, x in [-0.25, 0.25]) as a mesh obstacle,
+    // beside a solid box of the same size: a point inside the box collides, one inside the mesh does not.
+    const std::string text = "space: r3\nbounds: {min: [-5, -5, -5], max: [5, 5, 5]}\nrobot: {point: {}}\n"
+                             "obstacles:\n  - mesh: " +
+                             std::string(MHPLAN_ENVIRONMENTS_DIR) +
+                             "/omplapp/passage_env.stl\n"
+                             "  - box: {center: [3, 2, 0], size: [0.5, 3.5, 8]}\n"
+                             "queries:\n  - {name: q, start: [-3, 0, 0], goal: [4, 0, 0]}\n";
+    const auto w = std::make_shared<const World3d>(parseWorld3d(text, "/x/w.yaml"));
+    const LoadedCfgProblem p = loadCfgProblem(world3dProblem(w, ""));
+    const MeshRigidModel &m = *p.spec.model;
+    EXPECT_GT(m.environmentTriangles(), 0u);
+    const auto at = [](double x, double y, double z)
+    {
+        Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+        t.translation() = Eigen::Vector3d(x, y, z);
+        return t;
+    };
+    EXPECT_TRUE(m.collides(at(3, 2, 0)));  // inside the solid box
+    EXPECT_FALSE(m.collides(at(0, 2, 0))); // inside the closed mesh: a surface, not detected (as OMPL.app)
+    EXPECT_NEAR(m.clearance(at(0, 2, 0)), 0.25, 1e-5); // to the mesh's nearest face
+}
+
 namespace
 {
     void solveAndCheck(const std::string &file, const std::string &planner)
@@ -224,7 +249,9 @@ TEST(World3d, PlanCommandReadsA3dWorld)
     const auto r = mhplan::test::runCli("plan " + kDir +
                                         "narrow_passage.yaml --planner RRTstar --time 0.3 --seed 2 --quiet");
     EXPECT_EQ(r.code, 0) << r.out;
-    EXPECT_TRUE(mhplan::test::contains(r.out, "problem:   narrow_passage_3d (R^3, 6 obstacles (0 mesh triangles)")) << r.out;
+    EXPECT_TRUE(
+        mhplan::test::contains(r.out, "problem:   narrow_passage_3d (R^3, 6 obstacles (0 mesh triangles)"))
+        << r.out;
     EXPECT_TRUE(mhplan::test::contains(r.out, "valid:     yes (independent dense check")) << r.out;
     const auto bad = mhplan::test::runCli("plan " + kDir + "narrow_passage.yaml --query nosuch");
     EXPECT_EQ(bad.code, 1) << bad.out;

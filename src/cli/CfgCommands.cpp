@@ -127,14 +127,10 @@ namespace mhplan::cli
 
     bool isCfgArgument(const Argv &argv)
     {
-        for (std::size_t i = 0; i < argv.size(); ++i)
-        {
-            const std::string &a = argv[i];
-            if (a.rfind("--", 0) == 0 || (i > 0 && argv[i - 1].rfind("--", 0) == 0))
-                continue; // an option or (possibly) its value
-            if ((a.size() > 4 && a.compare(a.size() - 4, 4, ".cfg") == 0) || isWorld3dFile(a))
+        for (const auto &a : argv)
+            if (a.rfind("--", 0) != 0 &&
+                ((a.size() > 4 && a.compare(a.size() - 4, 4, ".cfg") == 0) || isWorld3dFile(a)))
                 return true;
-        }
         return false;
     }
 
@@ -248,6 +244,10 @@ namespace mhplan::cli
         const LoadedCfgProblem p = loadOrFail(args.positional()[0], args.get("validator"));
         const CfgProblem &cfg = p.cfg;
         printNotes(cfg);
+        if (cfg.world3d)
+            throw InputError(cfg.file +
+                             ": a 3D world names no planners or runs: benchmark it as a campaign "
+                             "world entry {cfg: FILE} (docs/worlds3d.md), or plan it with mhplan plan");
         if (cfg.planners.empty())
             throw InputError(cfg.file + ": the [planner] section names no planner");
         if (!args.has("time") && !cfg.timeLimit)
