@@ -165,6 +165,12 @@ TEST(CampaignCfg, ShippedOmplAppCampaignEnumerates)
         EXPECT_TRUE(e.skipped.empty()) << e.name;
     }
     EXPECT_EQ(all[2].name, "bugtrap_dubins");
+    // benchmarks/worlds3d.yaml: the two 3D worlds (R^3 and SE(3)), every planner runs on both.
+    const Campaign w = loadCampaign(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/../benchmarks/worlds3d.yaml");
+    const auto worlds = enumerateExperiments(w, [](const std::string &s) { return s; });
+    ASSERT_EQ(worlds.size(), 2u);
+    for (const auto &e : worlds)
+        EXPECT_TRUE(e.cfg && e.skipped.empty()) << e.name;
 }
 
 TEST(CampaignCfg, A3dYamlWorldIsAnEntryToo)
