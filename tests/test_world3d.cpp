@@ -246,13 +246,22 @@ TEST(World3d, ExamplesSolvedInR3AndSE3WithDenseCheck)
 
 TEST(World3d, PlanCommandReadsA3dWorld)
 {
-    const auto r = mhplan::test::runCli("plan " + kDir +
-                                        "narrow_passage.yaml --planner RRTstar --time 0.3 --seed 2 --quiet");
+    const std::string svg = (std::filesystem::temp_directory_path() / "mhplan_world3d_plan.svg").string();
+    const auto r =
+        mhplan::test::runCli("plan " + kDir + "narrow_passage.yaml --planner RRTstar --time 0.3 --seed 2 " +
+                             "--quiet --svg " + svg);
     EXPECT_EQ(r.code, 0) << r.out;
     EXPECT_TRUE(
         mhplan::test::contains(r.out, "problem:   narrow_passage_3d (R^3, 6 obstacles (0 mesh triangles)"))
         << r.out;
     EXPECT_TRUE(mhplan::test::contains(r.out, "valid:     yes (independent dense check")) << r.out;
+    // The top projection: the obstacles' triangles, the path, the ball at the start and the goal.
+    std::ifstream in(svg);
+    const std::string picture((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(mhplan::test::contains(picture, "narrow_passage_3d (R^3, seen from above)"))
+        << picture.substr(0, 300);
+    for (const char *cls : {"class=\"environment\"", "class=\"path\"", "class=\"start\"", "class=\"goal\""})
+        EXPECT_TRUE(mhplan::test::contains(picture, cls)) << cls;
     const auto bad = mhplan::test::runCli("plan " + kDir + "narrow_passage.yaml --query nosuch");
     EXPECT_EQ(bad.code, 1) << bad.out;
     EXPECT_TRUE(mhplan::test::contains(bad.out, "no query 'nosuch'")) << bad.out;
