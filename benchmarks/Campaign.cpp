@@ -157,10 +157,15 @@ namespace mhplan::bench
                     if (!why.empty())
                         p.refusals[flag] = why;
                 }
-                // SE(3): the OMPL.app problems of {cfg: FILE} entries.
-                const std::string se3 = registry.whyNotApplicable(p.planner, cap::SE3, "SE(3) problems");
-                if (!se3.empty())
-                    p.refusals[cap::SE3] = se3;
+                // SE(3) and R^3: the OMPL.app problems and 3D YAML worlds of {cfg: FILE} entries.
+                for (const auto &[flag, label] :
+                     {std::pair<unsigned, const char *>{cap::SE3, "SE(3) problems"},
+                      {cap::Rk, "R^3 problems"}})
+                {
+                    const std::string why = registry.whyNotApplicable(p.planner, flag, label);
+                    if (!why.empty())
+                        p.refusals[flag] = why;
+                }
                 if (p.displayName.empty())
                     p.displayName = p.planner;
                 if (!plainName(p.displayName))

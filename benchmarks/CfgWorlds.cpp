@@ -4,7 +4,9 @@
 
 #include "src/collision/MeshRigidBody.h"
 #include "src/io/InputFile.h"
+#include "src/io/World3dIO.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
@@ -27,16 +29,33 @@ namespace mhplan::bench::detail
     CfgInputs readCfgInputs(const std::string &cfgFile)
     {
         CfgInputs in;
-        const std::string text = readInputFile(cfgFile, kMaxCfgBytes, "problem file");
-        in.cfg = parseCfg(text, cfgFile);
+        const bool world3d = isWorld3dFile(cfgFile);
+        const std::string text = readInputFile(cfgFile, world3d ? kMaxYamlBytes : kMaxCfgBytes,
+                                               world3d ? "world file" : "problem file");
         Fingerprint f;
-        f.add("omplapp cfg v1\n");
+        // The meshes it names, each with the place that names it: (where, file).
+        std::vector<std::pair<std::string, std::string>> meshes;
+        if (world3d)
+        {
+            // A 3D YAML world (docs/worlds3d.md): its first query, and every mesh it names.
+            const auto w = std::make_shared<const World3d>(parseWorld3d(text, cfgFile));
+            in.cfg = world3dProblem(w, "");
+            f.add("world3d yaml v1\n");
+            meshes = w->meshFiles();
+        }
+        else
+        {
+            in.cfg = parseCfg(text, cfgFile);
+            f.add("omplapp cfg v1\n");
+            meshes = {{in.cfg.where("problem.world"), in.cfg.world},
+                      {in.cfg.where("problem.robot"), in.cfg.robot}};
+        }
         f.add(text);
         // The meshes' bytes as they are on disk (at most MeshLimits' file size, as readMesh reads them).
         const MeshLimits limits;
-        for (const auto &[key, file] :
-             {std::pair<const char *, const std::string &>{"world", in.cfg.world}, {"robot", in.cfg.robot}})
+        for (std::size_t i = 0; i < meshes.size(); ++i)
         {
+            const auto &[where, file] = meshes[i];
             std::string bytes;
             try
             {
@@ -44,9 +63,10 @@ namespace mhplan::bench::detail
             }
             catch (const InputError &e)
             {
-                throw InputError(in.cfg.where(std::string("problem.") + key) + ": " + e.what());
+                throw InputError(where + ": " + e.what());
             }
-            f.add(std::string("\nmesh ") + key + " " + std::to_string(bytes.size()) + "\n");
+            const std::string key = world3d ? "mesh" + std::to_string(i) : (i == 0 ? "world" : "robot");
+            f.add("\nmesh " + key + " " + std::to_string(bytes.size()) + "\n");
             f.add(bytes);
         }
         in.hash = f.hex();
@@ -107,10 +127,11 @@ namespace mhplan::bench::detail
         e.worldName = cfg.name;
         e.query = "cfg";
         e.runs = campaign.runs;
-        const unsigned space = cfg.se3                    ? cap::SE3
-                               : cfg.car == "dubins"      ? cap::Dubins
-                               : cfg.car == "reeds_shepp" ? cap::ReedsShepp
-                                                          : cap::SE2;
+        const unsigned space = cfg.space() == RigidSpace::R3 ? cap::Rk
+                               : cfg.se3                     ? cap::SE3
+                               : cfg.car == "dubins"         ? cap::Dubins
+                               : cfg.car == "reeds_shepp"    ? cap::ReedsShepp
+                                                             : cap::SE2;
         e.skipped = inapplicablePlanners(campaign, space, index, cfg.name);
         if (!names.insert(e.name).second)
             throw InputError(where + "experiment '" + e.name +
@@ -164,7 +185,12 @@ namespace mhplan::bench::detail
         for (std::size_t i = 0; i < driven.getStateCount(); ++i)
         {
             const ob::State *s = driven.getState(i);
-            if (xs.mesh->cfg.se3)
+            if (xs.mesh->cfg.space() == RigidSpace::R3)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                out += num(v[0]) + " " + num(v[1]) + " " + num(v[2]) + ";";
+            }
+            else if (xs.mesh->cfg.se3)
             {
                 const auto *p = s->as<ob::SE3StateSpace::StateType>();
                 const auto &q = p->rotation();
@@ -186,14 +212,18 @@ namespace mhplan::bench::detail
         const MeshRigidModel &model = *p.spec.model;
         parameters["world TEXT"] = p.cfg.name;
         parameters["world_file TEXT"] = fs::absolute(xs.experiment->worldFile).lexically_normal().string();
-        parameters["world_type TEXT"] = "omplapp";
-        parameters["space TEXT"] = p.cfg.se3 ? "se3" : (p.cfg.car.empty() ? "se2" : p.cfg.car);
+        parameters["world_type TEXT"] = p.cfg.world3d ? "world3d" : "omplapp";
+        parameters["space TEXT"] = p.cfg.spaceName();
         if (!p.cfg.car.empty())
             parameters["turning_radius REAL"] = num(p.cfg.turningRadius);
-        parameters["environment_mesh TEXT"] = fs::absolute(p.cfg.world).lexically_normal().string();
-        parameters["robot_mesh TEXT"] = fs::absolute(p.cfg.robot).lexically_normal().string();
-        parameters["obstacle_count INTEGER"] = std::to_string(model.environmentShape().triangleCount());
-        parameters["robot_triangles INTEGER"] = std::to_string(model.robotShape().triangleCount());
+        if (!p.cfg.world3d)
+        {
+            parameters["environment_mesh TEXT"] = fs::absolute(p.cfg.world).lexically_normal().string();
+            parameters["robot_mesh TEXT"] = fs::absolute(p.cfg.robot).lexically_normal().string();
+        }
+        parameters["obstacle_count INTEGER"] =
+            std::to_string(p.cfg.world3d ? model.obstacles().size() : model.environmentTriangles());
+        parameters["robot_triangles INTEGER"] = std::to_string(model.robotTriangles());
         parameters["robot_reach REAL"] = num(model.reach());
         parameters["motion_validator TEXT"] = p.spec.motionValidator;
         parameters["objective TEXT"] = p.spec.objective;
@@ -203,7 +233,9 @@ namespace mhplan::bench::detail
         const auto pose = [&](const RigidPose &r)
         {
             q << "(" << r.position.x() << "," << r.position.y();
-            if (p.cfg.se3)
+            if (p.cfg.space() == RigidSpace::R3)
+                q << "," << r.position.z();
+            else if (p.cfg.se3)
                 q << "," << r.position.z() << "|" << r.orientation.w() << "," << r.orientation.x() << ","
                   << r.orientation.y() << "," << r.orientation.z();
             else

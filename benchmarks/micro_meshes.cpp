@@ -94,7 +94,7 @@ namespace
             hits += model.collides(ps[i++ & 1023]) ? 1 : 0;
             benchmark::DoNotOptimize(hits);
         }
-        state.counters["triangles"] = static_cast<double>(model.environmentShape().triangleCount());
+        state.counters["triangles"] = static_cast<double>(model.environmentTriangles());
         state.counters["in_contact"] = static_cast<double>(hits) / static_cast<double>(state.iterations());
     }
 
@@ -105,7 +105,7 @@ namespace
         std::size_t i = 0;
         for (auto _ : state)
             benchmark::DoNotOptimize(model.clearance(ps[i++ & 1023]));
-        state.counters["triangles"] = static_cast<double>(model.environmentShape().triangleCount());
+        state.counters["triangles"] = static_cast<double>(model.environmentTriangles());
     }
 
     /** Motions from free poses 0.3 to 1.5 above the 10k-triangle field, of one unit each: range(1) 0: a

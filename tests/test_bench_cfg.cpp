@@ -165,4 +165,59 @@ TEST(CampaignCfg, ShippedOmplAppCampaignEnumerates)
         EXPECT_TRUE(e.skipped.empty()) << e.name;
     }
     EXPECT_EQ(all[2].name, "bugtrap_dubins");
+    // benchmarks/worlds3d.yaml: the two 3D worlds (R^3 and SE(3)), every planner runs on both.
+    const Campaign w = loadCampaign(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/../benchmarks/worlds3d.yaml");
+    const auto worlds = enumerateExperiments(w, [](const std::string &s) { return s; });
+    ASSERT_EQ(worlds.size(), 2u);
+    for (const auto &e : worlds)
+        EXPECT_TRUE(e.cfg && e.skipped.empty()) << e.name;
+}
+
+TEST(CampaignCfg, A3dYamlWorldIsAnEntryToo)
+{
+    // docs/worlds3d.md: {cfg: WORLD.yaml} names a 3D YAML world; its fingerprint covers the world file and
+    // the meshes it names (here the SE(3) example's robot), its space decides which planners apply.
+    const fs::path dir = problemFolder("world3d");
+    fs::create_directories(dir / "3d");
+    fs::create_directories(dir / "omplapp");
+    for (const char *f : {"narrow_passage.yaml", "narrow_passage_se3.yaml"})
+        fs::copy_file(fs::path(MHPLAN_ENVIRONMENTS_DIR) / "3d" / f, dir / "3d" / f);
+    fs::copy_file(kOmplApp / "rod_robot.ply", dir / "omplapp" / "rod_robot.ply");
+    const std::string worlds = "  - {cfg: 3d/narrow_passage.yaml}\n  - {cfg: 3d/narrow_passage_se3.yaml}\n";
+    const std::string text = campaignText("  - RRTConnect\n", worlds);
+    const auto all = enumerate(dir, text);
+    ASSERT_EQ(all.size(), 2u);
+    EXPECT_TRUE(all[0].cfg);
+    EXPECT_EQ(all[0].name, "narrow_passage_3d");
+    EXPECT_EQ(all[1].name, "narrow_passage_se3");
+    {
+        std::ofstream(dir / "omplapp" / "rod_robot.ply", std::ios::app) << "\n";
+    }
+    EXPECT_NE(inputFingerprint(all[1]), all[1].inputHash);
+    EXPECT_EQ(inputFingerprint(all[0]), all[0].inputHash); // names no mesh
+    EXPECT_NE(enumerate(dir, text)[1].configHash, all[1].configHash);
+    // APF plans on R^2 only: refused on the R^3 world, naming it.
+    expectRefused(dir, campaignText("  - RRTConnect\n  - APF\n", worlds),
+                  {"planners[1] (APF) on worlds[0] 'narrow_passage_3d'", "R^3"});
+    // A world error names the campaign's entry and the world's own line and field.
+    {
+        std::ofstream(dir / "3d" / "narrow_passage.yaml", std::ios::app) << "colour: red\n";
+    }
+    expectRefused(dir, text,
+                  {"c.yaml:5: worlds[0].cfg: ", "narrow_passage.yaml:", "field '(top level).colour'"});
+    fs::copy_file(fs::path(MHPLAN_ENVIRONMENTS_DIR) / "3d" / "narrow_passage.yaml",
+                  dir / "3d" / "narrow_passage.yaml", fs::copy_options::overwrite_existing);
+    // A run into the database: every path checked densely (RRTConnect stops at its first path; the SE(3)
+    // example takes up to about a second).
+    std::string slow = text;
+    slow.replace(slow.find("time_limit: 0.3"), 15, "time_limit: 5");
+    std::ofstream(dir / "c.yaml") << slow << "database: " << (dir / "c.db").string() << "\n";
+    const auto r = test::runCli("bench " + (dir / "c.yaml").string() + " --no-progress --seed 3");
+    ASSERT_EQ(r.code, 0) << r.out;
+    test::Sql sql((dir / "c.db").string());
+    const auto rows = sql.rows("SELECT e.name, e.world_type, e.space, r.solved, r.collision_free "
+                               "FROM runs r JOIN experiments e ON r.experimentid = e.id ORDER BY e.name");
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0], (std::vector<std::string>{"narrow_passage_3d", "world3d", "r3", "1", "1"}));
+    EXPECT_EQ(rows[1], (std::vector<std::string>{"narrow_passage_se3", "world3d", "se3", "1", "1"}));
 }

@@ -5,8 +5,10 @@
 #include "src/base/PlannerRegistry.h"
 #include "src/base/World.h"
 #include "src/collision/MeshRigidBody.h"
+#include "src/io/CfgIO.h"
 #include "src/io/MeshIO.h"
 
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 #include <ompl/util/RandomNumbers.h>
@@ -195,7 +197,9 @@ namespace
         ompl::RNG rng(11); // its own generator: the same motions whatever ran before
         const bool planar = model.planar();
         const auto &bounds = planar ? si->getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
-                                    : si->getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+                             : model.space() == RigidSpace::R3
+                                 ? si->getStateSpace()->as<ob::RealVectorStateSpace>()->getBounds()
+                                 : si->getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
         // A random pose, within localRadius of \e near (per coordinate) when given, inside the bounds.
         const auto sample = [&](ob::State *s, const ob::State *near)
         {
@@ -219,7 +223,7 @@ namespace
                     rng.quaternion(q);
                     pose.orientation = Eigen::Quaterniond(q[3], q[0], q[1], q[2]);
                 }
-                setRigidState(s, pose, planar);
+                setRigidState(s, pose, model.space());
             } while (!si->isValid(s));
         };
         ob::State *a = si->allocState(), *b = si->allocState();
@@ -302,6 +306,17 @@ TEST(MeshCertifiedValidator, SE3PassageAgainstDenseChecks)
     spec.start.position = {-1.5, 0, 0};
     spec.goal.position = {1.5, 0, 0};
     certifiedAgainstDense(makeMeshSetup(spec), *spec.model, 3.0);
+}
+
+TEST(MeshCertifiedValidator, ThreeDWorldsAgainstDenseChecks)
+{
+    // docs/worlds3d.md: solid boxes and spheres with a ball robot in R^3, boxes with the rod in SE(3).
+    for (const char *file : {"narrow_passage.yaml", "narrow_passage_se3.yaml"})
+    {
+        SCOPED_TRACE(file);
+        const LoadedCfgProblem p = loadCfgProblem(std::string(MHPLAN_ENVIRONMENTS_DIR) + "/3d/" + file);
+        certifiedAgainstDense(makeMeshSetup(p.spec), *p.spec.model, 6.0, 150, 2e-3);
+    }
 }
 
 TEST(MeshSetup, RefusesInvalidStartAndUnknownSettings)

@@ -35,15 +35,29 @@ class MeshPictures(unittest.TestCase):
         with self.assertRaises(ValueError):
             meshes.load_problem(os.path.join(HERE, "data", "bench_tiny.yaml.cfg"))
 
-    def figure(self, cfg, exp_name, paths):
-        exp = dbmod.Experiment(1, exp_name, {"world_type": "omplapp", "world_file": os.path.join(OMPLAPP, cfg)})
+    def figure(self, cfg, exp_name, paths, world_type="omplapp", keep=None):
+        exp = dbmod.Experiment(1, exp_name, {"world_type": world_type, "world_file": os.path.join(OMPLAPP, cfg)})
         with tempfile.TemporaryDirectory() as tmp:
             name, why = report.path_figure(database(exp, paths), exp, {i + 1: p for i, p in enumerate(paths)},
                                            exp.params["world_file"], tmp, {"P": "#d62728"})
             self.assertIsNotNone(name, why)
             self.assertIsNone(why)
             size = os.path.getsize(os.path.join(tmp, name))
+            if keep:
+                os.replace(os.path.join(tmp, name), keep)
         return name, size
+
+    def test_3d_world_in_r3(self):
+        # docs/worlds3d.md: an R^3 world's paths are (x, y, z); drawn as SE(3) projections with its boxes and
+        # spheres as triangles and the ball robot at poses along the path.
+        prob = meshes.load_problem(os.path.join(OMPLAPP, "..", "3d", "narrow_passage.yaml"))
+        self.assertEqual(prob["space"], "r3")
+        self.assertEqual(prob["environment"]["triangles"].shape, (5 * 12 + 80, 3))
+        path = [(1.0, 3.0, 3.0), (5.0, 3.0, 3.0), (9.0, 3.0, 3.0)]
+        name, size = self.figure(os.path.join("..", "3d", "narrow_passage.yaml"), "narrow_passage_3d", [path],
+                                 "world3d", os.environ.get("MHPLAN_KEEP_FIGURE"))
+        self.assertEqual(name, "paths_narrow_passage_3d.png")
+        self.assertGreater(size, 10000)
 
     def test_se2_from_above_with_footprints(self):
         path = [(0.0, 0.0, 0.0), (0.0, 4.5, 1.5707963), (0.0, 6.0, 1.5707963)]

@@ -246,7 +246,7 @@ def _footprint(ax, world, pose, color, gid, alpha=0.12):
 
 def path_figure(database, exp, paths, world_file, outdir, colors):
     """The world with each planner's best and median exact path."""
-    if dbmod.experiment_value(exp, "world_type") == "omplapp":  # OMPL.app problems: meshes.py
+    if dbmod.experiment_value(exp, "world_type") in ("omplapp", "world3d"):  # meshes.py: OMPL.app problems, 3D worlds
         return meshes.path_figure(database, exp, paths, world_file, outdir, colors, path_figure)
     if not world_file or not os.path.exists(world_file):
         return None, "world file %s not found" % (world_file or "(not recorded)")

@@ -57,6 +57,8 @@ def rotation(q):
 
 def placed(mesh, pose):
     """The mesh's triangles (n x 3 x 3) at \\p pose: (x, y, yaw) in SE(2), (x, y, z, qw, qx, qy, qz) in SE(3)."""
+    if len(mesh["triangles"]) == 0:
+        return np.zeros((0, 3, 3))  # a point robot (docs/worlds3d.md)
     if len(pose) == 3:
         c, s = math.cos(pose[2]), math.sin(pose[2])
         r, t = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array([pose[0], pose[1], 0.0])
@@ -114,7 +116,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
         prob = load_problem(str(world_file))
     except (OSError, ValueError, KeyError) as e:
         return None, "cannot draw %s: %s" % (world_file, e)
-    se3 = prob["space"] == "se3"
+    se3 = prob["space"] in ("se3", "r3")  # R^3 (3D YAML worlds): poses with the identity rotation
     env, robot = prob["environment"], prob["robot"]
     env_tris = env["vertices"][env["triangles"]]
     vmin, vmax = prob["volume"]["min"], prob["volume"]["max"]
@@ -135,6 +137,9 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
     footprints = 0
     drawn = 0
     for planner, best_len, best, median in _best_and_median(database, exp, paths):
+        same = median is best
+        if prob["space"] == "r3":
+            best, median = ([tuple(s) + (1.0, 0.0, 0.0, 0.0) if len(s) == 3 else s for s in p] for p in (best, median))
         dim = 7 if se3 else 3
         if any(len(s) != dim for s in best):
             continue  # not poses of this problem's space
@@ -144,7 +149,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
         for ax, (_, h, v) in zip(axes, views):
             ax.plot([s[h] for s in best], [s[v] for s in best], color=color, linewidth=1.8, zorder=4,
                     label="%s best %.3f" % (planner, best_len) if ax is axes[-1] else None)
-            if median is not best:
+            if not same:
                 ax.plot([s[h] for s in median], [s[v] for s in median], color=color, linewidth=1.0, linestyle="--", alpha=0.8, zorder=4)
             for pose in poses:
                 _draw_triangles(ax, placed(robot, pose), h, v, facecolor=color, edgecolor=color, linewidth=0.4, alpha=0.12, zorder=3)
@@ -155,7 +160,7 @@ def path_figure(database, exp, paths, world_file, outdir, colors, owner=None):
         for ax, (_, h, v) in zip(axes, views):
             _draw_triangles(ax, placed(robot, pose), h, v, facecolor=color, edgecolor=color, linewidth=0.5, alpha=0.35, zorder=5)
     what = "orthographic projections" if se3 else "seen from above"
-    label = {"se2": "SE(2)", "se3": "SE(3)", "dubins": "Dubins car", "reeds_shepp": "Reeds-Shepp car"}.get(prob["space"], prob["space"])
+    label = {"se2": "SE(2)", "se3": "SE(3)", "r3": "R^3", "dubins": "Dubins car", "reeds_shepp": "Reeds-Shepp car"}.get(prob["space"], prob["space"])
     title = "%s (%s, %s): best (solid) and median (dashed) paths" % (exp.name, label, what)
     if footprints:
         title += "; the robot at six poses along each best path" if se3 else "; the robot along each best path"

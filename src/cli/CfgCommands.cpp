@@ -6,6 +6,7 @@
 #include "src/draw/Svg.h"
 
 #include "src/io/CfgIO.h"
+#include "src/io/World3dIO.h"
 #include "src/registry/Registry.h"
 
 #include <ompl/tools/benchmark/Benchmark.h>
@@ -67,12 +68,9 @@ namespace mhplan::cli
             return planner;
         }
 
-        /** "SE(2)", "SE(3)", "Dubins" or "Reeds-Shepp": the problem's state space. */
         std::string spaceLabel(const CfgProblem &cfg)
         {
-            if (cfg.se3)
-                return "SE(3)";
-            return cfg.car == "dubins" ? "Dubins" : cfg.car == "reeds_shepp" ? "Reeds-Shepp" : "SE(2)";
+            return cfg.spaceLabel();
         }
 
         /** The dense check's step: 1e-3 of the volume's diagonal (x, y, and z for SE(3)). */
@@ -101,9 +99,10 @@ namespace mhplan::cli
             }
         }
 
-        LoadedCfgProblem loadOrFail(const std::string &path, const std::string &validator)
+        LoadedCfgProblem loadOrFail(const std::string &path, const std::string &validator,
+                                    const std::string &query = "")
         {
-            LoadedCfgProblem p = loadCfgProblem(path);
+            LoadedCfgProblem p = loadCfgProblem(loadCfg(path, query));
             if (!validator.empty())
             {
                 if (validator != "certified" && validator != "discrete")
@@ -129,20 +128,22 @@ namespace mhplan::cli
     bool isCfgArgument(const Argv &argv)
     {
         for (const auto &a : argv)
-            if (a.size() > 4 && a.compare(a.size() - 4, 4, ".cfg") == 0 && a.rfind("--", 0) != 0)
+            if (a.rfind("--", 0) != 0 &&
+                ((a.size() > 4 && a.compare(a.size() - 4, 4, ".cfg") == 0) || isWorld3dFile(a)))
                 return true;
         return false;
     }
 
     int cmdPlanCfg(const Argv &argv)
     {
-        const Args args("plan", argv,
-                        {{"planner", "time", "seed", "validator", "path", "svg"}, {"set"}, {"quiet"}});
+        const Args args(
+            "plan", argv,
+            {{"planner", "time", "seed", "validator", "path", "svg", "query"}, {"set"}, {"quiet"}});
         checkOutputFile(args, "svg");
         const std::uint_fast32_t seed = seedFromArgs(args);
         if (args.positional().size() != 1)
-            throw InputError("mhplan plan: expected one PROBLEM.cfg");
-        const LoadedCfgProblem p = loadOrFail(args.positional()[0], args.get("validator"));
+            throw InputError("mhplan plan: expected one PROBLEM.cfg or 3D WORLD.yaml");
+        const LoadedCfgProblem p = loadOrFail(args.positional()[0], args.get("validator"), args.get("query"));
         printNotes(p.cfg);
         og::SimpleSetupPtr ss = setupOrFail(p);
         const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
@@ -152,6 +153,9 @@ namespace mhplan::cli
         if (args.has("planner") || p.cfg.planners.empty())
         {
             plannerName = builtinPlanners().get(args.get("planner", "RRTConnect")).name;
+            const std::string whyNot = builtinPlanners().whyNotApplicable(plannerName, *si);
+            if (!whyNot.empty())
+                throw InputError("mhplan plan: " + whyNot);
             std::map<std::string, std::string> params;
             for (const auto &kv : args.all("set"))
                 parseKeyValue(kv, params);
@@ -174,9 +178,15 @@ namespace mhplan::cli
             throw InputError("mhplan plan: --time must be > 0 seconds");
         const auto &volume = p.spec.volume;
         std::cout << "problem:   " << p.cfg.name << " (" << spaceLabel(p.cfg) << ", "
-                  << p.spec.model->environmentShape().triangleCount() << " environment triangles, "
-                  << p.spec.model->robotShape().triangleCount() << " robot triangles, robot reach "
-                  << p.spec.model->reach() << ")\n"
+                  << (p.cfg.world3d
+                          ? std::to_string(p.spec.model->obstacles().size()) + " obstacles (" +
+                                std::to_string(p.spec.model->environmentTriangles()) + " mesh triangles), "
+                          : std::to_string(p.spec.model->environmentTriangles()) + " environment triangles, ")
+                  << (p.spec.model->robotRadius() < 0.0
+                          ? std::to_string(p.spec.model->robotTriangles()) + " robot triangles"
+                      : p.spec.model->robotRadius() > 0.0 ? "sphere robot"
+                                                          : "point robot")
+                  << ", robot reach " << p.spec.model->reach() << ")\n"
                   << "volume:    [" << volume.min().transpose() << "] .. [" << volume.max().transpose() << "]"
                   << (p.cfg.volume ? "" : " (inferred from the environment)") << "\n"
                   << "planner:   " << plannerName << "\nseed:      " << seed << "\n"
@@ -234,6 +244,10 @@ namespace mhplan::cli
         const LoadedCfgProblem p = loadOrFail(args.positional()[0], args.get("validator"));
         const CfgProblem &cfg = p.cfg;
         printNotes(cfg);
+        if (cfg.world3d)
+            throw InputError(cfg.file +
+                             ": a 3D world names no planners or runs: benchmark it as a campaign "
+                             "world entry {cfg: FILE} (docs/worlds3d.md), or plan it with mhplan plan");
         if (cfg.planners.empty())
             throw InputError(cfg.file + ": the [planner] section names no planner");
         if (!args.has("time") && !cfg.timeLimit)

@@ -110,7 +110,8 @@ namespace mhplan::cli
         svg.precision(6);
         svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width * scale + 2 * margin
             << "\" height=\"" << height * scale + 2 * margin << "\">\n<title>" << svgEscape(p.cfg.name)
-            << (p.cfg.se3 ? " (SE(3), seen from above)" : " (SE(2), from above)") << "</title>\n"
+            << " (" << p.cfg.spaceLabel() << (p.cfg.se3 ? ", seen from above)" : ", from above)")
+            << "</title>\n"
             << "<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << width * scale
             << "\" height=\"" << height * scale << "\" fill=\"white\" stroke=\"black\"/>\n";
         svg << "<path class=\"environment\" fill=\"#9a9a9a\" fill-opacity=\"0.6\" stroke=\"#444444\" "
@@ -190,9 +191,13 @@ namespace mhplan::cli
         if (!args.has("json"))
         {
             for (const auto &p : problems)
-                std::cout << p.cfg.name << "\t" << (p.cfg.se3 ? "se3" : "se2") << "\t"
-                          << p.spec.model->environmentShape().triangleCount() << " environment triangles\t"
-                          << p.spec.model->robotShape().triangleCount() << " robot triangles\treach "
+                std::cout << p.cfg.name << "\t" << p.cfg.spaceName() << "\t"
+                          << (p.cfg.world3d
+                                  ? std::to_string(p.spec.model->obstacles().size()) + " obstacles, "
+                                  : "")
+                          << p.spec.model->environmentTriangles()
+                          << (p.cfg.world3d ? " mesh triangles\t" : " environment triangles\t")
+                          << p.spec.model->robotTriangles() << " robot triangles\treach "
                           << p.spec.model->reach() << "\t" << p.cfg.file << "\n";
             return 0;
         }
@@ -202,7 +207,7 @@ namespace mhplan::cli
         {
             const Eigen::AlignedBox3d &v = p.spec.volume;
             out.beginObject().field("name", p.cfg.name).field("file", p.cfg.file);
-            out.field("space", p.cfg.se3 ? "se3" : (p.cfg.car.empty() ? "se2" : p.cfg.car));
+            out.field("space", p.cfg.spaceName());
             out.field("robot_reach", p.spec.model->reach());
             if (!p.cfg.car.empty())
                 out.field("turning_radius", p.cfg.turningRadius);

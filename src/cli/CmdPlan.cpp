@@ -83,9 +83,10 @@ namespace mhplan::cli
             "(default: the file's time_limit), --seed, --quiet, and also --validator certified|discrete and "
             "--path FILE (the path's states) and --svg FILE (the problem from above, the robot's footprint "
             "along "
-            "the path); its path is checked densely against the meshes.",
-            {{"WORLD", "a world file (.yaml, .map), the name of a shipped world (see 'mhplan worlds'), or an "
-                       "OMPL.app problem file (.cfg)"}},
+            "the path); its path is checked densely against the meshes. A 3D YAML world (space r3 or se3, "
+            "docs/worlds3d.md) takes the same options and --query NAME (default: its first query).",
+            {{"WORLD", "a world file (.yaml, .map), the name of a shipped world (see 'mhplan worlds'), an "
+                       "OMPL.app problem file (.cfg) or a 3D YAML world"}},
             {options::query(),
              options::start(),
              options::goal(),
@@ -106,7 +107,8 @@ namespace mhplan::cli
             {"plan bfo_case1 --planner SMA --time 2 --seed 7",
              "plan lrsma_scenario1 --planner LRSMA --set population_size=40 --set iterations=200 --svg p.svg",
              "plan gms_grid20 --planner ThetaStar --json --quiet",
-             "plan environments/omplapp/bugtrap.cfg --planner kpiece --time 2"},
+             "plan environments/omplapp/bugtrap.cfg --planner kpiece --time 2",
+             "plan environments/3d/narrow_passage.yaml --planner RRTstar --svg p.svg"},
             "0 exact collision-free path, 1 bad input, 2 internal error, 3 no exact or no collision-free "
             "path"};
         return doc;

@@ -25,7 +25,8 @@ namespace mhplan::cli
     int cmdOptimum(const Argv &argv);
     int cmdSim(const Argv &argv);
     int cmdArena(const Argv &argv);
-    /** \brief True when an argument names an OMPL.app problem file (.cfg): plan and bench hand it to
+    /** \brief True when an argument names an OMPL.app problem file (.cfg) or a 3D YAML world (isWorld3dFile,
+        docs/worlds3d.md): plan, bench and worlds hand it to
         cmdPlanCfg and cmdBenchCfg (CfgCommands.cpp, docs/omplapp.md). */
     bool isCfgArgument(const Argv &argv);
     int cmdPlanCfg(const Argv &argv);

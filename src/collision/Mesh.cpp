@@ -4,6 +4,8 @@
 #include "src/base/World.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/sphere.h>
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
@@ -99,8 +101,30 @@ namespace mhplan
 
     struct MeshShape::Impl
     {
-        std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> model;
+        std::shared_ptr<fcl::CollisionGeometryd> model;
     };
+
+    MeshShape::MeshShape() : impl_(std::make_unique<Impl>()) {}
+
+    std::unique_ptr<MeshShape> MeshShape::box(const Eigen::Vector3d &size)
+    {
+        if (!size.allFinite() || !(size.minCoeff() > 0.0))
+            throw InputError("a box needs three finite edge lengths > 0");
+        std::unique_ptr<MeshShape> s(new MeshShape());
+        s->impl_->model = std::make_shared<fcl::Boxd>(size);
+        s->impl_->model->computeLocalAABB();
+        return s;
+    }
+
+    std::unique_ptr<MeshShape> MeshShape::sphere(double radius)
+    {
+        if (!std::isfinite(radius) || !(radius >= 0.0))
+            throw InputError("a sphere needs a finite radius >= 0");
+        std::unique_ptr<MeshShape> s(new MeshShape());
+        s->impl_->model = std::make_shared<fcl::Sphered>(radius);
+        s->impl_->model->computeLocalAABB();
+        return s;
+    }
 
     MeshShape::MeshShape(const TriangleMesh &mesh) : impl_(std::make_unique<Impl>())
     {
@@ -111,13 +135,13 @@ namespace mhplan
         triangles.reserve(mesh.triangles.size());
         for (const auto &t : mesh.triangles)
             triangles.emplace_back(t[0], t[1], t[2]);
-        impl_->model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-        if (impl_->model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size())) !=
+        const auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+        if (bvh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size())) !=
                 fcl::BVH_OK ||
-            impl_->model->addSubModel(points, triangles) != fcl::BVH_OK ||
-            impl_->model->endModel() != fcl::BVH_OK)
+            bvh->addSubModel(points, triangles) != fcl::BVH_OK || bvh->endModel() != fcl::BVH_OK)
             throw InputError("mesh '" + mesh.source + "': FCL cannot build its bounding-volume hierarchy");
-        impl_->model->computeLocalAABB();
+        bvh->computeLocalAABB();
+        impl_->model = bvh;
         triangles_ = mesh.triangles.size();
     }
 

@@ -55,10 +55,17 @@ namespace mhplan
     {
       public:
         explicit MeshShape(const TriangleMesh &mesh);
+        /** \brief A solid box of edge lengths \e size centred on its origin (fcl::Box, docs/worlds3d.md): a
+            point inside it touches it. */
+        static std::unique_ptr<MeshShape> box(const Eigen::Vector3d &size);
+        /** \brief A solid ball of radius \e radius >= 0 about its origin (fcl::Sphere; radius 0 is a point).
+         */
+        static std::unique_ptr<MeshShape> sphere(double radius);
         ~MeshShape();
         MeshShape(const MeshShape &) = delete;
         MeshShape &operator=(const MeshShape &) = delete;
 
+        /** \brief The triangles of a mesh; 0 for a box or a sphere. */
         std::size_t triangleCount() const { return triangles_; }
 
         /** \brief True when this mesh at \e a and \e other at \e b share a point (FCL's collide). */
@@ -68,6 +75,7 @@ namespace mhplan
         double distance(const Eigen::Isometry3d &a, const MeshShape &other, const Eigen::Isometry3d &b) const;
 
       private:
+        MeshShape();
         struct Impl;
         std::unique_ptr<Impl> impl_;
         std::size_t triangles_{0};

@@ -14,6 +14,7 @@
 #include <ompl/base/samplers/MaximizeClearanceValidStateSampler.h>
 #include <ompl/base/samplers/ObstacleBasedValidStateSampler.h>
 #include <ompl/base/samplers/UniformValidStateSampler.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
 #include <cmath>
@@ -24,56 +25,176 @@ namespace og = ompl::geometric;
 
 namespace mhplan
 {
+    std::string toString(RigidSpace space)
+    {
+        return space == RigidSpace::SE2 ? "se2" : space == RigidSpace::SE3 ? "se3" : "r3";
+    }
+
+    TriangleMesh boxTriangles(const Eigen::Vector3d &size, const Eigen::Isometry3d &pose)
+    {
+        TriangleMesh m;
+        m.source = "box";
+        for (int i = 0; i < 8; ++i)
+            m.vertices.push_back(pose * Eigen::Vector3d(((i & 1) ? 0.5 : -0.5) * size.x(),
+                                                        ((i & 2) ? 0.5 : -0.5) * size.y(),
+                                                        ((i & 4) ? 0.5 : -0.5) * size.z()));
+        // Two triangles per face: corners differing in one coordinate bit.
+        const std::uint32_t faces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                           {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+        for (const auto &f : faces)
+        {
+            m.triangles.push_back({f[0], f[1], f[2]});
+            m.triangles.push_back({f[0], f[2], f[3]});
+        }
+        return m;
+    }
+
+    TriangleMesh sphereTriangles(double radius, const Eigen::Vector3d &center)
+    {
+        // A latitude-longitude polyhedron: 8 slices round, 6 stacks, vertices on the sphere.
+        TriangleMesh m;
+        m.source = "sphere";
+        const int slices = 8, stacks = 6;
+        m.vertices.push_back(center + Eigen::Vector3d(0, 0, radius));
+        for (int i = 1; i < stacks; ++i)
+            for (int j = 0; j < slices; ++j)
+            {
+                const double th = M_PI * i / stacks, ph = 2.0 * M_PI * j / slices;
+                m.vertices.push_back(center + radius * Eigen::Vector3d(std::sin(th) * std::cos(ph),
+                                                                       std::sin(th) * std::sin(ph),
+                                                                       std::cos(th)));
+            }
+        m.vertices.push_back(center - Eigen::Vector3d(0, 0, radius));
+        const auto at = [&](int i, int j)
+        { return static_cast<std::uint32_t>(1 + (i - 1) * slices + j % slices); };
+        const auto bottom = static_cast<std::uint32_t>(m.vertices.size() - 1);
+        for (int j = 0; j < slices; ++j)
+        {
+            m.triangles.push_back({0, at(1, j), at(1, j + 1)});
+            m.triangles.push_back({bottom, at(stacks - 1, j + 1), at(stacks - 1, j)});
+            for (int i = 1; i + 1 < stacks; ++i)
+            {
+                m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+        return m;
+    }
+
     MeshRigidModel::MeshRigidModel(const TriangleMesh &environment, const TriangleMesh &robot, bool planar)
-        : planar_(planar), environment_(environment)
+        : MeshRigidModel({SceneObstacle{std::make_shared<const MeshShape>(environment),
+                                        Eigen::Isometry3d::Identity(), environment}},
+                         robot, planar ? RigidSpace::SE2 : RigidSpace::SE3)
+    {
+    }
+
+    MeshRigidModel::MeshRigidModel(std::vector<SceneObstacle> obstacles, const TriangleMesh &robot,
+                                   RigidSpace space)
+        : space_(space), obstacles_(std::move(obstacles))
     {
         Eigen::Vector3d centre = robot.vertexCentroid();
-        if (planar)
+        if (planar())
             centre.z() = 0.0;
         shift_ = -centre;
         robot_ = robot.translated(shift_);
-        envShape_ = std::make_unique<MeshShape>(environment_);
         robotShape_ = std::make_unique<MeshShape>(robot_);
         reach_ = robot_.reachFrom(Eigen::Vector3d::Zero());
-        double extent = reach_;
-        const Eigen::AlignedBox3d box = environment_.box();
-        if (!box.isEmpty())
-            extent = std::max({extent, box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff()});
+        finish();
+    }
+
+    MeshRigidModel::MeshRigidModel(std::vector<SceneObstacle> obstacles, double radius, RigidSpace space)
+        : space_(space), obstacles_(std::move(obstacles)), radius_(radius)
+    {
+        robotShape_ = MeshShape::sphere(radius);
+        if (radius > 0.0)
+            robot_ = sphereTriangles(radius, Eigen::Vector3d::Zero());
+        robot_.source = radius > 0.0 ? "sphere robot" : "point robot";
+        reach_ = 0.0; // a rotation about the centre leaves a ball in place
+        finish();
+    }
+
+    void MeshRigidModel::finish()
+    {
+        if (obstacles_.empty())
+            throw InputError("a scene needs at least one obstacle");
+        double extent = std::max(reach_, std::max(radius_, 0.0));
+        for (const auto &o : obstacles_)
+        {
+            // The environment as drawn: every obstacle's triangles in one mesh.
+            const auto base = static_cast<std::uint32_t>(environment_.vertices.size());
+            environment_.vertices.insert(environment_.vertices.end(), o.drawn.vertices.begin(),
+                                         o.drawn.vertices.end());
+            for (const auto &t : o.drawn.triangles)
+                environment_.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+            const Eigen::AlignedBox3d box = o.drawn.box();
+            if (!box.isEmpty())
+                extent = std::max({extent, box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff()});
+        }
+        environment_.source = obstacles_.size() == 1 ? obstacles_.front().drawn.source : "scene";
         margin_ = 1e-6 * (1.0 + extent);
+    }
+
+    std::size_t MeshRigidModel::environmentTriangles() const
+    {
+        std::size_t n = 0;
+        for (const auto &o : obstacles_)
+            n += o.shape->triangleCount();
+        return n;
     }
 
     Eigen::Isometry3d MeshRigidModel::placement(const ob::State *state) const
     {
         Eigen::Isometry3d tf = Eigen::Isometry3d::Identity();
-        if (planar_)
+        if (space_ == RigidSpace::SE2)
         {
             const auto *s = state->as<ob::SE2StateSpace::StateType>();
             tf.translation() = Eigen::Vector3d(s->getX(), s->getY(), 0.0);
             tf.linear() = Eigen::AngleAxisd(s->getYaw(), Eigen::Vector3d::UnitZ()).toRotationMatrix();
         }
-        else
+        else if (space_ == RigidSpace::SE3)
         {
             const auto *s = state->as<ob::SE3StateSpace::StateType>();
             const auto &r = s->rotation();
             tf.translation() = Eigen::Vector3d(s->getX(), s->getY(), s->getZ());
             tf.linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
         }
+        else
+        {
+            const double *v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+            tf.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+        }
         return tf;
     }
 
     bool MeshRigidModel::collides(const Eigen::Isometry3d &pose) const
     {
-        return robotShape_->collides(pose, *envShape_, Eigen::Isometry3d::Identity());
+        for (const auto &o : obstacles_)
+            if (robotShape_->collides(pose, *o.shape, o.pose))
+                return true;
+        return false;
     }
 
     double MeshRigidModel::clearance(const Eigen::Isometry3d &pose) const
     {
-        return robotShape_->distance(pose, *envShape_, Eigen::Isometry3d::Identity()) - margin_;
+        double d = std::numeric_limits<double>::infinity();
+        for (const auto &o : obstacles_)
+        {
+            d = std::min(d, robotShape_->distance(pose, *o.shape, o.pose));
+            if (d <= 0.0)
+                break;
+        }
+        return d - margin_;
     }
 
     double meshMotionBound(const MeshRigidModel &model, const ob::State *s1, const ob::State *s2)
     {
         double translation = 0.0, angle = 0.0;
+        if (model.space() == RigidSpace::R3)
+        {
+            const double *a = s1->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double *b = s2->as<ob::RealVectorStateSpace::StateType>()->values;
+            return std::sqrt(std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2) + std::pow(b[2] - a[2], 2));
+        }
         if (model.planar())
         {
             const auto *a = s1->as<ob::SE2StateSpace::StateType>();
@@ -226,6 +347,31 @@ namespace mhplan
         return ok;
     }
 
+    void setRigidState(ob::State *state, const RigidPose &pose, RigidSpace space)
+    {
+        if (space != RigidSpace::R3)
+            return setRigidState(state, pose, space == RigidSpace::SE2);
+        double *v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+        for (int i = 0; i < 3; ++i)
+            v[i] = pose.position[i];
+    }
+
+    Eigen::Isometry3d rigidPlacement(const RigidPose &pose, RigidSpace space)
+    {
+        Eigen::Isometry3d tf = Eigen::Isometry3d::Identity();
+        tf.translation() = pose.position;
+        if (space == RigidSpace::SE2)
+        {
+            tf.translation().z() = 0.0;
+            const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
+            tf.linear() =
+                Eigen::AngleAxisd(std::atan2(x.y(), x.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        }
+        else if (space == RigidSpace::SE3)
+            tf.linear() = pose.orientation.normalized().toRotationMatrix();
+        return tf;
+    }
+
     void setRigidState(ob::State *state, const RigidPose &pose, bool planar)
     {
         if (planar)
@@ -288,6 +434,21 @@ namespace mhplan
         }
     }
 
+    namespace
+    {
+        /** The first \e dims coordinates of \e volume as OMPL bounds. */
+        ob::RealVectorBounds positionBounds(const Eigen::AlignedBox3d &volume, int dims)
+        {
+            ob::RealVectorBounds b(static_cast<unsigned>(dims));
+            for (int i = 0; i < dims; ++i)
+            {
+                b.setLow(static_cast<unsigned>(i), volume.min()[i]);
+                b.setHigh(static_cast<unsigned>(i), volume.max()[i]);
+            }
+            return b;
+        }
+    } // namespace
+
     og::SimpleSetupPtr makeMeshSetup(const MeshProblemSpec &spec)
     {
         return makeMeshSetup(spec, nullptr);
@@ -297,7 +458,13 @@ namespace mhplan
     {
         const bool planar = spec.model->planar();
         ob::StateSpacePtr space;
-        if (planar)
+        if (spec.model->space() == RigidSpace::R3)
+        {
+            auto r3 = std::make_shared<ob::RealVectorStateSpace>(3);
+            r3->setBounds(positionBounds(spec.volume, 3));
+            space = r3;
+        }
+        else if (planar)
         {
             std::shared_ptr<ob::SE2StateSpace> se2;
             if (spec.car == "dubins")
@@ -308,25 +475,13 @@ namespace mhplan
                 se2 = std::make_shared<ob::SE2StateSpace>();
             else
                 throw InputError("car '" + spec.car + "': expected dubins or reeds_shepp");
-            ob::RealVectorBounds b(2);
-            for (int i = 0; i < 2; ++i)
-            {
-                b.setLow(i, spec.volume.min()[i]);
-                b.setHigh(i, spec.volume.max()[i]);
-            }
-            se2->setBounds(b);
+            se2->setBounds(positionBounds(spec.volume, 2));
             space = se2;
         }
         else
         {
             auto se3 = std::make_shared<ob::SE3StateSpace>();
-            ob::RealVectorBounds b(3);
-            for (int i = 0; i < 3; ++i)
-            {
-                b.setLow(i, spec.volume.min()[i]);
-                b.setHigh(i, spec.volume.max()[i]);
-            }
-            se3->setBounds(b);
+            se3->setBounds(positionBounds(spec.volume, 3));
             space = se3;
         }
         const og::SimpleSetupPtr ss = make ? make(space) : std::make_shared<og::SimpleSetup>(space);
@@ -348,8 +503,8 @@ namespace mhplan
         si->setup(); // the planner and SimpleSetup::setup() are the caller's
 
         ob::ScopedState<> start(space), goal(space);
-        setRigidState(start.get(), spec.start, planar);
-        setRigidState(goal.get(), spec.goal, planar);
+        setRigidState(start.get(), spec.start, spec.model->space());
+        setRigidState(goal.get(), spec.goal, spec.model->space());
         for (const auto &[what, state] :
              {std::pair<const char *, const ob::State *>{"start", start.get()}, {"goal", goal.get()}})
         {

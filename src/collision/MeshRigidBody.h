@@ -19,50 +19,93 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mhplan
 {
-    /** \brief A robot mesh against an environment mesh. The robot is moved so that the mean of its vertices
+    /** \brief The state space of a rigid problem: SE(2) (planar), SE(3), or R^3 (translation only, the
+        robot keeps the orientation of its file; docs/worlds3d.md). */
+    enum class RigidSpace
+    {
+        SE2,
+        SE3,
+        R3
+    };
+
+    /** \brief "se2", "se3" or "r3". */
+    std::string toString(RigidSpace space);
+
+    /** \brief One obstacle of a scene: a shape (mesh, box or sphere) at a fixed placement. */
+    struct SceneObstacle
+    {
+        std::shared_ptr<const MeshShape> shape;
+        Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};
+        /** \brief Its triangles for pictures and exports (a box's 12, a sphere's coarse polyhedron, a mesh's
+            own), in the scene's frame. */
+        TriangleMesh drawn;
+    };
+
+    /** \brief A robot against obstacles. The mesh robot is moved so that the mean of its vertices
         (OMPL.app's robot centre; for a planar problem only in x and y) is its origin, the point a state's
-        position places and its rotation turns about. A planar (SE(2)) robot stays at z = 0 and turns about
-        +z. Meshes are surfaces: touching or crossing triangles is a contact (a robot wholly inside a closed
-        obstacle is not, as in OMPL.app). Immutable; queries are safe from several threads. */
+        position places and its rotation turns about; a sphere robot (radius 0: a point) is centred on it.
+        A planar (SE(2)) robot stays at z = 0 and turns about +z. Meshes are surfaces: touching or crossing
+        triangles is a contact (a robot wholly inside a closed mesh obstacle is not, as in OMPL.app); boxes
+        and spheres are solid. Immutable; queries are safe from several threads. */
     class MeshRigidModel
     {
       public:
+        /** \brief OMPL.app's problem: one environment mesh, one robot mesh, SE(2) or SE(3). */
         MeshRigidModel(const TriangleMesh &environment, const TriangleMesh &robot, bool planar);
+        /** \brief A scene of obstacles and a mesh robot (docs/worlds3d.md). */
+        MeshRigidModel(std::vector<SceneObstacle> obstacles, const TriangleMesh &robot, RigidSpace space);
+        /** \brief A scene of obstacles and a sphere robot of \e radius (0: a point). */
+        MeshRigidModel(std::vector<SceneObstacle> obstacles, double radius, RigidSpace space);
 
-        bool planar() const { return planar_; }
-        /** \brief The robot's placement for a state of the SE(2) or SE(3) state space. */
+        bool planar() const { return space_ == RigidSpace::SE2; }
+        RigidSpace space() const { return space_; }
+        /** \brief The robot's placement for a state of the SE(2), SE(3) or R^3 state space. */
         Eigen::Isometry3d placement(const ompl::base::State *state) const;
-        /** \brief True when the robot at \e pose touches the environment (FCL's collide). */
+        /** \brief True when the robot at \e pose touches an obstacle (FCL's collide). */
         bool collides(const Eigen::Isometry3d &pose) const;
-        /** \brief FCL's distance from the robot at \e pose to the environment minus margin(): a lower bound
-            of the true distance, <= 0 at a contact. */
+        /** \brief FCL's distance from the robot at \e pose to the nearest obstacle minus margin(): a lower
+            bound of the true distance, <= 0 at a contact. */
         double clearance(const Eigen::Isometry3d &pose) const;
         /** \brief What clearance() subtracts: 1e-6 (1 + the scene's largest coordinate), above FCL's
             rounding. */
         double margin() const { return margin_; }
-        /** \brief The farthest robot vertex from the robot's origin: the radius its rotation moves points on.
-         */
+        /** \brief The farthest robot vertex from the robot's origin: the radius its rotation moves points on
+            (0 for a sphere robot, which a rotation about its centre leaves in place). */
         double reach() const { return reach_; }
-        /** \brief The robot's shift (minus its vertex centroid) and the meshes as used. */
+        /** \brief The robot's shift (minus its vertex centroid) and the meshes as used (a scene's obstacles
+            and a sphere robot as drawn, for pictures and exports). */
         const Eigen::Vector3d &robotShift() const { return shift_; }
         const TriangleMesh &environmentMesh() const { return environment_; }
         const TriangleMesh &robotMesh() const { return robot_; }
-        const MeshShape &environmentShape() const { return *envShape_; }
-        const MeshShape &robotShape() const { return *robotShape_; }
+        /** \brief The triangles of the mesh obstacles and of the robot (0 for a sphere robot). */
+        std::size_t environmentTriangles() const;
+        std::size_t robotTriangles() const { return robotShape_->triangleCount(); }
+        const std::vector<SceneObstacle> &obstacles() const { return obstacles_; }
+        /** \brief The sphere robot's radius; negative for a mesh robot. */
+        double robotRadius() const { return radius_; }
 
       private:
-        bool planar_;
+        void finish();
+
+        RigidSpace space_;
+        std::vector<SceneObstacle> obstacles_;
         TriangleMesh environment_;
         TriangleMesh robot_;
-        Eigen::Vector3d shift_;
-        std::unique_ptr<MeshShape> envShape_;
+        Eigen::Vector3d shift_{Eigen::Vector3d::Zero()};
         std::unique_ptr<MeshShape> robotShape_;
+        double radius_{-1.0};
         double reach_{0.0};
         double margin_{0.0};
     };
+
+    /** \brief A box's 12 triangles (edge lengths \e size, centred on the origin) and a sphere's coarse
+        polyhedron (vertices on the sphere), for pictures. */
+    TriangleMesh boxTriangles(const Eigen::Vector3d &size, const Eigen::Isometry3d &pose);
+    TriangleMesh sphereTriangles(double radius, const Eigen::Vector3d &center);
 
     using MeshRigidModelPtr = std::shared_ptr<const MeshRigidModel>;
 
@@ -170,6 +213,11 @@ namespace mhplan
     /** \brief Write a pose into a state of the SE(2) (heading from the orientation about +z) or SE(3) space.
      */
     void setRigidState(ompl::base::State *state, const RigidPose &pose, bool planar);
+    /** \brief The same for \e space (R^3: the position only). */
+    void setRigidState(ompl::base::State *state, const RigidPose &pose, RigidSpace space);
+    /** \brief The robot's placement at \e pose in \e space (SE(2): at z = 0 turned about +z only; R^3: the
+        position only). */
+    Eigen::Isometry3d rigidPlacement(const RigidPose &pose, RigidSpace space);
 
     /** \brief Independent dense check of a path (docs/meshes.md): every motion followed as the space
         interpolates it at poses no robot point moves more than \e step between, each tested by FCL's

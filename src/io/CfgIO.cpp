@@ -3,6 +3,8 @@
 
 #include "src/base/World.h"
 #include "src/io/InputFile.h"
+#include "src/io/World3dIO.h"
+#include "src/io/YamlReader.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -404,8 +406,35 @@ namespace mhplan
         return p;
     }
 
-    CfgProblem loadCfg(const std::string &path)
+    RigidSpace CfgProblem::space() const
     {
+        if (world3d)
+            return world3d->space;
+        return se3 ? RigidSpace::SE3 : RigidSpace::SE2;
+    }
+
+    std::string CfgProblem::spaceName() const
+    {
+        return car.empty() ? toString(space()) : car;
+    }
+
+    std::string CfgProblem::spaceLabel() const
+    {
+        const RigidSpace s = space();
+        if (s != RigidSpace::SE2)
+            return s == RigidSpace::SE3 ? "SE(3)" : "R^3";
+        return car == "dubins" ? "Dubins" : car == "reeds_shepp" ? "Reeds-Shepp" : "SE(2)";
+    }
+
+    CfgProblem loadCfg(const std::string &path, const std::string &query)
+    {
+        if (isWorld3dFile(path))
+            return world3dProblem(std::make_shared<const World3d>(
+                                      parseWorld3d(readInputFile(path, kMaxYamlBytes, "world file"), path)),
+                                  query);
+        if (!query.empty())
+            throw InputError(path + ": a query ('" + query +
+                             "') applies to 3D YAML worlds only; a .cfg file has one start and goal");
         // Only a regular file, at most kMaxCfgBytes (a FIFO or /dev/zero is refused, never read).
         return parseCfg(readInputFile(path, kMaxCfgBytes, "problem file"), path);
     }
@@ -417,6 +446,8 @@ namespace mhplan
 
     LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits)
     {
+        if (cfg.world3d)
+            return loadWorld3dProblem(std::move(cfg), limits);
         LoadedCfgProblem out;
         out.cfg = std::move(cfg);
         const CfgProblem &c = out.cfg;
@@ -459,6 +490,12 @@ namespace mhplan
                         ": the environment is flat along an axis; give the volume (volume.min.*, "
                         "volume.max.*)");
         }
+        applyCfgSettings(c, s);
+        return out;
+    }
+
+    void applyCfgSettings(const CfgProblem &c, MeshProblemSpec &s)
+    {
         s.start = c.start;
         s.goal = c.goal;
         s.threshold = c.threshold;
@@ -470,6 +507,5 @@ namespace mhplan
         s.turningRadius = c.turningRadius;
         for (const auto &[key, value] : c.context)
             s.context[key] = value.value;
-        return out;
     }
 } // namespace mhplan

@@ -10,12 +10,15 @@
 
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace mhplan
 {
+    struct World3d;
+
     /** \brief A value of the file and the line it was on. */
     struct CfgValue
     {
@@ -43,8 +46,17 @@ namespace mhplan
         /** \brief Mesh paths, resolved against the file's folder. */
         std::string world;
         std::string robot;
-        /** \brief False: SE(2) (no z or axis keys); true: SE(3). */
+        /** \brief False: SE(2) (no z or axis keys); true: SE(3), or R^3 for a 3D YAML world. */
         bool se3{false};
+        /** \brief A 3D YAML world's problem (docs/worlds3d.md): its scene replaces world and robot; its space
+            may be R^3 (translation only). Null for a .cfg file. */
+        std::shared_ptr<const World3d> world3d;
+        /** \brief The state space: se2, se3 or r3. */
+        RigidSpace space() const;
+        /** \brief "se2", "se3", "r3", "dubins" or "reeds_shepp". */
+        std::string spaceName() const;
+        /** \brief "SE(2)", "SE(3)", "R^3", "Dubins" or "Reeds-Shepp". */
+        std::string spaceLabel() const;
         RigidPose start;
         RigidPose goal;
         /** \brief The volume when the file gives it; empty: inferred (loadCfgProblem). */
@@ -92,8 +104,10 @@ namespace mhplan
     /** \brief The largest .cfg file read: 4 MiB (OMPL.app's are a few hundred bytes). */
     constexpr std::size_t kMaxCfgBytes = std::size_t{4} << 20;
 
-    /** \brief Read and parse a .cfg file (a regular file of at most kMaxCfgBytes). */
-    CfgProblem loadCfg(const std::string &path);
+    /** \brief Read and parse a .cfg file (a regular file of at most kMaxCfgBytes), or a 3D YAML world
+        (isWorld3dFile, docs/worlds3d.md) as the problem of its query \e query (empty: the first; a query
+        given for a .cfg is refused). */
+    CfgProblem loadCfg(const std::string &path, const std::string &query = "");
 
     /** \brief The problem with its meshes read: the OMPL set-up's specification. The volume, when the file
         has none, is the environment's box (x, y and, for SE(3), z) grown to hold the start and goal
@@ -106,6 +120,10 @@ namespace mhplan
     LoadedCfgProblem loadCfgProblem(const std::string &path, const MeshLimits &limits = {});
     /** \brief The same for a problem already parsed (parseCfg). */
     LoadedCfgProblem loadCfgProblem(CfgProblem cfg, const MeshLimits &limits = {});
+
+    /** \brief Copy the problem's settings (start, goal, threshold, objective, motion validator, resolution,
+        car, context) into \e spec; the model and the volume are the caller's. */
+    void applyCfgSettings(const CfgProblem &cfg, MeshProblemSpec &spec);
 } // namespace mhplan
 
 #endif
