@@ -6,6 +6,7 @@
 #define MHPLAN_POPULATION_PLANNER_H
 
 #include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/GmsSettings.h"
 #include "ompl_planners/common/PlannerBase.h"
 #include "ompl_planners/common/PathEncoding.h"
 #include "ompl_planners/common/StateParametrisation.h"
@@ -179,36 +180,12 @@ namespace mhplan
         /** \brief Seed of this planner's RNG (SharedParameterRanges); a change starts the search afresh. */
         void setSeed(unsigned long seed) override;
 
-        /** \brief [GMS] node repair + line-segment repair on the operated individuals (a switch, off by
-         * default). */
-        void setGmsRepair(bool on);
-        bool getGmsRepair() const { return gmsRepair_; }
-        /** \brief [GMS] node repair, line-segment repair and node improvement on the initial population and
-            on every replacement individual (a switch, off by default; [GMS]'s placement). */
-        void setGmsInitial(bool on);
-        bool getGmsInitial() const { return gmsInitial_; }
-        /** \brief [GMS] revision (removal of repeated nodes and loops) (a switch, off by default). */
-        void setGmsRevise(bool on);
-        bool getGmsRevise() const { return gmsRevise_; }
-        /** \brief [GMS] simplification (a switch, off by default). */
-        void setGmsSimplify(bool on);
-        bool getGmsSimplify() const { return gmsSimplify_; }
-        /** \brief [GMS] node improvement (a switch, off by default). */
-        void setGmsImprove(bool on);
-        bool getGmsImprove() const { return gmsImprove_; }
-        /** \brief Which individuals the path operators act on: "best" (the iteration's best) or "all". */
-        void setGmsScope(const std::string &scope);
-        std::string getGmsScope() const { return gmsScopeAll_ ? "all" : "best"; }
-        /** \brief [GMS] replacement: fraction of the population (the worst) redrawn each iteration (0..1,
-            0 = off). */
-        void setGmsReplaceFraction(double f);
-        double getGmsReplaceFraction() const { return gmsReplaceFraction_; }
+        /** \brief The [GMS] operator switches (parameters gms_*, see the class doc); throws
+            std::invalid_argument naming the parameter when one is out of range (GmsSettings::check()). */
+        void setGmsSettings(const GmsSettings &settings);
+        const GmsSettings &gmsSettings() const { return gms_; }
         /** \brief True when any [GMS] operator switch is on. */
-        bool gmsOperatorsEnabled() const
-        {
-            return gmsInitial_ || gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ ||
-                   gmsReplaceFraction_ > 0.0;
-        }
+        bool gmsOperatorsEnabled() const { return gms_.enabled(); }
 
         /** \brief True when the space is a RealVectorStateSpace (the R^k encoding of docs/algorithms.md 1.1);
             false on the other supported spaces (docs/spaces.md). Valid after setup(). */
@@ -377,10 +354,7 @@ namespace mhplan
         std::vector<double> planarPath_;
         bool improved_{false};
 
-        bool gmsInitial_{false};
-        bool gmsRepair_{false}, gmsRevise_{false}, gmsSimplify_{false}, gmsImprove_{false};
-        bool gmsScopeAll_{false};
-        double gmsReplaceFraction_{0.0};
+        GmsSettings gms_;
         std::unique_ptr<PathOperators> gmsOps_;
         std::vector<Vec2> gmsPath_;
         std::vector<double> gmsCandidate_;
