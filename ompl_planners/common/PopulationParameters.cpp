@@ -4,6 +4,7 @@
 
 #include "src/base/Parameters.h"
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +48,7 @@ namespace mhplan
 
     void PopulationPlanner::declareParameters()
     {
+        const std::function<void()> changed = [this] { invalidate(); }; // a weight changes the fitness
         declareRanged<unsigned int>(params(), this, kIterations, &PopulationPlanner::setIterations,
                                     &PopulationPlanner::getIterations);
         declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
@@ -60,26 +62,26 @@ namespace mhplan
         declareChoice(params(), this, "fitness", &PopulationPlanner::setFitness,
                       &PopulationPlanner::getFitness, "auto,lrsma,gms",
                       "fitness function: [LRSMA] S, [GMS] f1/f2, or auto ([GMS] on grid worlds)");
-        declareRanged<double>(params(), this, kLengthWeight, &PopulationPlanner::setLengthWeight,
-                              &PopulationPlanner::getLengthWeight);
-        declareRanged<double>(params(), this, kPenaltyWeight, &PopulationPlanner::setPenaltyWeight,
-                              &PopulationPlanner::getPenaltyWeight);
-        declareRanged<double>(params(), this, kDistanceWeight, &PopulationPlanner::setDistanceWeight,
-                              &PopulationPlanner::getDistanceWeight);
-        declareRanged<double>(params(), this, kSafetyWeight, &PopulationPlanner::setSafetyWeight,
-                              &PopulationPlanner::getSafetyWeight);
-        declareRanged<double>(params(), this, kSmoothnessWeight, &PopulationPlanner::setSmoothnessWeight,
-                              &PopulationPlanner::getSmoothnessWeight);
-        declareRanged<double>(params(), this, kSafeDistance, &PopulationPlanner::setSafeDistance,
-                              &PopulationPlanner::getSafeDistance);
-        declareRanged<double>(params(), this, kInfeasibleLengthWeight,
-                              &PopulationPlanner::setInfeasibleLengthWeight,
-                              &PopulationPlanner::getInfeasibleLengthWeight);
-        declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
-                              &PopulationPlanner::getCrossingWeight);
-        declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
-                      &PopulationPlanner::getInfeasibleBase, "path,constant",
-                      "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
+        declareRangedField(params(), kLengthWeight, weights_.lengthWeight, changed);
+        declareRangedField(params(), kPenaltyWeight, weights_.penaltyWeight, changed);
+        declareRangedField(params(), kDistanceWeight, weights_.distanceWeight, changed);
+        declareRangedField(params(), kSafetyWeight, weights_.safetyWeight, changed);
+        declareRangedField(params(), kSmoothnessWeight, weights_.smoothnessWeight, changed);
+        declareRangedField(params(), kSafeDistance, weights_.safeDistance, changed);
+        declareRangedField(params(), kInfeasibleLengthWeight, weights_.infeasibleLengthWeight, changed);
+        declareRangedField(params(), kCrossingWeight, weights_.crossingWeight, changed);
+        declareChoiceWith(
+            params(), "infeasible_base",
+            [this](const std::string &base)
+            {
+                if (base != "path" && base != "constant")
+                    throw std::invalid_argument(
+                        "parameter 'infeasible_base' must be 'path' or 'constant'; got '" + base + "'");
+                weights_.infeasibleBaseIsPath = base == "path";
+                invalidate();
+            },
+            [this] { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }, "path,constant",
+            "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
@@ -133,71 +135,6 @@ namespace mhplan
         if (fitness != fitnessName_)
             invalidate();
         fitnessName_ = fitness;
-    }
-
-    void PopulationPlanner::setLengthWeight(double w)
-    {
-        checkParameter(kLengthWeight, w);
-        weights_.lengthWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setPenaltyWeight(double w)
-    {
-        checkParameter(kPenaltyWeight, w);
-        weights_.penaltyWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setDistanceWeight(double w)
-    {
-        checkParameter(kDistanceWeight, w);
-        weights_.distanceWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSafetyWeight(double w)
-    {
-        checkParameter(kSafetyWeight, w);
-        weights_.safetyWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSmoothnessWeight(double w)
-    {
-        checkParameter(kSmoothnessWeight, w);
-        weights_.smoothnessWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSafeDistance(double d)
-    {
-        checkParameter(kSafeDistance, d);
-        weights_.safeDistance = d;
-        invalidate();
-    }
-
-    void PopulationPlanner::setInfeasibleLengthWeight(double w)
-    {
-        checkParameter(kInfeasibleLengthWeight, w);
-        weights_.infeasibleLengthWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setInfeasibleBase(const std::string &base)
-    {
-        if (base != "path" && base != "constant")
-            throw std::invalid_argument("parameter 'infeasible_base' must be 'path' or 'constant'; got '" +
-                                        base + "'");
-        weights_.infeasibleBaseIsPath = base == "path";
-        invalidate(); // the fitness changes, as with every other weight
-    }
-
-    void PopulationPlanner::setCrossingWeight(double w)
-    {
-        checkParameter(kCrossingWeight, w);
-        weights_.crossingWeight = w;
-        invalidate();
     }
 
     void PopulationPlanner::setSeed(unsigned long seed)

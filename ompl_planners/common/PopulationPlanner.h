@@ -141,33 +141,10 @@ namespace mhplan
         /** \brief "auto", "lrsma" or "gms". */
         void setFitness(const std::string &fitness);
         std::string getFitness() const { return fitnessName_; }
-        /** \brief eta1 of [LRSMA] (0..1e6). */
-        void setLengthWeight(double w);
-        double getLengthWeight() const { return weights_.lengthWeight; }
-        /** \brief eta2 of [LRSMA] (0..1e9). */
-        void setPenaltyWeight(double w);
-        double getPenaltyWeight() const { return weights_.penaltyWeight; }
-        /** \brief w_d of [GMS] (0..1e6). */
-        void setDistanceWeight(double w);
-        double getDistanceWeight() const { return weights_.distanceWeight; }
-        /** \brief w_s of [GMS] (0..1e6). */
-        void setSafetyWeight(double w);
-        double getSafetyWeight() const { return weights_.safetyWeight; }
-        /** \brief w_sm of [GMS] (0..1e6). */
-        void setSmoothnessWeight(double w);
-        double getSmoothnessWeight() const { return weights_.smoothnessWeight; }
-        /** \brief d_safe of [GMS] (1e-6..1e6). */
-        void setSafeDistance(double d);
-        double getSafeDistance() const { return weights_.safeDistance; }
-        /** \brief w_l of [GMS] (0..1e6). */
-        void setInfeasibleLengthWeight(double w);
-        double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
-        /** \brief D of [GMS] f2: "path" (f1's denominator of the same path, the default) or "constant". */
-        void setInfeasibleBase(const std::string &base);
-        std::string getInfeasibleBase() const { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }
-        /** \brief w_c of [GMS] (0..1e6). */
-        void setCrossingWeight(double w);
-        double getCrossingWeight() const { return weights_.crossingWeight; }
+        /** \brief The fitness weights (parameters length_weight, penalty_weight, distance_weight,
+            safety_weight, smoothness_weight, safe_distance, infeasible_length_weight, crossing_weight,
+            infeasible_base; their ranges in PopulationParameters.cpp); a change starts the search afresh. */
+        const FitnessWeights &fitnessWeights() const { return weights_; }
         /** \brief Anytime restarts (0 = off, the default; the improved variants switch them on): without an
             iteration budget (max_iterations = 0), after this many iterations without an improvement of the
             best feasible cost the population is drawn afresh (the best path stays archived and reported) and

@@ -153,16 +153,26 @@ namespace mhplan
         params[name].setRangeSuggestion("0,1");
     }
 
-    /** \brief Declare the word-valued parameter \e name with the accepted words \e choices ("a,b,c"); the
-        setter refuses any other word. */
+    /** \brief Declare the word-valued parameter \e name with the accepted words \e choices ("a,b,c"), with
+        the callables \e set (taking a word; it refuses any other) and \e get (returning one). */
+    template <typename Set, typename Get>
+    void declareChoiceWith(ompl::base::ParamSet &params, const std::string &name, Set set, Get get,
+                           const std::string &choices, const std::string &description = "")
+    {
+        params.add(std::make_shared<DescribedParam<std::string>>(
+            name, [set](const std::string &v) { set(v); }, [get] { return std::string(get()); },
+            description));
+        params[name].setRangeSuggestion(choices);
+    }
+
+    /** \brief declareChoiceWith() with the member setter and getter of \e owner. */
     template <typename Owner, typename Setter, typename Getter>
     void declareChoice(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
                        Getter getter, const std::string &choices, const std::string &description = "")
     {
-        params.add(std::make_shared<DescribedParam<std::string>>(
-            name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
-            [owner, getter] { return (owner->*getter)(); }, description));
-        params[name].setRangeSuggestion(choices);
+        declareChoiceWith(
+            params, name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
+            [owner, getter] { return (owner->*getter)(); }, choices, description);
     }
 } // namespace mhplan
 
