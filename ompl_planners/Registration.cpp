@@ -39,10 +39,9 @@ namespace mhplan
                 if (polyline)
                     p->setDecoding("polyline");
                 p->setFitness("auto");
-                p->setGmsRepair(true);
-                p->setGmsSimplify(true);
-                p->setGmsImprove(true);
-                p->setGmsScope("all");
+                GmsSettings gms;
+                gms.repair = gms.simplify = gms.improve = gms.scopeAll = true;
+                p->setGmsSettings(gms);
                 p->setWaypoints(waypoints);
                 p->setStagnationRestart(kAnytimeRestart);
                 return p;
@@ -61,11 +60,10 @@ namespace mhplan
                 auto p = std::make_shared<P>(si, name);
                 p->setDecoding("polyline");
                 p->setFitness("gms");
-                p->setGmsInitial(true);
-                p->setGmsRevise(true);
-                p->setGmsSimplify(true);
-                p->setGmsScope("all");
-                p->setGmsReplaceFraction(0.1);
+                GmsSettings gms;
+                gms.initial = gms.revise = gms.simplify = gms.scopeAll = true;
+                gms.replaceFraction = 0.1;
+                p->setGmsSettings(gms);
                 return p;
             };
         }

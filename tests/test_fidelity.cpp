@@ -256,7 +256,7 @@ TEST(Fidelity, GmsInitialOperatesOnEveryIndividualOfTheInitialPopulation)
         const PlannerRun r = makeRun("bfo_case2", planner, {{"seed", "2"}, {"max_iterations", "2"}});
         solveUnbounded(r);
         const auto &pp = dynamic_cast<const PopulationPlanner &>(*r.planner);
-        EXPECT_TRUE(pp.getGmsInitial());
+        EXPECT_TRUE(pp.gmsSettings().initial);
         // 30 initial + 30 operated + per iteration: the update, 30 revised/simplified, 3 replaced + 3
         // operated.
         const unsigned long update = planner == "SMA-GMS" ? 30 : 120;

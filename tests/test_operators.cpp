@@ -152,9 +152,13 @@ TEST(GmsOperators, SwitchesDefaultOffAndAreValidated)
             EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
         }
     };
-    expectMessage([&] { sma.setGmsReplaceFraction(-0.1); }, "'gms_replace_fraction' must be in [0, 1]");
-    expectMessage([&] { sma.setGmsReplaceFraction(1.01); }, "'gms_replace_fraction'");
-    expectMessage([&] { sma.setGmsScope("worst"); }, "'gms_scope' must be 'best' or 'all'; got 'worst'");
+    GmsSettings gms;
+    for (const double f : {-0.1, 1.01})
+    {
+        gms.replaceFraction = f;
+        expectMessage([&] { sma.setGmsSettings(gms); }, "'gms_replace_fraction' must be in [0, 1]");
+    }
+    expectMessage([&] { gms.setScope("worst"); }, "'gms_scope' must be 'best' or 'all'; got 'worst'");
     EXPECT_FALSE(sma.gmsOperatorsEnabled());
 }
 
@@ -218,7 +222,7 @@ TEST(GmsOperators, RefusedInKDAndByAlgorithmsWithoutAPopulationView)
     {
         SlimeMould sma(si);
         if (std::string(s) == "gms_replace_fraction")
-            sma.setGmsReplaceFraction(0.1);
+            ASSERT_TRUE(sma.params().setParam(s, "0.1"));
         else
             ASSERT_TRUE(sma.params().setParam(s, "1"));
         try
@@ -235,8 +239,8 @@ TEST(GmsOperators, RefusedInKDAndByAlgorithmsWithoutAPopulationView)
     }
     // Off again: accepted.
     SlimeMould sma(si);
-    sma.setGmsRepair(true);
-    sma.setGmsRepair(false);
+    ASSERT_TRUE(sma.params().setParam("gms_repair", "1"));
+    ASSERT_TRUE(sma.params().setParam("gms_repair", "0"));
     EXPECT_NO_THROW(sma.setup());
     // The GA (its own operators) exposes no waypoint population.
     const ob::PlannerPtr ga = builtinPlanners().create("GA", planarSpace());
@@ -391,8 +395,8 @@ TEST(GmsOperators, OperatorStepAllocatesNothingOnceWarm)
         {
             for (const char *s : kSwitches)
                 ASSERT_TRUE(sma->params().setParam(s, "1"));
-            sma->setGmsScope("all");
-            sma->setGmsReplaceFraction(0.2);
+            ASSERT_TRUE(sma->params().setParam("gms_scope", "all"));
+            ASSERT_TRUE(sma->params().setParam("gms_replace_fraction", "0.2"));
         }
         ss.setPlanner(sma);
         for (int warm = 0; warm < 3; ++warm)

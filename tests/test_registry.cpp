@@ -166,6 +166,35 @@ TEST(Parameters, RangeWrittenOnceAndNumbersPrintedExactly)
     EXPECT_THROW(parseParameter(weight, ""), std::invalid_argument);
 }
 
+TEST(Parameters, DeclaredOntoAFieldCheckStoreThenTellTheOwner)
+{
+    // declareRangedField / declareSwitchField: the range check, the store, then the owner's callback; a
+    // refused value leaves the field and calls nothing.
+    ompl::base::ParamSet params;
+    double weight = 1.0;
+    unsigned int steps = 5;
+    bool on = false;
+    int changes = 0;
+    declareRangedField(params, ParamRange{"weight", 0, 0.1, 10, "w"}, weight, [&] { ++changes; });
+    declareRangedField(params, ParamRange{"steps", 1, 1, 100}, steps);
+    declareSwitchField(params, "on", on, "a switch", [&] { ++changes; });
+    EXPECT_EQ(params["weight"].getRangeSuggestion(), "0:0.1:10");
+    EXPECT_EQ(params["on"].getRangeSuggestion(), "0,1");
+    EXPECT_EQ(parameterDescription(params["on"]), "a switch");
+    EXPECT_TRUE(params.setParam("weight", "0.3"));
+    EXPECT_EQ(weight, 0.3);
+    EXPECT_EQ(params["weight"].getValue(), "0.3");
+    EXPECT_FALSE(params.setParam("weight", "11"));
+    EXPECT_FALSE(params.setParam("steps", "0"));
+    EXPECT_EQ(weight, 0.3);
+    EXPECT_EQ(steps, 5u);
+    EXPECT_TRUE(params.setParam("steps", "100"));
+    EXPECT_EQ(steps, 100u);
+    EXPECT_TRUE(params.setParam("on", "1"));
+    EXPECT_TRUE(on);
+    EXPECT_EQ(changes, 2);
+}
+
 TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);

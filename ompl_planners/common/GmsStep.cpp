@@ -33,7 +33,7 @@ namespace mhplan
     bool PopulationPlanner::applyGmsInitial()
     {
         double *x = nullptr, *f = nullptr;
-        if (!gmsInitial_ || !realVector_ || spaceDim_ != 2 || !populationView(x, f))
+        if (!gms_.initial || !realVector_ || spaceDim_ != 2 || !populationView(x, f))
             return true;
         prepareGmsOps();
         const unsigned int d = dimension();
@@ -50,18 +50,17 @@ namespace mhplan
         if (!realVector_ || spaceDim_ != 2 || !populationView(x, f))
             return true; // setup() refuses this; never reached with the switches on
         const unsigned int n = populationSize_, d = dimension();
-        const bool pathOps = gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_;
         prepareGmsOps();
         unsigned int best = 0;
         for (unsigned int i = 1; i < n; ++i)
             if (f[i] < f[best])
                 best = i;
         bool completed = true;
-        if (pathOps)
+        if (gms_.pathOperators())
             for (unsigned int i = 0; i < n && completed; ++i)
-                if (gmsScopeAll_ || i == best)
+                if (gms_.scopeAll || i == best)
                     completed = operateOn(x + std::size_t(i) * d, f[i]);
-        if (completed && gmsReplaceFraction_ > 0.0)
+        if (completed && gms_.replaceFraction > 0.0)
         {
             // Rank again (the operators may have changed fitness values), worst first.
             for (unsigned int i = 1; i < n; ++i)
@@ -74,7 +73,7 @@ namespace mhplan
             std::sort(gmsOrder_.begin(), gmsOrder_.end(),
                       [f](unsigned int a, unsigned int b) { return f[a] > f[b] || (f[a] == f[b] && a < b); });
             const auto count = std::min<unsigned int>(
-                n - 1, static_cast<unsigned int>(std::ceil(gmsReplaceFraction_ * n - 1e-9)));
+                n - 1, static_cast<unsigned int>(std::ceil(gms_.replaceFraction * n - 1e-9)));
             for (unsigned int k = 0, done = 0; k < n && done < count; ++k)
             {
                 const unsigned int i = gmsOrder_[k];
@@ -87,7 +86,7 @@ namespace mhplan
                 }
                 double *xi = x + std::size_t(i) * d;
                 randomPosition(xi);
-                if (gmsRepair_)
+                if (gms_.repair)
                     for (unsigned int w = 0; w < waypoints_; ++w)
                     {
                         Vec2 p(xi[2 * w], xi[2 * w + 1]);
@@ -99,7 +98,7 @@ namespace mhplan
                 f[i] = evaluate(xi);
                 ++done;
                 // gms_initial: a new individual gets the initial population's operators too.
-                if (gmsInitial_ && !operateOn(xi, f[i], true))
+                if (gms_.initial && !operateOn(xi, f[i], true))
                 {
                     completed = false;
                     break;
@@ -119,16 +118,16 @@ namespace mhplan
             gmsPath_.emplace_back(path[i][0], path[i][1]);
         // The initial step: [GMS]'s node repair, line-segment repair, node improvement; every iteration: the
         // switched-on operators in the GA's order.
-        if (initial || gmsRepair_)
+        if (initial || gms_.repair)
         {
             gmsOps_->repairNodes(gmsPath_);
             gmsOps_->repairSegments(gmsPath_);
         }
-        if (!initial && gmsRevise_)
+        if (!initial && gms_.revise)
             gmsOps_->revise(gmsPath_);
-        if (!initial && gmsSimplify_)
+        if (!initial && gms_.simplify)
             gmsOps_->simplify(gmsPath_);
-        if (initial || gmsImprove_)
+        if (initial || gms_.improve)
             gmsOps_->improveNodes(gmsPath_);
         encodePath();
         clampToBounds(gmsCandidate_.data());

@@ -4,6 +4,7 @@
 
 #include "src/base/Parameters.h"
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -43,13 +44,11 @@ namespace mhplan
         constexpr ParamRange kStagnationRestart{
             "stagnation_restart", 0, 1, 1000000,
             "restart the population after this many iterations without improvement (0 = off)"};
-        constexpr ParamRange kGmsReplaceFraction{
-            "gms_replace_fraction", 0, 0.05, 1,
-            "[GMS] replacement: share of the worst individuals redrawn each iteration (0 = off)"};
     } // namespace
 
     void PopulationPlanner::declareParameters()
     {
+        const std::function<void()> changed = [this] { invalidate(); }; // a weight changes the fitness
         declareRanged<unsigned int>(params(), this, kIterations, &PopulationPlanner::setIterations,
                                     &PopulationPlanner::getIterations);
         declareRanged<unsigned int>(params(), this, kWaypoints, &PopulationPlanner::setWaypoints,
@@ -63,48 +62,30 @@ namespace mhplan
         declareChoice(params(), this, "fitness", &PopulationPlanner::setFitness,
                       &PopulationPlanner::getFitness, "auto,lrsma,gms",
                       "fitness function: [LRSMA] S, [GMS] f1/f2, or auto ([GMS] on grid worlds)");
-        declareRanged<double>(params(), this, kLengthWeight, &PopulationPlanner::setLengthWeight,
-                              &PopulationPlanner::getLengthWeight);
-        declareRanged<double>(params(), this, kPenaltyWeight, &PopulationPlanner::setPenaltyWeight,
-                              &PopulationPlanner::getPenaltyWeight);
-        declareRanged<double>(params(), this, kDistanceWeight, &PopulationPlanner::setDistanceWeight,
-                              &PopulationPlanner::getDistanceWeight);
-        declareRanged<double>(params(), this, kSafetyWeight, &PopulationPlanner::setSafetyWeight,
-                              &PopulationPlanner::getSafetyWeight);
-        declareRanged<double>(params(), this, kSmoothnessWeight, &PopulationPlanner::setSmoothnessWeight,
-                              &PopulationPlanner::getSmoothnessWeight);
-        declareRanged<double>(params(), this, kSafeDistance, &PopulationPlanner::setSafeDistance,
-                              &PopulationPlanner::getSafeDistance);
-        declareRanged<double>(params(), this, kInfeasibleLengthWeight,
-                              &PopulationPlanner::setInfeasibleLengthWeight,
-                              &PopulationPlanner::getInfeasibleLengthWeight);
-        declareRanged<double>(params(), this, kCrossingWeight, &PopulationPlanner::setCrossingWeight,
-                              &PopulationPlanner::getCrossingWeight);
-        declareChoice(params(), this, "infeasible_base", &PopulationPlanner::setInfeasibleBase,
-                      &PopulationPlanner::getInfeasibleBase, "path,constant",
-                      "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
+        declareRangedField(params(), kLengthWeight, weights_.lengthWeight, changed);
+        declareRangedField(params(), kPenaltyWeight, weights_.penaltyWeight, changed);
+        declareRangedField(params(), kDistanceWeight, weights_.distanceWeight, changed);
+        declareRangedField(params(), kSafetyWeight, weights_.safetyWeight, changed);
+        declareRangedField(params(), kSmoothnessWeight, weights_.smoothnessWeight, changed);
+        declareRangedField(params(), kSafeDistance, weights_.safeDistance, changed);
+        declareRangedField(params(), kInfeasibleLengthWeight, weights_.infeasibleLengthWeight, changed);
+        declareRangedField(params(), kCrossingWeight, weights_.crossingWeight, changed);
+        declareChoiceWith(
+            params(), "infeasible_base",
+            [this](const std::string &base)
+            {
+                if (base != "path" && base != "constant")
+                    throw std::invalid_argument(
+                        "parameter 'infeasible_base' must be 'path' or 'constant'; got '" + base + "'");
+                weights_.infeasibleBaseIsPath = base == "path";
+                invalidate();
+            },
+            [this] { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }, "path,constant",
+            "[GMS] f2's D for infeasible paths: the path's own f1 denominator, or a constant");
         declareRanged<unsigned int>(params(), this, kStagnationRestart,
                                     &PopulationPlanner::setStagnationRestart,
                                     &PopulationPlanner::getStagnationRestart);
-        declareSwitch(params(), this, "gms_initial", &PopulationPlanner::setGmsInitial,
-                      &PopulationPlanner::getGmsInitial,
-                      "[GMS] repair and node improvement of the initial population and of new individuals");
-        declareSwitch(params(), this, "gms_repair", &PopulationPlanner::setGmsRepair,
-                      &PopulationPlanner::getGmsRepair,
-                      "[GMS] node and line-segment repair after every iteration");
-        declareSwitch(params(), this, "gms_revise", &PopulationPlanner::setGmsRevise,
-                      &PopulationPlanner::getGmsRevise,
-                      "[GMS] revision (remove repeated nodes and loops) after every iteration");
-        declareSwitch(params(), this, "gms_simplify", &PopulationPlanner::setGmsSimplify,
-                      &PopulationPlanner::getGmsSimplify,
-                      "[GMS] simplification (drop waypoints that a straight segment can skip)");
-        declareSwitch(params(), this, "gms_improve", &PopulationPlanner::setGmsImprove,
-                      &PopulationPlanner::getGmsImprove, "[GMS] node improvement after every iteration");
-        declareChoice(params(), this, "gms_scope", &PopulationPlanner::setGmsScope,
-                      &PopulationPlanner::getGmsScope, "best,all",
-                      "individuals the [GMS] operators act on: the iteration's best or all");
-        declareRanged<double>(params(), this, kGmsReplaceFraction, &PopulationPlanner::setGmsReplaceFraction,
-                              &PopulationPlanner::getGmsReplaceFraction);
+        declareGmsParameters(params(), gms_, [this] { setup_ = false; }); // setup() checks the switches
     }
 
     void PopulationPlanner::setPopulationSize(unsigned int n)
@@ -156,71 +137,6 @@ namespace mhplan
         fitnessName_ = fitness;
     }
 
-    void PopulationPlanner::setLengthWeight(double w)
-    {
-        checkParameter(kLengthWeight, w);
-        weights_.lengthWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setPenaltyWeight(double w)
-    {
-        checkParameter(kPenaltyWeight, w);
-        weights_.penaltyWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setDistanceWeight(double w)
-    {
-        checkParameter(kDistanceWeight, w);
-        weights_.distanceWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSafetyWeight(double w)
-    {
-        checkParameter(kSafetyWeight, w);
-        weights_.safetyWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSmoothnessWeight(double w)
-    {
-        checkParameter(kSmoothnessWeight, w);
-        weights_.smoothnessWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setSafeDistance(double d)
-    {
-        checkParameter(kSafeDistance, d);
-        weights_.safeDistance = d;
-        invalidate();
-    }
-
-    void PopulationPlanner::setInfeasibleLengthWeight(double w)
-    {
-        checkParameter(kInfeasibleLengthWeight, w);
-        weights_.infeasibleLengthWeight = w;
-        invalidate();
-    }
-
-    void PopulationPlanner::setInfeasibleBase(const std::string &base)
-    {
-        if (base != "path" && base != "constant")
-            throw std::invalid_argument("parameter 'infeasible_base' must be 'path' or 'constant'; got '" +
-                                        base + "'");
-        weights_.infeasibleBaseIsPath = base == "path";
-        invalidate(); // the fitness changes, as with every other weight
-    }
-
-    void PopulationPlanner::setCrossingWeight(double w)
-    {
-        checkParameter(kCrossingWeight, w);
-        weights_.crossingWeight = w;
-        invalidate();
-    }
-
     void PopulationPlanner::setSeed(unsigned long seed)
     {
         PlannerBase::setSeed(seed); // checks the range
@@ -233,79 +149,19 @@ namespace mhplan
         stagnationRestart_ = n;
     }
 
-    void PopulationPlanner::setGmsInitial(bool on)
+    void PopulationPlanner::setGmsSettings(const GmsSettings &settings)
     {
-        gmsInitial_ = on;
-        setup_ = false;
-    }
-
-    void PopulationPlanner::setGmsRepair(bool on)
-    {
-        gmsRepair_ = on;
-        setup_ = false; // setup() checks the switches against the problem
-    }
-
-    void PopulationPlanner::setGmsRevise(bool on)
-    {
-        gmsRevise_ = on;
-        setup_ = false;
-    }
-
-    void PopulationPlanner::setGmsSimplify(bool on)
-    {
-        gmsSimplify_ = on;
-        setup_ = false;
-    }
-
-    void PopulationPlanner::setGmsImprove(bool on)
-    {
-        gmsImprove_ = on;
-        setup_ = false;
-    }
-
-    void PopulationPlanner::setGmsScope(const std::string &scope)
-    {
-        if (scope != "best" && scope != "all")
-            throw std::invalid_argument("parameter 'gms_scope' must be 'best' or 'all'; got '" + scope + "'");
-        gmsScopeAll_ = scope == "all";
-    }
-
-    void PopulationPlanner::setGmsReplaceFraction(double f)
-    {
-        checkParameter(kGmsReplaceFraction, f);
-        gmsReplaceFraction_ = f;
+        settings.check();
+        gms_ = settings;
         setup_ = false;
     }
 
     void PopulationPlanner::checkGmsSwitches()
     {
-        if (!gmsOperatorsEnabled())
-            return;
-        std::string on;
-        for (const auto &s :
-             {std::make_pair("gms_initial", gmsInitial_), std::make_pair("gms_repair", gmsRepair_),
-              std::make_pair("gms_revise", gmsRevise_), std::make_pair("gms_simplify", gmsSimplify_),
-              std::make_pair("gms_improve", gmsImprove_),
-              std::make_pair("gms_replace_fraction", gmsReplaceFraction_ > 0.0)})
-            if (s.second)
-                on += (on.empty() ? "'" : ", '") + std::string(s.first) + "'";
-        if (!supportsGmsOperators())
-            refuseSetup(
-                "the [GMS] operator switches (" + on +
-                ") need an algorithm that exposes a waypoint population (SMA, LRSMA, MGO); this one does "
-                "not: switch them off");
-        if (!realVector_)
-            refuseSetup("the [GMS] operator switches (" + on +
-                        ") are planar (node/segment repair, simplification, improvement work on points of "
-                        "R^2); the state space '" +
-                        si_->getStateSpace()->getName() +
-                        "' is not a RealVectorStateSpace: switch them off (docs/spaces.md)");
-        if (spaceDim_ != 2)
-            refuseSetup(
-                "the [GMS] operator switches (" + on +
-                ") are planar (node/segment repair, simplification, improvement work on 2D points); the "
-                "space has dimension " +
-                std::to_string(spaceDim_) + ": switch them off");
+        const std::string why = gms_.refusal(
+            supportsGmsOperators(), realVector_ ? std::string() : si_->getStateSpace()->getName(), spaceDim_);
+        if (!why.empty())
+            refuseSetup(why);
     }
 
 } // namespace mhplan

@@ -6,6 +6,7 @@
 #define MHPLAN_POPULATION_PLANNER_H
 
 #include "ompl_planners/common/Fitness.h"
+#include "ompl_planners/common/GmsSettings.h"
 #include "ompl_planners/common/PlannerBase.h"
 #include "ompl_planners/common/PathEncoding.h"
 #include "ompl_planners/common/StateParametrisation.h"
@@ -140,33 +141,10 @@ namespace mhplan
         /** \brief "auto", "lrsma" or "gms". */
         void setFitness(const std::string &fitness);
         std::string getFitness() const { return fitnessName_; }
-        /** \brief eta1 of [LRSMA] (0..1e6). */
-        void setLengthWeight(double w);
-        double getLengthWeight() const { return weights_.lengthWeight; }
-        /** \brief eta2 of [LRSMA] (0..1e9). */
-        void setPenaltyWeight(double w);
-        double getPenaltyWeight() const { return weights_.penaltyWeight; }
-        /** \brief w_d of [GMS] (0..1e6). */
-        void setDistanceWeight(double w);
-        double getDistanceWeight() const { return weights_.distanceWeight; }
-        /** \brief w_s of [GMS] (0..1e6). */
-        void setSafetyWeight(double w);
-        double getSafetyWeight() const { return weights_.safetyWeight; }
-        /** \brief w_sm of [GMS] (0..1e6). */
-        void setSmoothnessWeight(double w);
-        double getSmoothnessWeight() const { return weights_.smoothnessWeight; }
-        /** \brief d_safe of [GMS] (1e-6..1e6). */
-        void setSafeDistance(double d);
-        double getSafeDistance() const { return weights_.safeDistance; }
-        /** \brief w_l of [GMS] (0..1e6). */
-        void setInfeasibleLengthWeight(double w);
-        double getInfeasibleLengthWeight() const { return weights_.infeasibleLengthWeight; }
-        /** \brief D of [GMS] f2: "path" (f1's denominator of the same path, the default) or "constant". */
-        void setInfeasibleBase(const std::string &base);
-        std::string getInfeasibleBase() const { return weights_.infeasibleBaseIsPath ? "path" : "constant"; }
-        /** \brief w_c of [GMS] (0..1e6). */
-        void setCrossingWeight(double w);
-        double getCrossingWeight() const { return weights_.crossingWeight; }
+        /** \brief The fitness weights (parameters length_weight, penalty_weight, distance_weight,
+            safety_weight, smoothness_weight, safe_distance, infeasible_length_weight, crossing_weight,
+            infeasible_base; their ranges in PopulationParameters.cpp); a change starts the search afresh. */
+        const FitnessWeights &fitnessWeights() const { return weights_; }
         /** \brief Anytime restarts (0 = off, the default; the improved variants switch them on): without an
             iteration budget (max_iterations = 0), after this many iterations without an improvement of the
             best feasible cost the population is drawn afresh (the best path stays archived and reported) and
@@ -179,36 +157,12 @@ namespace mhplan
         /** \brief Seed of this planner's RNG (SharedParameterRanges); a change starts the search afresh. */
         void setSeed(unsigned long seed) override;
 
-        /** \brief [GMS] node repair + line-segment repair on the operated individuals (a switch, off by
-         * default). */
-        void setGmsRepair(bool on);
-        bool getGmsRepair() const { return gmsRepair_; }
-        /** \brief [GMS] node repair, line-segment repair and node improvement on the initial population and
-            on every replacement individual (a switch, off by default; [GMS]'s placement). */
-        void setGmsInitial(bool on);
-        bool getGmsInitial() const { return gmsInitial_; }
-        /** \brief [GMS] revision (removal of repeated nodes and loops) (a switch, off by default). */
-        void setGmsRevise(bool on);
-        bool getGmsRevise() const { return gmsRevise_; }
-        /** \brief [GMS] simplification (a switch, off by default). */
-        void setGmsSimplify(bool on);
-        bool getGmsSimplify() const { return gmsSimplify_; }
-        /** \brief [GMS] node improvement (a switch, off by default). */
-        void setGmsImprove(bool on);
-        bool getGmsImprove() const { return gmsImprove_; }
-        /** \brief Which individuals the path operators act on: "best" (the iteration's best) or "all". */
-        void setGmsScope(const std::string &scope);
-        std::string getGmsScope() const { return gmsScopeAll_ ? "all" : "best"; }
-        /** \brief [GMS] replacement: fraction of the population (the worst) redrawn each iteration (0..1,
-            0 = off). */
-        void setGmsReplaceFraction(double f);
-        double getGmsReplaceFraction() const { return gmsReplaceFraction_; }
+        /** \brief The [GMS] operator switches (parameters gms_*, see the class doc); throws
+            std::invalid_argument naming the parameter when one is out of range (GmsSettings::check()). */
+        void setGmsSettings(const GmsSettings &settings);
+        const GmsSettings &gmsSettings() const { return gms_; }
         /** \brief True when any [GMS] operator switch is on. */
-        bool gmsOperatorsEnabled() const
-        {
-            return gmsInitial_ || gmsRepair_ || gmsRevise_ || gmsSimplify_ || gmsImprove_ ||
-                   gmsReplaceFraction_ > 0.0;
-        }
+        bool gmsOperatorsEnabled() const { return gms_.enabled(); }
 
         /** \brief True when the space is a RealVectorStateSpace (the R^k encoding of docs/algorithms.md 1.1);
             false on the other supported spaces (docs/spaces.md). Valid after setup(). */
@@ -377,10 +331,7 @@ namespace mhplan
         std::vector<double> planarPath_;
         bool improved_{false};
 
-        bool gmsInitial_{false};
-        bool gmsRepair_{false}, gmsRevise_{false}, gmsSimplify_{false}, gmsImprove_{false};
-        bool gmsScopeAll_{false};
-        double gmsReplaceFraction_{0.0};
+        GmsSettings gms_;
         std::unique_ptr<PathOperators> gmsOps_;
         std::vector<Vec2> gmsPath_;
         std::vector<double> gmsCandidate_;

@@ -33,10 +33,10 @@ namespace mhplan
                               &F::setWalkStep, &F::getWalkStep);
         ParamRange range = kGoalTolerance;
         range.description = names.goalToleranceDescription;
-        declareRanged<double>(params(), this, range, &F::setGoalTolerance, &F::getGoalTolerance);
+        declareRangedField(params(), range, goalTolerance_);
         range = kMaxSteps;
         range.description = names.maxStepsDescription;
-        declareRanged<unsigned int>(params(), this, range, &F::setMaxSteps, &F::getMaxSteps);
+        declareRangedField(params(), range, maxSteps_);
         declareMaxIterations(names.maxIterationsDescription);
         declareProgress(true);
     }
@@ -45,18 +45,6 @@ namespace mhplan
     {
         checkParameterRange(stepName_, v, kStepLow, kStepHigh);
         walkStep_ = v;
-    }
-
-    void FieldWalkPlanner::setGoalTolerance(double v)
-    {
-        checkParameter(kGoalTolerance, v);
-        goalTolerance_ = v;
-    }
-
-    void FieldWalkPlanner::setMaxSteps(unsigned int n)
-    {
-        checkParameter(kMaxSteps, n);
-        maxSteps_ = n;
     }
 
     void FieldWalkPlanner::setup()

@@ -32,11 +32,9 @@ namespace mhplan
         /** \brief lambda, the robot's step (1e-6..1e6). */
         void setWalkStep(double v);
         double getWalkStep() const { return walkStep_; }
-        /** \brief Goal tolerance of the walk, 0 = lambda (0..1e6). */
-        void setGoalTolerance(double v);
+        /** \brief Goal tolerance of the walk, 0 = lambda (parameter goal_tolerance, 0..1e6). */
         double getGoalTolerance() const { return goalTolerance_; }
-        /** \brief Step budget of a walk (1..10000000). */
-        void setMaxSteps(unsigned int n);
+        /** \brief Step budget of a walk (parameter max_steps, 1..10000000). */
         unsigned int getMaxSteps() const { return maxSteps_; }
 
         /** \brief The positions visited (start first). */

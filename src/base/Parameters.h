@@ -7,6 +7,7 @@
 
 #include <ompl/base/GenericParam.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -75,26 +76,52 @@ namespace mhplan
         range when \e text is not a number (the range itself is the setter's check). */
     double parseParameter(const ParamRange &range, const std::string &text);
 
-    /** \brief Declare the numeric parameter \e range on \e params, of type \e T, with the member setter and
-        getter of \e owner (the setter checks the value with checkParameter(range, value)). A floating-point
-        parameter is read and printed exactly (parseParameter, formatParameter), so that setParam followed by
-        getParam gives the same string. */
-    template <typename T, typename Owner, typename Setter, typename Getter>
-    void declareRanged(ompl::base::ParamSet &params, Owner *owner, const ParamRange &range, Setter setter,
-                       Getter getter)
+    /** \brief Declare the numeric parameter \e range on \e params, of type \e T, with the callables \e set
+        (taking a T) and \e get (returning one). A floating-point parameter is read and printed exactly
+        (parseParameter, formatParameter), so that setParam followed by getParam gives the same string. */
+    template <typename T, typename Set, typename Get>
+    void declareRangedWith(ompl::base::ParamSet &params, const ParamRange &range, Set set, Get get)
     {
         if constexpr (std::is_floating_point_v<T>)
             params.add(std::make_shared<DescribedParam<std::string>>(
                 range.name,
-                [owner, setter, range](const std::string &text)
-                { (owner->*setter)(static_cast<T>(parseParameter(range, text))); },
-                [owner, getter] { return formatParameter(static_cast<double>((owner->*getter)())); },
-                range.description));
+                [set, range](const std::string &text) { set(static_cast<T>(parseParameter(range, text))); },
+                [get] { return formatParameter(static_cast<double>(get())); }, range.description));
         else
             params.add(std::make_shared<DescribedParam<T>>(
-                range.name, [owner, setter](T v) { (owner->*setter)(v); },
-                [owner, getter] { return (owner->*getter)(); }, range.description));
+                range.name, [set](T v) { set(v); }, [get] { return static_cast<T>(get()); },
+                range.description));
         params[range.name].setRangeSuggestion(rangeSuggestion(range));
+    }
+
+    /** \brief Declare the numeric parameter \e range on \e params, of type \e T, with the member setter and
+        getter of \e owner (the setter checks the value with checkParameter(range, value)). */
+    template <typename T, typename Owner, typename Setter, typename Getter>
+    void declareRanged(ompl::base::ParamSet &params, Owner *owner, const ParamRange &range, Setter setter,
+                       Getter getter)
+    {
+        declareRangedWith<T>(
+            params, range, [owner, setter](T v) { (owner->*setter)(v); },
+            [owner, getter] { return (owner->*getter)(); });
+    }
+
+    /** \brief Declare the numeric parameter \e range on \e params straight onto the field \e field (which
+        must outlive \e params): setting it checks the value with checkParameter(range, value), stores it
+        and then calls \e changed (when given). */
+    template <typename T>
+    void declareRangedField(ompl::base::ParamSet &params, const ParamRange &range, T &field,
+                            std::function<void()> changed = {})
+    {
+        declareRangedWith<T>(
+            params, range,
+            [&field, range, changed](T v)
+            {
+                checkParameter(range, v);
+                field = v;
+                if (changed)
+                    changed();
+            },
+            [&field] { return field; });
     }
 
     /** \brief Declare the bool switch \e name ("0,1") on \e params with the member setter and getter of
@@ -109,16 +136,43 @@ namespace mhplan
         params[name].setRangeSuggestion("0,1");
     }
 
-    /** \brief Declare the word-valued parameter \e name with the accepted words \e choices ("a,b,c"); the
-        setter refuses any other word. */
+    /** \brief Declare the bool switch \e name ("0,1") on \e params straight onto the field \e field (which
+        must outlive \e params); setting it stores the value and then calls \e changed (when given). */
+    inline void declareSwitchField(ompl::base::ParamSet &params, const std::string &name, bool &field,
+                                   const std::string &description, std::function<void()> changed = {})
+    {
+        params.add(std::make_shared<DescribedParam<bool>>(
+            name,
+            [&field, changed](bool v)
+            {
+                field = v;
+                if (changed)
+                    changed();
+            },
+            [&field] { return field; }, description));
+        params[name].setRangeSuggestion("0,1");
+    }
+
+    /** \brief Declare the word-valued parameter \e name with the accepted words \e choices ("a,b,c"), with
+        the callables \e set (taking a word; it refuses any other) and \e get (returning one). */
+    template <typename Set, typename Get>
+    void declareChoiceWith(ompl::base::ParamSet &params, const std::string &name, Set set, Get get,
+                           const std::string &choices, const std::string &description = "")
+    {
+        params.add(std::make_shared<DescribedParam<std::string>>(
+            name, [set](const std::string &v) { set(v); }, [get] { return std::string(get()); },
+            description));
+        params[name].setRangeSuggestion(choices);
+    }
+
+    /** \brief declareChoiceWith() with the member setter and getter of \e owner. */
     template <typename Owner, typename Setter, typename Getter>
     void declareChoice(ompl::base::ParamSet &params, Owner *owner, const std::string &name, Setter setter,
                        Getter getter, const std::string &choices, const std::string &description = "")
     {
-        params.add(std::make_shared<DescribedParam<std::string>>(
-            name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
-            [owner, getter] { return (owner->*getter)(); }, description));
-        params[name].setRangeSuggestion(choices);
+        declareChoiceWith(
+            params, name, [owner, setter](const std::string &v) { (owner->*setter)(v); },
+            [owner, getter] { return (owner->*getter)(); }, choices, description);
     }
 } // namespace mhplan
 
