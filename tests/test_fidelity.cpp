@@ -312,7 +312,13 @@ TEST(Fidelity, DefaultCampaignRunsThePapersPlannersAndRunCounts)
     // All five rows of [LRSMA] Table 3 (GWO, WOA, PSO, SMA, LRSMA) and MGO.
     for (const char *name : {"SMA", "LRSMA", "MGO", "GWO", "WOA", "PSO"})
         EXPECT_EQ(runs[name], 100u) << name << ": [LRSMA] Table 3 has 100 runs per algorithm";
-    EXPECT_EQ(runs["RRTstar"], c.runs);
+    // The memetic planners beside OMPL's anytime baselines (issue 31), each with enough runs for a median and
+    // its 95 % interval (benchmarks/seeds.yaml: 8 runs of each memetic planner paid for by 12 of each
+    // baseline).
+    for (const char *name : {"GA-MEM", "SMA-MEM", "LRSMA-MEM", "MGO-MEM"})
+        EXPECT_GE(runs[name], 8u) << name;
+    for (const char *name : {"RRTstar", "InformedRRTstar", "BITstar"})
+        EXPECT_GE(runs[name], 12u) << name;
     // A planner's runs must be a positive integer; the message names the field.
     try
     {

@@ -2,6 +2,7 @@
 /* The planner registry: every entry allocates, its parameters round-trip, bad names and values are refused,
    and every registered planner solves a seed world through the shared exact validity checking. */
 #include "src/base/Parameters.h"
+#include "src/collision/ContactRule.h"
 #include "src/collision/Problem.h"
 #include "src/registry/Registry.h"
 #include "src/io/WorldIO.h"
@@ -231,11 +232,13 @@ TEST(Registry, EveryPlannerSolvesASeedWorldWithAValidPath)
         EXPECT_EQ(pts.front(), world.queries[0].start) << name;
         EXPECT_LT(distance(pts.back(), world.queries[0].goal), 1e-6) << name;
         // Independent of the planner's collision model: the world's circles themselves, checked by the
-        // exact segment-to-disc distance (bfo_case1 is a point robot among circles).
+        // exact segment-to-disc distance (bfo_case1 is a point robot among circles), touching allowed within
+        // the contact rule's segment tolerance e / 2 (docs/contact.md).
+        const double touch = contact::tolerance(world.bounds) / 2.0;
         for (std::size_t i = 1; i < pts.size(); ++i)
             for (const Circle &c : world.circles)
                 EXPECT_GE(pointSegmentDistance(c.center, pts[i - 1], pts[i]),
-                          c.radius + world.robotRadius - 1e-9)
+                          c.radius + world.robotRadius - touch)
                     << name << " segment " << i << " enters the circle at (" << c.center.x << ", "
                     << c.center.y << ")";
         EXPECT_GE(polylineLength(pts), 14.2734 - 1e-3) << name << " beats the exact optimum";
