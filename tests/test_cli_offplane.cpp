@@ -120,7 +120,7 @@ TEST(CliOffPlane, TheSmallThings)
     EXPECT_TRUE(contains(r.out, "usage: mhplan version")) << r.out;
     // --seed's help says what the seed reproduces.
     r = runCli("plan --help");
-    EXPECT_TRUE(contains(r.out, "reproduces a run bounded by")) << r.out;
+    EXPECT_TRUE(contains(r.out, "reproduces a run bounded")) << r.out;
     EXPECT_TRUE(contains(r.out, "a run bounded by time ends wherever the clock")) << r.out;
     // A polygon robot's radius is its reach, marked.
     r = runCli("worlds se2_narrow_passage");
