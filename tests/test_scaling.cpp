@@ -2,7 +2,8 @@
 /* The scaling suite's machinery: world families (disjoint obstacles at 20-35 % coverage in a square growing
    with the count, checked independently; deterministic per seed), random queries (valid, connected, at least
    the requested share of the diagonal apart), generated campaign worlds (refused with file:line and field
-   for bad entries; written once and reused), benchmarks/scaling.yaml parses, and the smoke campaign
+   for bad entries; written once and reused), benchmarks/scaling.yaml parses (and issue 31's targets campaigns
+   are a subset of it), and the smoke campaign
    (benchmarks/scaling_smoke.yaml) runs end to end into a database with optima and improvements. */
 #include "benchmarks/Campaign.h"
 #include "benchmarks/CampaignRunner.h"
@@ -14,11 +15,13 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 
 using namespace mhplan;
@@ -257,7 +260,65 @@ TEST(GeneratedWorlds, TheScalingSuiteParses)
         EXPECT_GE(w.generated.queries.minSeparation, 0.5);
     }
     EXPECT_DOUBLE_EQ(c.timeLimit, 5.0);
-    EXPECT_GE(c.planners.size(), 16u);
+    EXPECT_GE(c.planners.size(), 22u);
+    // Issue 31: the memetic planners beside OMPL's optimizing planners, ABIT* and AIT* included.
+    for (const char *name :
+         {"GA-MEM", "SMA-MEM", "LRSMA-MEM", "MGO-MEM", "InformedRRTstar", "BITstar", "ABITstar", "AITstar"})
+        EXPECT_TRUE(std::any_of(c.planners.begin(), c.planners.end(),
+                                [&](const PlannerSpec &p) { return p.displayName == name; }))
+            << name;
+}
+
+TEST(GeneratedWorlds, TheTargetsCampaignsAreASubsetOfTheSuite)
+{
+    // benchmarks/scaling_targets.yaml (1 s) and scaling_targets_5s.yaml (benchmarks/README.md, "Issue 31's
+    // targets"): every world is one of the suite's recipes with fewer queries (drawn in order, so the suite's
+    // first ones), both set-ups, every planner one of the suite's lines with the same settings.
+    const std::string dir = std::string(MHPLAN_SOURCE_DIR) + "/benchmarks/";
+    const Campaign suite = loadCampaign(dir + "scaling.yaml");
+    for (const auto &[file, limit, planners] :
+         {std::tuple<std::string, double, std::size_t>{"scaling_targets.yaml", 1.0, 8},
+          std::tuple<std::string, double, std::size_t>{"scaling_targets_5s.yaml", 5.0, 6}})
+    {
+        SCOPED_TRACE(file);
+        const Campaign c = loadCampaign(dir + file);
+        EXPECT_DOUBLE_EQ(c.timeLimit, limit);
+        EXPECT_EQ(c.seed, suite.seed);
+        ASSERT_EQ(c.setups.size(), 2u);
+        EXPECT_FALSE(c.setups[0].app());
+        EXPECT_TRUE(c.setups[1].app());
+        EXPECT_DOUBLE_EQ(c.setups[1].resolution, 0.002);
+        EXPECT_GE(c.worlds.size(), 7u);
+        for (const auto &w : c.worlds)
+        {
+            ASSERT_TRUE(w.generated.present);
+            EXPECT_TRUE(w.setups.empty());
+            // The same recipe (kind, sizes, seeds, query seed and separation) but for the query count.
+            const auto sameRecipe = [&](const WorldSpec &s)
+            {
+                GeneratedWorldSpec same = w.generated;
+                same.queries.count = s.generated.queries.count;
+                return s.generated.present && same.recipe() == s.generated.recipe();
+            };
+            const auto it = std::find_if(suite.worlds.begin(), suite.worlds.end(), sameRecipe);
+            ASSERT_NE(it, suite.worlds.end()) << w.generated.recipe();
+            EXPECT_LE(w.generated.queries.count, it->generated.queries.count);
+        }
+        ASSERT_EQ(c.planners.size(), planners);
+        unsigned memetic = 0;
+        for (const auto &p : c.planners)
+        {
+            const auto it =
+                std::find_if(suite.planners.begin(), suite.planners.end(),
+                             [&](const PlannerSpec &s) { return s.displayName == p.displayName; });
+            ASSERT_NE(it, suite.planners.end()) << p.displayName;
+            EXPECT_EQ(p.planner, it->planner);
+            EXPECT_EQ(p.params, it->params);
+            EXPECT_EQ(p.progress, it->progress);
+            memetic += p.displayName.size() > 4 && p.displayName.substr(p.displayName.size() - 4) == "-MEM";
+        }
+        EXPECT_GE(memetic, 2u);
+    }
 }
 
 TEST(GeneratedWorlds, SmokeCampaignRunsEndToEnd)

@@ -26,6 +26,18 @@ def _length(database, run):
     return None
 
 
+def gap(database, run, optimum):
+    """The run's optimality gap in percent (column optimality_gap, else from its path length and the optimum);
+    None when the run has no exact solution or nothing can tell."""
+    if run.outcome != "exact":
+        return None
+    g = dbmod.run_value(run, "optimality_gap")
+    if g is None and optimum:
+        length = _length(database, run)
+        g = None if length is None else 100.0 * (length - optimum) / optimum
+    return g
+
+
 def time_to(database, run, optimum, tol):
     """Seconds from the start of solve() until the run's solution first cost at most optimum * (1 + tol)
     (tol None: any exact solution); None when it never did (censored) or nothing can tell."""

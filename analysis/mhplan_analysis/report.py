@@ -31,6 +31,7 @@ SECTIONS = [
     "ranking",        # success bars, ranking per problem
     "comparisons",    # performance profiles
     "setups",         # validity set-ups (exact, app), dense-check failures, checks per improvement
+    "targets",        # issue 31's targets per set-up and planner (experiments with an exact optimum)
     "paper_tables",   # [LRSMA] Table 3, [BFO]
     "scaling",        # the scaling suite's families
     "movingai",       # MovingAI benchmark sets by bucket

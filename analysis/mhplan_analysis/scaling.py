@@ -66,12 +66,8 @@ def cell(database, exps, planner):
         rs = database.runs_of(exp.id, planner)
         runs += len(rs)
         for r in rs:
-            ok = r.outcome == "exact"
-            exact += 1 if ok else 0
-            g = dbmod.run_value(r, "optimality_gap") if ok else None
-            if ok and g is None and opt:
-                length = quality._length(database, r)
-                g = None if length is None else 100.0 * (length - opt) / opt
+            exact += 1 if r.outcome == "exact" else 0
+            g = quality.gap(database, r, opt)
             gaps.append(g if g is not None else math.inf)
         times += quality.censored_times(database, rs, opt, 0.01)
     if runs == 0:

@@ -22,6 +22,20 @@ def std(values):
     return float(np.std(v, ddof=1)) if len(v) >= 2 else None
 
 
+def percentile(values, q):
+    """The q-th percentile (0..100) of \\p values, linear between the order statistics (numpy's default);
+    +inf values (censored: unsolved runs) sort last, and a percentile that needs one is +inf. None without
+    values."""
+    v = sorted(x for x in values if x is not None)
+    if not v:
+        return None
+    pos = (len(v) - 1) * q / 100.0
+    lo, hi = int(math.floor(pos)), int(math.ceil(pos))
+    if hi == lo or math.isinf(v[hi]):
+        return v[hi]
+    return v[lo] + (v[hi] - v[lo]) * (pos - lo)
+
+
 def median_ci_indices(n, confidence=0.95):
     """Order-statistic indices (0-based, inclusive) of a distribution-free confidence interval for the
     median of n samples: the binomial(n, 1/2) quantiles (normal approximation, clamped)."""
