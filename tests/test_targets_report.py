@@ -98,7 +98,11 @@ class Targets(unittest.TestCase):
         self.assertEqual(exact["no memetic path fails the dense check"], ("GA-MEM 1", False))
         p90 = exact["best memetic's 90th-percentile gap at or below the best OMPL planner's"]
         self.assertEqual(p90, ("GA-MEM inf vs InformedRRTstar 0.370 %", False))
+        t1 = exact["best memetic's median time to within 1 % (all runs) at or below the best OMPL planner's"]
+        self.assertEqual(t1, ("GA-MEM inf vs InformedRRTstar 0.250 s", False))
         self.assertEqual(len(exact), 4)  # the reference lines are the app set-up's
+        self.assertIsNone(targets._at_most(INF, INF))  # neither got there: undecided, never "met"
+        self.assertTrue(targets._at_most(3.0, INF))
         app = {what: met for what, _, met in verdicts["app 0.002"]}
         self.assertEqual(len(app), 6)
         self.assertTrue(all(app.values()))

@@ -33,7 +33,7 @@ REFERENCE = "InformedRRTstar"  # the app set-up's reference for the first soluti
 
 HEAD = ["set-up", "planner", "exact / runs", "gap p50 [%]", "gap p75 [%]", "gap p90 [%]", "within 1 %",
         "their median t(1 %) [s]", "median t(1 %), all runs [s]", "median first solution [s]",
-        "dense-check failures"]
+        "paths failing the dense check"]
 
 
 def is_memetic(planner):
@@ -101,9 +101,9 @@ def _min(candidates, key):
 
 
 def verdicts(table):
-    """Per set-up: issue 31's targets as (set-up name, [(target, measured, met)]). The best memetic planner is
-    the one with the lowest 90th-percentile gap (then median time to within 1 %), compared with the lowest of
-    OMPL's planners in each measure."""
+    """Per set-up: issue 31's targets as (set-up name, [(target, measured, met)]), met True, False or None
+    (undecided: both sides infinite). The best memetic planner is the one with the lowest 90th-percentile gap
+    (then 75th, 50th, median time to within 1 %), compared with the lowest of OMPL's planners in each measure."""
     out = []
     for label in dict.fromkeys(s for s, _, _ in table):
         mine = [(p, r) for s, p, r in table if s == label]
@@ -116,24 +116,33 @@ def verdicts(table):
             dense = ["%s %d" % (p, r["dense_failures"]) for p, r in memetic if r["dense_failures"]]
             lines.append(("no memetic path fails the dense check", "; ".join(dense) if dense else "none fails",
                           not dense))
-        best = min(memetic, key=lambda pr: (pr[1]["p90"], pr[1]["t1"]), default=None)
+        best = min(memetic, key=lambda pr: (pr[1]["p90"], pr[1]["p75"], pr[1]["p50"], pr[1]["t1"]), default=None)
         if best and ompl:
             for key, what in (("p90", "90th-percentile gap"), ("t1", "median time to within 1 % (all runs)")):
                 b = _min(ompl, key)
                 unit = " %" if key == "p90" else " s"
                 measured = "%s %s vs %s %s" % (best[0], _plain(best[1][key], unit), b[0], _plain(b[1][key], unit))
                 lines.append(("best memetic's %s at or below the best OMPL planner's" % what, measured,
-                              best[1][key] <= b[1][key]))
+                              _at_most(best[1][key], b[1][key])))
         reference = dict(ompl).get(REFERENCE)
         if best and reference and label != "exact":
             for key, what in (("first", "median first solution"), ("t1", "median time to within 1 % (all runs)")):
                 measured = "%s %s vs %s %s" % (best[0], _plain(best[1][key], " s"), REFERENCE,
                                                _plain(reference[key], " s"))
                 lines.append(("best memetic's %s no slower than %s's" % (what, REFERENCE), measured,
-                              best[1][key] <= reference[key]))
+                              _at_most(best[1][key], reference[key])))
         if lines:
             out.append((label, lines))
     return out
+
+
+def _at_most(a, b):
+    """a <= b; None (undecided) when both are infinite: neither got there in enough runs to tell."""
+    return None if math.isinf(a) and math.isinf(b) else a <= b
+
+
+def verdict(met):
+    return "undecided: both inf" if met is None else ("met" if met else "not met")
 
 
 def _plain(v, unit="", digits=3):
@@ -163,7 +172,7 @@ def markdown(database, exps=None):
     for label, checks in verdicts(table):
         lines.append("")
         lines.append("Targets, %s:" % label)
-        lines += ["- %s: %s (%s)" % (what, measured, "met" if met else "not met") for what, measured, met in checks]
+        lines += ["- %s: %s (%s)" % (what, measured, verdict(met)) for what, measured, met in checks]
     return "\n".join(lines) + "\n"
 
 
@@ -186,7 +195,7 @@ def render(data, ctx):
              page.table(HEAD, [[html.escape(c) for c in cells(s, p, r)] for s, p, r in table])]
     for label, checks in verdicts(table):
         parts.append("<p>Targets, %s:</p><ul>%s</ul>" % (html.escape(label), "".join(
-            "<li>%s: %s (<b>%s</b>)</li>" % (html.escape(w), html.escape(m), "met" if ok else "not met")
+            "<li>%s: %s (<b>%s</b>)</li>" % (html.escape(w), html.escape(m), verdict(ok))
             for w, m, ok in checks)))
     if data.database.improvements is None:
         ctx.notes.append("Targets: times come from progress samples (no improvements table).")
