@@ -21,6 +21,7 @@
 #include <cxxabi.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -449,4 +450,64 @@ TEST(Registry, SharedParametersHaveOneSetOfLimits)
     EXPECT_GE(declaring["seed"], 20);
     EXPECT_GE(declaring["max_iterations"], 22);
     EXPECT_GE(declaring["population_size"], 20);
+}
+
+// Every ranged parameter of every registered mhplan planner (pagmo's included) refuses the values just
+// outside its range in its own setter, with the one message of docs/conventions.md ("Parameters"): "parameter
+// 'name' must be in [lo, hi]; got value", lo and hi as its range suggestion prints them. The setter is
+// reached through the parameter itself (applyPlannerParameters checks the range before it). With
+// MHPLAN_REFUSALS=FILE every message is written to FILE (one line each: planner, parameter, message), to
+// compare two builds.
+TEST(Parameters, EverySetterRefusesOutsideItsRangeWithOneMessage)
+{
+    const auto si = unitSquare();
+    std::ostringstream all;
+    int refusals = 0;
+    for (const std::string &name : builtinPlanners().names())
+    {
+        if (builtinPlanners().get(name).origin == "ompl")
+            continue;
+        const ob::PlannerPtr planner = builtinPlanners().create(name, si);
+        std::vector<std::string> params;
+        planner->params().getParamNames(params);
+        for (const std::string &param : params)
+        {
+            ob::GenericParam &p = planner->params()[param];
+            const std::string range = p.getRangeSuggestion();
+            const auto first = range.find(':'), last = range.rfind(':');
+            if (dynamic_cast<const ParameterDescription *>(&p) == nullptr || first == std::string::npos ||
+                first == last)
+                continue;
+            const std::string loText = range.substr(0, first), hiText = range.substr(last + 1);
+            const double lo = std::stod(loText), hi = std::stod(hiText);
+            const bool real = dynamic_cast<const ob::SpecificParam<std::string> *>(&p) != nullptr;
+            std::vector<double> outside{hi + 1};
+            if (real || lo >= 1)
+                outside.push_back(lo - 1);
+            for (const double v : outside)
+            {
+                std::ostringstream text;
+                text << std::setprecision(real ? 17 : 12) << v;
+                std::ostringstream got;
+                got << std::setprecision(12) << v;
+                const std::string expected =
+                    "parameter '" + param + "' must be in [" + loText + ", " + hiText + "]; got " + got.str();
+                std::string msg = "(accepted)";
+                try
+                {
+                    p.setValue(text.str());
+                }
+                catch (const std::invalid_argument &e)
+                {
+                    msg = e.what();
+                }
+                EXPECT_EQ(msg, expected) << name << "." << param << " = " << text.str();
+                all << name << " " << param << " " << msg << "\n";
+                ++refusals;
+            }
+        }
+    }
+    EXPECT_GE(refusals, 300);
+    if (const char *file = std::getenv("MHPLAN_REFUSALS"))
+        std::ofstream(file) << all.str();
 }
