@@ -526,17 +526,22 @@ namespace mhplan
 
     namespace
     {
-        /** A grid file's world: \e parse reads the grid, the world is named after the file's stem. */
-        World gridFileWorld(const std::string &text, const std::string &path,
-                            OccupancyGrid (*parse)(std::istream &, const std::string &))
+        /** A grid file format, \e extension: \e parse reads the grid; the world is named after the file's
+            stem. */
+        WorldFormat gridFormat(const char *extension,
+                               OccupancyGrid (*parse)(std::istream &, const std::string &))
         {
-            std::string stem =
-                path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-            stem = stem.substr(0, stem.find_last_of('.'));
-            std::istringstream in(text);
-            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parse(in, path)));
-            w.file = path;
-            return w;
+            const auto read = [parse](const std::string &text, const std::string &path)
+            {
+                std::string stem =
+                    path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+                stem = stem.substr(0, stem.find_last_of('.'));
+                std::istringstream in(text);
+                World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parse(in, path)));
+                w.file = path;
+                return w;
+            };
+            return {{extension}, kMaxGridFileBytes, read, ""};
         }
 
         /** The built-in world formats: the registration list. One entry per format (docs/conventions.md). */
@@ -548,22 +553,10 @@ namespace mhplan
                  parseWorldYaml,
                  "YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
                      " bytes (4 MiB; large grids belong in .map or .pgm files)"},
-                {{"map"},
-                 kMaxGridFileBytes,
-                 [](const std::string &text, const std::string &path)
-                 {
-                     return gridFileWorld(text, path,
-                                          [](std::istream &in, const std::string &file)
-                                          { return parseMovingAIMap(in, file); });
-                 }},
-                {{"pgm"},
-                 kMaxGridFileBytes,
-                 [](const std::string &text, const std::string &path)
-                 {
-                     return gridFileWorld(text, path,
-                                          [](std::istream &in, const std::string &file)
-                                          { return parsePgm(in, file); });
-                 }},
+                gridFormat("map", [](std::istream &in, const std::string &file)
+                           { return parseMovingAIMap(in, file); }),
+                gridFormat("pgm",
+                           [](std::istream &in, const std::string &file) { return parsePgm(in, file); }),
             };
         }
 
