@@ -57,35 +57,6 @@ namespace mhplan::bench::detail
             return out;
         }
 
-        /** The path of an SE(2)-based world prepared for the metrics (docs/spaces.md, "Rigid-body and car
-            worlds"): the length in the space's metric, the independent dense check along the space's
-            interpolation, the FCL clearance; the shape metrics are taken on the waypoints (se2) or on the
-            driven curve sampled every eighth of the turning radius (cars). The stored path is what the robot
-            drives, with the robot's heading: the waypoints (se2) or the sampled curve (cars). */
-        MetricPath rigidRunPath(const ExperimentSetup &xs, const ob::SpaceInformation &si,
-                                const og::PathGeometric &path, bool exact, std::vector<Pose2> &poses)
-        {
-            const RigidBodyModel model(xs.world);
-            const RigidPathMetrics m = rigidPathMetrics(xs.world, si, path, model, xs.metricStep);
-            poses.clear();
-            if (xs.world.space == SpaceType::SE2)
-                for (std::size_t i = 0; i < path.getStateCount(); ++i)
-                    poses.push_back(statePose(path.getState(i)));
-            else
-            {
-                const double spacing = xs.world.turningRadius / 8.0;
-                const std::size_t every =
-                    std::max<std::size_t>(1, static_cast<std::size_t>(spacing / xs.metricStep));
-                for (std::size_t i = 0; i < m.poses.size(); i += every)
-                    poses.push_back(m.poses[i]);
-                poses.push_back(m.poses.back());
-            }
-            std::vector<Vec2> drawn;
-            for (const Pose2 &p : poses)
-                drawn.emplace_back(p.x, p.y);
-            return rigidMetricPath(xs.world, si, path, m, withoutDuplicates(drawn), exact, xs.optimum);
-        }
-
         /** Every registered metric (MetricList.h) as a run property. */
         void storeMetrics(const MetricPath &path, ot::Benchmark::RunProperties &run)
         {
@@ -291,7 +262,9 @@ namespace mhplan::bench::detail
                         else if (xs.world.isRigid())
                         {
                             std::vector<Pose2> poses;
-                            storeMetrics(rigidRunPath(xs, *si, *geo, exact, poses), run);
+                            storeMetrics(rigidRunMetricPath(xs.world, *si, *geo, xs.metricStep, exact,
+                                                            xs.optimum, poses),
+                                         run);
                             path = encodePoses(poses);
                         }
                         else

@@ -5,6 +5,8 @@
    before a run. */
 #include "CliSupport.h"
 
+#include "src/metrics/MetricList.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -227,6 +229,31 @@ TEST(CliJson, CompareAndScenEqualTheirTextAndTheFilesOptima)
     EXPECT_EQ(
         pyJson(scen.out, "all(r['match'] and abs(r['length'] - r['optimal']) < 1e-4 for r in d['results'])"),
         "True");
+}
+
+// plan and compare show every registered path metric (src/metrics/MetricList.h) by its column name, in
+// registration order, prepared as a campaign prepares the path; the length they print is the list's.
+TEST(CliJson, PlanAndCompareShowEveryRegisteredMetric)
+{
+    std::string columns;
+    for (const mhplan::PathMetric &m : mhplan::pathMetrics())
+        columns += (columns.empty() ? "" : " ") + mhplan::metricColumn(m.property);
+    const auto plan = runCliStdout("plan gms_grid10 --planner AStar --json");
+    ASSERT_EQ(plan.code, 0);
+    EXPECT_EQ(pyJson(plan.out, "' '.join(d['metrics'])"), columns);
+    EXPECT_EQ(pyJson(plan.out, "d['metrics']['path_length'] == d['length'], d['metrics']['collision_free']"),
+              "True True");
+    EXPECT_TRUE(contains(runCli("plan gms_grid10 --planner AStar --quiet").out, "metrics:   path_length "));
+    // A car's cusps: the list's, as the cusps field (a path is not certain in the time given).
+    const auto car = runCliStdout("plan reeds_shepp_parking --planner RRTstar --time 1 --seed 3 --json");
+    EXPECT_EQ(pyJson(car.out, "d['metrics'] is None or (' '.join(d['metrics']) == '" + columns +
+                                  "' and d['metrics']['cusps'] == d['cusps'])"),
+              "True");
+    const auto cmp = runCliStdout("compare gms_grid10 --planners AStar --runs 2 --seed 3 --json");
+    ASSERT_EQ(cmp.code, 0);
+    const std::string r = "d['results'][0]";
+    EXPECT_EQ(pyJson(cmp.out, "' '.join(" + r + "['median_metrics'])"), columns);
+    EXPECT_EQ(pyJson(cmp.out, r + "['median_metrics']['path_length'] == " + r + "['median_length']"), "True");
 }
 
 TEST(CliOutputs, UnwritableOutputsAreRefusedBeforeTheRun)

@@ -21,6 +21,7 @@
 #include <cxxabi.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -31,6 +32,7 @@
 #include <typeinfo>
 #include <stdexcept>
 #include <limits>
+#include <utility>
 
 using namespace mhplan;
 namespace ob = ompl::base;
@@ -449,4 +451,87 @@ TEST(Registry, SharedParametersHaveOneSetOfLimits)
     EXPECT_GE(declaring["seed"], 20);
     EXPECT_GE(declaring["max_iterations"], 22);
     EXPECT_GE(declaring["population_size"], 20);
+}
+
+// Every ranged parameter of every registered mhplan planner (pagmo's included) refuses the values just
+// outside its range in its own setter, with the one message of docs/conventions.md ("Parameters"): "parameter
+// 'name' must be in [lo, hi]; got value", lo and hi as its range suggestion prints them. The setter is
+// reached through the parameter itself (applyPlannerParameters checks the range before it), whose OMPL
+// wrapper reports the setter's std::invalid_argument as a warning. With MHPLAN_REFUSALS=FILE every message is
+// written to FILE (one line each: planner, parameter, message), to compare two builds.
+namespace
+{
+    /** The text of the last OMPL warning. */
+    class LastWarning : public ompl::msg::OutputHandler
+    {
+      public:
+        void log(const std::string &text, ompl::msg::LogLevel level, const char *, int) override
+        {
+            if (level == ompl::msg::LOG_WARN)
+                text_ = text;
+        }
+        std::string take() { return std::exchange(text_, std::string()); }
+
+      private:
+        std::string text_;
+    };
+} // namespace
+
+TEST(Parameters, EverySetterRefusesOutsideItsRangeWithOneMessage)
+{
+    const auto si = unitSquare();
+    std::ostringstream all;
+    int refusals = 0;
+    LastWarning warnings;
+    const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ompl::msg::useOutputHandler(&warnings);
+    for (const std::string &name : builtinPlanners().names())
+    {
+        if (builtinPlanners().get(name).origin == "ompl")
+            continue;
+        const ob::PlannerPtr planner = builtinPlanners().create(name, si);
+        std::vector<std::string> params;
+        planner->params().getParamNames(params);
+        for (const std::string &param : params)
+        {
+            ob::GenericParam &p = planner->params()[param];
+            const std::string range = p.getRangeSuggestion();
+            const auto first = range.find(':'), last = range.rfind(':');
+            if (dynamic_cast<const ParameterDescription *>(&p) == nullptr || first == std::string::npos ||
+                first == last)
+                continue;
+            const std::string loText = range.substr(0, first), hiText = range.substr(last + 1);
+            const double lo = std::stod(loText), hi = std::stod(hiText);
+            const bool real = dynamic_cast<const ob::SpecificParam<std::string> *>(&p) != nullptr;
+            std::vector<double> outside{hi + 1};
+            if (real || lo >= 1)
+                outside.push_back(lo - 1);
+            for (const double v : outside)
+            {
+                std::ostringstream text;
+                text << std::setprecision(real ? 17 : 12) << v;
+                std::ostringstream got;
+                got << std::setprecision(12) << v;
+                const std::string expected =
+                    "parameter '" + param + "' must be in [" + loText + ", " + hiText + "]; got " + got.str();
+                warnings.take();
+                const bool accepted = p.setValue(text.str());
+                std::string msg = warnings.take();
+                const std::string prefix = "Invalid value format specified for parameter '" + param + "': ";
+                if (msg.compare(0, prefix.size(), prefix) == 0)
+                    msg = msg.substr(prefix.size());
+                if (accepted)
+                    msg = "(accepted)";
+                EXPECT_EQ(msg, expected) << name << "." << param << " = " << text.str();
+                all << name << " " << param << " " << msg << "\n";
+                ++refusals;
+            }
+        }
+    }
+    ompl::msg::restorePreviousOutputHandler();
+    ompl::msg::setLogLevel(level);
+    EXPECT_GE(refusals, 1000);
+    if (const char *file = std::getenv("MHPLAN_REFUSALS"))
+        std::ofstream(file) << all.str();
 }

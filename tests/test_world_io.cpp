@@ -3,6 +3,7 @@
  */
 #include "src/collision/Collision.h"
 #include "src/io/Generators.h"
+#include "src/io/GridIO.h"
 #include "src/io/QueryList.h"
 #include "src/io/WorldIO.h"
 #include "src/io/YamlReader.h"
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 using namespace mhplan;
 
@@ -354,4 +356,70 @@ TEST(WorldIO, QuickQueryReadingReadsWhatTheTreeReads)
         bool quick = false;
         EXPECT_EQ(readBoth(text.str(), quick), readTree(text.str())) << e.path();
     }
+}
+
+// docs/conventions.md, "Adding a world format": a format is a parser and one registration (WorldFormat in
+// src/io/WorldIO.h; the built-in ones are the list in WorldIO.cpp). Registered, loadWorld reads its files by
+// their extension, names it among the accepted ones and refuses bad input through its parser; the built-in
+// messages are those of the list.
+TEST(WorldFormats, ANewFormatIsOneParserAndOneRegistration)
+{
+    // The new format: rows of '.' (free) and '@' (blocked), the top row first.
+    const auto parseRows = [](const std::string &text, const std::string &path)
+    {
+        std::vector<std::string> rows;
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);)
+            rows.push_back(line);
+        if (rows.empty() || rows[0].empty())
+            throw InputError(path + ":1: expected a row of '.' and '@'");
+        const int width = static_cast<int>(rows[0].size()), height = static_cast<int>(rows.size());
+        auto grid = std::make_shared<OccupancyGrid>(width, height, 1.0);
+        for (int r = 0; r < height; ++r)
+        {
+            if (static_cast<int>(rows[r].size()) != width)
+                throw InputError(path + ":" + std::to_string(r + 1) + ": a row of " +
+                                 std::to_string(rows[r].size()) + " cells; expected " +
+                                 std::to_string(width));
+            for (int c = 0; c < width; ++c)
+                grid->setBlocked(c, height - 1 - r, rows[r][c] == '@');
+        }
+        return gridWorld("rows", grid);
+    };
+    const std::string dir = ::testing::TempDir();
+    const std::string good = dir + "/mhplan_format_good.rows", bad = dir + "/mhplan_format_bad.rows";
+    std::ofstream(good) << "....\n.@@.\n....\n";
+    std::ofstream(bad) << "....\n..\n";
+    const auto errorOf = [](const std::string &path)
+    {
+        try
+        {
+            loadWorld(path);
+        }
+        catch (const InputError &e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(errorOf(good), good + ": unknown world file type '.rows'; accepted: .yaml, .yml, .map, .pgm");
+    EXPECT_EQ(errorOf(dir), dir + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
+
+    registerWorldFormat({{"rows"}, 1 << 20, parseRows});
+    const World w = loadWorld(good);
+    ASSERT_TRUE(w.isGrid());
+    EXPECT_EQ(w.grid->width(), 4);
+    EXPECT_EQ(w.grid->height(), 3);
+    EXPECT_EQ(w.grid->blockedCount(), 2u);
+    EXPECT_TRUE(w.grid->blocked(1, 1));
+    EXPECT_EQ(errorOf(bad), bad + ":2: a row of 2 cells; expected 4");
+    const std::string txt = std::string(MHPLAN_TEST_DATA_DIR) + "/worldio_not_a_world.txt";
+    EXPECT_EQ(errorOf(txt),
+              txt + ": unknown world file type '.txt'; accepted: .yaml, .yml, .map, .pgm, .rows");
+    EXPECT_THROW(registerWorldFormat({{"map"}, 1, parseRows}), std::invalid_argument);
+    EXPECT_FALSE(unregisterWorldFormat("yaml")); // built-in formats stay
+    EXPECT_TRUE(unregisterWorldFormat("rows"));
+    EXPECT_EQ(errorOf(good), good + ": unknown world file type '.rows'; accepted: .yaml, .yml, .map, .pgm");
+    std::filesystem::remove(good);
+    std::filesystem::remove(bad);
 }

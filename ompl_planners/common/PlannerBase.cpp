@@ -47,20 +47,17 @@ namespace mhplan
 
     void PlannerBase::setSeed(unsigned long seed)
     {
-        checkParameter(SharedParameterRanges::seed, static_cast<double>(seed));
-        seed_ = seed;
+        storeChecked(SharedParameterRanges::seed, seed_, seed);
     }
 
     void PlannerBase::setMaxIterations(unsigned int n)
     {
-        checkParameter(SharedParameterRanges::maxIterations, n);
-        maxIterations_ = n;
+        storeChecked(SharedParameterRanges::maxIterations, maxIterations_, n);
     }
 
     void PlannerBase::setPopulationSize(unsigned int n)
     {
-        checkParameter(SharedParameterRanges::populationSize, n);
-        populationSize_ = n;
+        storeChecked(SharedParameterRanges::populationSize, populationSize_, n);
     }
 
     void PlannerBase::declareSeed()

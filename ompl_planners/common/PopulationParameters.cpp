@@ -98,16 +98,12 @@ namespace mhplan
 
     void PopulationPlanner::setIterations(unsigned int t)
     {
-        checkParameter(kIterations, t);
-        iterations_ = t;
+        storeChecked(kIterations, iterations_, t);
     }
 
     void PopulationPlanner::setWaypoints(unsigned int m)
     {
-        checkParameter(kWaypoints, m);
-        if (m != waypoints_)
-            invalidate();
-        waypoints_ = m;
+        storeCheckedResetting(kWaypoints, waypoints_, m, [this] { invalidate(); });
     }
 
     void PopulationPlanner::setDecoding(const std::string &decoding)
@@ -122,10 +118,7 @@ namespace mhplan
 
     void PopulationPlanner::setSplineSamples(unsigned int n)
     {
-        checkParameter(kSplineSamples, n);
-        if (n != splineSamples_)
-            invalidate();
-        splineSamples_ = n;
+        storeCheckedResetting(kSplineSamples, splineSamples_, n, [this] { invalidate(); });
     }
 
     void PopulationPlanner::setFitness(const std::string &fitness)
@@ -145,8 +138,7 @@ namespace mhplan
 
     void PopulationPlanner::setStagnationRestart(unsigned int n)
     {
-        checkParameter(kStagnationRestart, n);
-        stagnationRestart_ = n;
+        storeChecked(kStagnationRestart, stagnationRestart_, n);
     }
 
     void PopulationPlanner::setGmsSettings(const GmsSettings &settings)

@@ -61,26 +61,22 @@ namespace mhplan
 
     void ArtificialPotentialField::setDirections(unsigned int n)
     {
-        checkParameter(kDirections, n);
-        directions_ = n;
+        storeChecked(kDirections, directions_, n);
     }
 
     void ArtificialPotentialField::setGradientSpacing(double h)
     {
-        checkParameter(kGradientSpacing, h);
-        gradientSpacing_ = h;
+        storeChecked(kGradientSpacing, gradientSpacing_, h);
     }
 
     void ArtificialPotentialField::setStallSteps(unsigned int n)
     {
-        checkParameter(kStallSteps, n);
-        stallSteps_ = n;
+        storeChecked(kStallSteps, stallSteps_, n);
     }
 
     void ArtificialPotentialField::setStallTolerance(double v)
     {
-        checkParameter(kStallTolerance, v);
-        stallTolerance_ = v;
+        storeChecked(kStallTolerance, stallTolerance_, v);
     }
 
     void ArtificialPotentialField::clear()

@@ -67,8 +67,7 @@ namespace mhplan
 
     void BacterialWalk::setSectorAngle(double deg)
     {
-        checkParameter(kSectorAngle, deg);
-        sectorAngle_ = deg;
+        storeChecked(kSectorAngle, sectorAngle_, deg);
     }
 
     // ---------------------------------------------------------------------------------------------------

@@ -53,67 +53,56 @@ namespace mhplan
 
     void ColonyParameters::setChemotacticSteps(unsigned int n)
     {
-        checkParameter(kChemotacticSteps, n);
-        colonySettings_.chemotacticSteps = n;
+        storeChecked(kChemotacticSteps, colonySettings_.chemotacticSteps, n);
     }
 
     void ColonyParameters::setSwimLength(unsigned int n)
     {
-        checkParameter(kSwimLength, n);
-        colonySettings_.swimLength = n;
+        storeChecked(kSwimLength, colonySettings_.swimLength, n);
     }
 
     void ColonyParameters::setReproductionSteps(unsigned int n)
     {
-        checkParameter(kReproductionSteps, n);
-        colonySettings_.reproductionSteps = n;
+        storeChecked(kReproductionSteps, colonySettings_.reproductionSteps, n);
     }
 
     void ColonyParameters::setEliminationEvents(unsigned int n)
     {
-        checkParameter(kEliminationEvents, n);
-        colonySettings_.eliminationEvents = n;
+        storeChecked(kEliminationEvents, colonySettings_.eliminationEvents, n);
     }
 
     void ColonyParameters::setEliminationProbability(double p)
     {
-        checkParameter(kEliminationProbability, p);
-        colonySettings_.eliminationProbability = p;
+        storeChecked(kEliminationProbability, colonySettings_.eliminationProbability, p);
     }
 
     void ColonyParameters::setStepSize(double c)
     {
-        checkParameter(kStepSize, c);
-        colonySettings_.stepSize = c;
+        storeChecked(kStepSize, colonySettings_.stepSize, c);
     }
 
     void ColonyParameters::setImprovementThreshold(unsigned int f)
     {
-        checkParameter(kImprovementThreshold, f);
-        colonySettings_.improvementThreshold = f;
+        storeChecked(kImprovementThreshold, colonySettings_.improvementThreshold, f);
     }
 
     void ColonyParameters::setAttractDepth(double v)
     {
-        checkParameter(kAttractDepth, v);
-        colonySettings_.attractDepth = v;
+        storeChecked(kAttractDepth, colonySettings_.attractDepth, v);
     }
 
     void ColonyParameters::setAttractWidth(double v)
     {
-        checkParameter(kAttractWidth, v);
-        colonySettings_.attractWidth = v;
+        storeChecked(kAttractWidth, colonySettings_.attractWidth, v);
     }
 
     void ColonyParameters::setRepelHeight(double v)
     {
-        checkParameter(kRepelHeight, v);
-        colonySettings_.repelHeight = v;
+        storeChecked(kRepelHeight, colonySettings_.repelHeight, v);
     }
 
     void ColonyParameters::setRepelWidth(double v)
     {
-        checkParameter(kRepelWidth, v);
-        colonySettings_.repelWidth = v;
+        storeChecked(kRepelWidth, colonySettings_.repelWidth, v);
     }
 } // namespace mhplan

@@ -50,29 +50,25 @@ namespace mhplan
 
     void PotentialFieldSettings::setAttractionGain(double v)
     {
-        checkParameter(kAttractionGain, v);
-        field_.attractionGain = v;
+        storeChecked(kAttractionGain, field_.attractionGain, v);
         fieldChanged();
     }
 
     void PotentialFieldSettings::setRepulsionGain(double v)
     {
-        checkParameter(kRepulsionGain, v);
-        field_.repulsionGain = v;
+        storeChecked(kRepulsionGain, field_.repulsionGain, v);
         fieldChanged();
     }
 
     void PotentialFieldSettings::setInfluenceDistance(double v)
     {
-        checkParameter(kInfluenceDistance, v);
-        field_.influenceDistance = v;
+        storeChecked(kInfluenceDistance, field_.influenceDistance, v);
         fieldChanged();
     }
 
     void PotentialFieldSettings::setSensingRange(double v)
     {
-        checkParameter(kSensingRange, v);
-        field_.sensingRange = v;
+        storeChecked(kSensingRange, field_.sensingRange, v);
         fieldChanged();
     }
 

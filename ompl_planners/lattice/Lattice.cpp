@@ -216,10 +216,7 @@ namespace mhplan
 
     void LatticePlanner::setResolution(double r)
     {
-        checkParameter(kResolution, r);
-        if (r != resolution_)
-            clear();
-        resolution_ = r;
+        storeCheckedResetting(kResolution, resolution_, r, [this] { clear(); });
     }
 
     void LatticePlanner::setLattice(const std::string &lattice)

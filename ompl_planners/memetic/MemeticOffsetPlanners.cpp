@@ -45,20 +45,17 @@ namespace mhplan
 
     void OffsetMemeticPlanner::setIterations(unsigned int t)
     {
-        checkParameter(kIterations, t);
-        iterations_ = t;
+        storeChecked(kIterations, iterations_, t);
     }
 
     void OffsetMemeticPlanner::setMaxStations(unsigned int k)
     {
-        checkParameter(kMaxStations, k);
-        maxStations_ = k;
+        storeChecked(kMaxStations, maxStations_, k);
     }
 
     void OffsetMemeticPlanner::setOffsetRange(double r)
     {
-        checkParameter(kOffsetRange, r);
-        offsetRange_ = r;
+        storeChecked(kOffsetRange, offsetRange_, r);
     }
 
     void OffsetMemeticPlanner::clearAlgorithm()
@@ -267,8 +264,7 @@ namespace mhplan
 
     void MemeticSlimeMould::setZ(double z)
     {
-        checkParameter(kZ, z);
-        z_ = z;
+        storeChecked(kZ, z_, z);
     }
 
     bool MemeticSlimeMould::slimeMouldStep(unsigned long t)
@@ -350,14 +346,12 @@ namespace mhplan
 
     void MemeticLRSMA::setLevyStep(double s)
     {
-        checkParameter(kLevyStep, s);
-        levyStep_ = s;
+        storeChecked(kLevyStep, levyStep_, s);
     }
 
     void MemeticLRSMA::setRotationFraction(double f)
     {
-        checkParameter(kRotationFraction, f);
-        rotationFraction_ = f;
+        storeChecked(kRotationFraction, rotationFraction_, f);
     }
 
     void MemeticLRSMA::startAlgorithm()

@@ -107,74 +107,62 @@ namespace mhplan
 
     void MemeticPlanner::setWalkNoise(double noise)
     {
-        checkParameter(kWalkNoise, noise);
-        walkNoise_ = noise;
+        storeChecked(kWalkNoise, walkNoise_, noise);
     }
 
     void MemeticPlanner::setWalkWeight(double w)
     {
-        checkParameter(kWalkWeight, w);
-        walkWeight_ = w;
+        storeChecked(kWalkWeight, walkWeight_, w);
     }
 
     void MemeticPlanner::setWalkExpansions(unsigned int n)
     {
-        checkParameter(kWalkExpansions, n);
-        walkExpansions_ = n;
+        storeChecked(kWalkExpansions, walkExpansions_, n);
     }
 
     void MemeticPlanner::setLatticeLevels(unsigned int n)
     {
-        checkParameter(kLatticeLevels, n);
-        latticeLevels_ = n;
+        storeChecked(kLatticeLevels, latticeLevels_, n);
     }
 
     void MemeticPlanner::setCoarseTurn(double x)
     {
-        checkParameter(kCoarseTurn, x);
-        coarseTurn_ = x;
+        storeChecked(kCoarseTurn, coarseTurn_, x);
     }
 
     void MemeticPlanner::setFineTurn(double x)
     {
-        checkParameter(kFineTurn, x);
-        fineTurn_ = x;
+        storeChecked(kFineTurn, fineTurn_, x);
     }
 
     void MemeticPlanner::setPolishPasses(unsigned int n)
     {
-        checkParameter(kPolishPasses, n);
-        polishPasses_ = n;
+        storeChecked(kPolishPasses, polishPasses_, n);
     }
 
     void MemeticPlanner::setEliteRewalks(unsigned int n)
     {
-        checkParameter(kEliteRewalks, n);
-        eliteRewalks_ = n;
+        storeChecked(kEliteRewalks, eliteRewalks_, n);
     }
 
     void MemeticPlanner::setStagnation(unsigned int n)
     {
-        checkParameter(kStagnation, n);
-        stagnation_ = n;
+        storeChecked(kStagnation, stagnation_, n);
     }
 
     void MemeticPlanner::setBisections(unsigned int n)
     {
-        checkParameter(kBisections, n);
-        bisections_ = n;
+        storeChecked(kBisections, bisections_, n);
     }
 
     void MemeticPlanner::setValidatorMargin(double m)
     {
-        checkParameter(kValidatorMargin, m);
-        validatorMargin_ = m;
+        storeChecked(kValidatorMargin, validatorMargin_, m);
     }
 
     void MemeticPlanner::setValidatorClearance(double c)
     {
-        checkParameter(kValidatorClearance, c);
-        validatorClearance_ = c;
+        storeChecked(kValidatorClearance, validatorClearance_, c);
     }
 
     double MemeticPlanner::marginDistance() const

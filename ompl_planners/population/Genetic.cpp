@@ -77,38 +77,32 @@ namespace mhplan
 
     void Genetic::setCrossoverRate(double r)
     {
-        checkParameter(kCrossoverRate, r);
-        crossoverRate_ = r;
+        storeChecked(kCrossoverRate, crossoverRate_, r);
     }
 
     void Genetic::setMutationRate(double r)
     {
-        checkParameter(kMutationRate, r);
-        mutationRate_ = r;
+        storeChecked(kMutationRate, mutationRate_, r);
     }
 
     void Genetic::setInsertDeleteRate(double r)
     {
-        checkParameter(kInsertDeleteRate, r);
-        insertDeleteRate_ = r;
+        storeChecked(kInsertDeleteRate, insertDeleteRate_, r);
     }
 
     void Genetic::setTournamentSize(unsigned int k)
     {
-        checkParameter(kTournamentSize, k);
-        tournamentSize_ = k;
+        storeChecked(kTournamentSize, tournamentSize_, k);
     }
 
     void Genetic::setReplaceFraction(double f)
     {
-        checkParameter(kReplaceFraction, f);
-        replaceFraction_ = f;
+        storeChecked(kReplaceFraction, replaceFraction_, f);
     }
 
     void Genetic::setCommonNodeTolerance(double f)
     {
-        checkParameter(kCommonNodeTolerance, f);
-        commonTolerance_ = f;
+        storeChecked(kCommonNodeTolerance, commonTolerance_, f);
     }
 
     bool Genetic::sameNode(const Vec2 &p, const Vec2 &q, double tolerance, const OccupancyGrid *grid)

@@ -49,38 +49,32 @@ namespace mhplan
 
     void LRSMA::setLevyBeta(double beta)
     {
-        checkParameter(kLevyBeta, beta);
-        beta_ = beta;
+        storeChecked(kLevyBeta, beta_, beta);
     }
 
     void LRSMA::setLevyStep(double step)
     {
-        checkParameter(kLevyStep, step);
-        levyStep_ = step;
+        storeChecked(kLevyStep, levyStep_, step);
     }
 
     void LRSMA::setStagnationTolerance(double fmin)
     {
-        checkParameter(kStagnationTolerance, fmin);
-        fmin_ = fmin;
+        storeChecked(kStagnationTolerance, fmin_, fmin);
     }
 
     void LRSMA::setStagnationLimit(unsigned int tmax)
     {
-        checkParameter(kStagnationLimit, tmax);
-        tmax_ = tmax;
+        storeChecked(kStagnationLimit, tmax_, tmax);
     }
 
     void LRSMA::setRotationFraction(double pr)
     {
-        checkParameter(kRotationFraction, pr);
-        pr_ = pr;
+        storeChecked(kRotationFraction, pr_, pr);
     }
 
     void LRSMA::setTemperature(double temp)
     {
-        checkParameter(kTemperature, temp);
-        temperature_ = temp;
+        storeChecked(kTemperature, temperature_, temp);
     }
 
     void LRSMA::setRotationProduct(const std::string &product)

@@ -31,26 +31,22 @@ namespace mhplan
 
     void ParticleSwarm::setInertia(double w)
     {
-        checkParameter(kInertia, w);
-        w_ = w;
+        storeChecked(kInertia, w_, w);
     }
 
     void ParticleSwarm::setCognitive(double c1)
     {
-        checkParameter(kCognitive, c1);
-        c1_ = c1;
+        storeChecked(kCognitive, c1_, c1);
     }
 
     void ParticleSwarm::setSocial(double c2)
     {
-        checkParameter(kSocial, c2);
-        c2_ = c2;
+        storeChecked(kSocial, c2_, c2);
     }
 
     void ParticleSwarm::setVelocityLimit(double share)
     {
-        checkParameter(kVelocityLimit, share);
-        vmaxShare_ = share;
+        storeChecked(kVelocityLimit, vmaxShare_, share);
     }
 
     void ParticleSwarm::startSwarm()

@@ -40,8 +40,7 @@ namespace mhplan
 
     void SlimeMould::setZ(double z)
     {
-        checkParameter(kZ, z);
-        z_ = z;
+        storeChecked(kZ, z_, z);
     }
 
     void SlimeMould::clearPopulation()

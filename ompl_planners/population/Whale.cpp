@@ -32,8 +32,7 @@ namespace mhplan
 
     void Whale::setSpiral(double b)
     {
-        checkParameter(kSpiral, b);
-        b_ = b;
+        storeChecked(kSpiral, b_, b);
     }
 
     double Whale::moveCoordinate(Move move, double x, double target, double A, double C, double l, double b)

@@ -68,6 +68,25 @@ namespace mhplan
         checkParameterRange(range.name, value, range.lo, range.hi);
     }
 
+    /** \brief The check-and-store of a ranged setter, written once: checkParameter(range, value), then
+        field = value (a refused value leaves the field as it was). */
+    template <typename T, typename V> void storeChecked(const ParamRange &range, T &field, V value)
+    {
+        checkParameter(range, static_cast<double>(value));
+        field = value;
+    }
+
+    /** \brief storeChecked() for a parameter whose change resets its owner: after the check, \e reset is
+        called (before the store) when the value differs from the field's. */
+    template <typename T, typename V, typename Reset>
+    void storeCheckedResetting(const ParamRange &range, T &field, V value, Reset reset)
+    {
+        checkParameter(range, static_cast<double>(value));
+        if (value != field)
+            reset();
+        field = value;
+    }
+
     /** \brief A decimal string that reads back as exactly \e value (15 significant digits, 17 when needed)
        (OMPL prints double parameters with six significant digits, which does not round-trip). */
     std::string formatParameter(double value);
@@ -116,8 +135,7 @@ namespace mhplan
             params, range,
             [&field, range, changed](T v)
             {
-                checkParameter(range, v);
-                field = v;
+                storeChecked(range, field, v);
                 if (changed)
                     changed();
             },

@@ -2,7 +2,7 @@
 /* mhplan compare: every planner on every world's first query (or --query); a table (or JSON) of success,
    lengths, the optimum, the gap and time; "n/a" where a planner's declared capabilities exclude the world's
    space (PlannerRegistry::whyNotApplicable). */
-#include "src/metrics/Metrics.h"
+#include "src/metrics/MetricList.h"
 #include "src/collision/RigidValidity.h"
 #include "src/cli/Commands.h"
 
@@ -18,9 +18,12 @@
 #include <ompl/util/Time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <sstream>
 
 namespace ob = ompl::base;
@@ -182,6 +185,22 @@ namespace mhplan::cli
                     continue;
                 }
                 std::vector<double> lengths;
+                // Every registered metric (src/metrics/MetricList.h) of the exact runs, as a campaign
+                // prepares the path; the lengths are the list's "path length".
+                std::map<std::string, std::vector<double>> values;
+                const auto keep = [&](const MetricPath &path)
+                {
+                    for (const auto &[property, value] : evaluatePathMetrics(path))
+                    {
+                        std::vector<double> &v = values[property];
+                        if (value && !std::isnan(*value))
+                            v.push_back(*value);
+                        if (property == "path length REAL")
+                            lengths.push_back(*value);
+                    }
+                };
+                const double noOptimum =
+                    optimum.result.found ? optimum.result.length : std::numeric_limits<double>::quiet_NaN();
                 double totalTime = 0.0;
                 int exact = 0;
                 for (long long r = 0; r < runs; ++r)
@@ -196,13 +215,14 @@ namespace mhplan::cli
                     if (world.isRigid())
                     {
                         // The robot checked independently along the space's interpolation; its metric.
-                        const RigidPathMetrics m =
-                            rigidPathMetrics(world, *ss->getSpaceInformation(), ss->getSolutionPath(),
-                                             RigidBodyModel(world), defaultMetricStep(world));
-                        if (!m.collisionFree)
+                        std::vector<Pose2> poses;
+                        const MetricPath path = rigidRunMetricPath(
+                            world, *ss->getSpaceInformation(), ss->getSolutionPath(),
+                            defaultMetricStep(world), true, std::numeric_limits<double>::quiet_NaN(), poses);
+                        if (!path.collisionFree)
                             continue;
                         ++exact;
-                        lengths.push_back(m.length);
+                        keep(path);
                         continue;
                     }
                     const std::vector<Vec2> pts = pathPoints(ss->getSolutionPath());
@@ -212,12 +232,16 @@ namespace mhplan::cli
                     if (!ok)
                         continue;
                     ++exact;
-                    lengths.push_back(polylineLength(pts));
+                    keep(planarMetricPath(world, pts, *model, defaultMetricStep(world), true, noOptimum));
                 }
-                std::sort(lengths.begin(), lengths.end());
+                const auto medianOf = [](std::vector<double> &v)
+                {
+                    std::sort(v.begin(), v.end());
+                    const std::size_t n = v.size();
+                    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+                };
                 const std::size_t n = lengths.size();
-                const double med =
-                    n == 0 ? 0.0 : (n % 2 ? lengths[n / 2] : 0.5 * (lengths[n / 2 - 1] + lengths[n / 2]));
+                const double med = medianOf(lengths);
                 if (json)
                 {
                     out.beginObject().field("world", world.name).field("file", file);
@@ -236,7 +260,15 @@ namespace mhplan::cli
                     out.key("median_gap_percent");
                     n &&optimum.result.found ? out.value(100.0 * optimalityGap(med, optimum.result))
                                              : out.null();
-                    out.field("mean_time", totalTime / static_cast<double>(runs)).endObject();
+                    out.field("mean_time", totalTime / static_cast<double>(runs));
+                    out.key("median_metrics").beginObject();
+                    for (const PathMetric &m : pathMetrics())
+                    {
+                        std::vector<double> &v = values[m.property];
+                        out.key(metricColumn(m.property));
+                        v.empty() ? out.null() : out.value(medianOf(v));
+                    }
+                    out.endObject().endObject();
                     continue;
                 }
                 std::ostringstream best, median, gap;

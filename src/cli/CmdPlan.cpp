@@ -6,7 +6,7 @@
 #include "src/cli/Help.h"
 #include "src/cli/Json.h"
 #include "src/collision/Collision.h"
-#include "src/metrics/Metrics.h"
+#include "src/metrics/MetricList.h"
 #include "src/collision/Problem.h"
 #include "src/collision/RigidValidity.h"
 #include "src/draw/Svg.h"
@@ -19,6 +19,8 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <sstream>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -186,17 +188,30 @@ namespace mhplan::cli
         const bool havePath = ss->haveSolutionPath();
         std::vector<Vec2> pts = havePath ? pathPoints(ss->getSolutionPath()) : std::vector<Vec2>{};
         bool collisionFree = havePath;
-        double length = polylineLength(pts);
+        const bool exactPath = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
+        // Every registered metric (src/metrics/MetricList.h), the path prepared as a campaign prepares it;
+        // the length and the cusps printed below are the list's.
+        std::vector<std::pair<std::string, std::optional<double>>> metrics;
+        const auto metric = [&metrics](const std::string &property)
+        {
+            for (const auto &[name, value] : metrics)
+                if (name == property)
+                    return value;
+            return std::optional<double>();
+        };
+        const double noOptimum = std::numeric_limits<double>::quiet_NaN();
+        double length = 0.0;
         RigidPathMetrics rigid;
         std::vector<Pose2> poses;
         if (world.isRigid() && havePath)
         {
             // Independent dense check along the space's interpolation; the cost in the space's metric.
             const og::PathGeometric &path = ss->getSolutionPath();
-            rigid = rigidPathMetrics(world, *ss->getSpaceInformation(), path, RigidBodyModel(world),
-                                     defaultMetricStep(world));
+            std::vector<Pose2> stored;
+            metrics = evaluatePathMetrics(rigidRunMetricPath(world, *ss->getSpaceInformation(), path,
+                                                             defaultMetricStep(world), exactPath, noOptimum,
+                                                             stored, &rigid));
             collisionFree = rigid.collisionFree;
-            length = rigid.length;
             for (std::size_t i = 0; i < path.getStateCount(); ++i)
                 poses.push_back(statePose(path.getState(i)));
             // Draw what the robot drives (a car's arcs), not the chords between waypoints.
@@ -212,7 +227,12 @@ namespace mhplan::cli
                 collisionFree = collisionFree && model->segmentValid(pts[i - 1], pts[i]);
         const OptimumOrReason optimum =
             havePath ? optimumOrReason(world, query) : OptimumOrReason{OptimumResult{}, "no path"};
-        const bool exactPath = status == ob::PlannerStatus::EXACT_SOLUTION && ss->haveExactSolutionPath();
+        if (!world.isRigid() && havePath)
+            metrics = evaluatePathMetrics(
+                planarMetricPath(world, pts, *model, defaultMetricStep(world), exactPath,
+                                 optimum.result.found ? optimum.result.length : noOptimum));
+        length = metric("path length REAL").value_or(0.0);
+        const auto cusps = static_cast<unsigned long long>(metric("cusps INTEGER").value_or(0.0));
         const bool withGap = optimum.result.found && exactPath && collisionFree;
         const int code = status == ob::PlannerStatus::EXACT_SOLUTION && collisionFree ? 0 : 3;
         if (args.has("svg") && havePath)
@@ -268,7 +288,28 @@ namespace mhplan::cli
                 out.beginArray().value(p.x).value(p.y).value(p.yaw).endArray();
             out.endArray();
             out.key("cusps");
-            world.space == SpaceType::ReedsShepp &&havePath ? out.value(rigid.cusps) : out.null();
+            world.space == SpaceType::ReedsShepp &&havePath ? out.value(cusps) : out.null();
+            out.key("metrics");
+            if (havePath)
+            {
+                out.beginObject();
+                for (const auto &[property, value] : metrics)
+                {
+                    out.key(metricColumn(property));
+                    const std::string type = property.substr(property.rfind(' ') + 1);
+                    if (!value)
+                        out.null();
+                    else if (type == "BOOLEAN")
+                        out.value(*value != 0.0);
+                    else if (type == "INTEGER")
+                        out.value(static_cast<long long>(*value));
+                    else
+                        out.value(*value);
+                }
+                out.endObject();
+            }
+            else
+                out.null();
             out.key("svg");
             args.has("svg") && havePath ? out.value(args.get("svg")) : out.null();
             out.field("exit_code", code).endObject().finish();
@@ -289,7 +330,7 @@ namespace mhplan::cli
                       << (world.space == SpaceType::SE2 ? ": |dxy| + 0.5 |dyaw|" : ": the car's path length")
                       << ")\n";
             if (world.space == SpaceType::ReedsShepp)
-                std::cout << "cusps:     " << rigid.cusps << " (reversals of driving direction)\n";
+                std::cout << "cusps:     " << cusps << " (reversals of driving direction)\n";
         }
         else
             std::cout << std::setprecision(9) << "length:    " << length << "\n";
@@ -313,6 +354,13 @@ namespace mhplan::cli
                           ? " (independent dense check of the robot along the space's interpolation)"
                           : " (exact segment check)")
                   << "\n";
+        std::ostringstream listed; // every registered metric, "-" where it has no value for this path
+        for (const auto &[property, value] : metrics)
+        {
+            listed << (listed.tellp() > 0 ? ", " : "") << metricColumn(property) << " ";
+            value ? listed << std::setprecision(6) << *value : listed << "-";
+        }
+        std::cout << "metrics:   " << listed.str() << "\n";
         if (world.isRigid())
         {
             std::cout << "path:      " << poses.size() << " states (x y yaw)\n";

@@ -50,12 +50,13 @@ namespace mhplan::cli
     {
         if (fs::exists(arg))
             return arg;
-        for (const char *ext : {".yaml", ".yml", ".map", ".pgm"})
-        {
-            const fs::path p = fs::path(environmentsDir()) / (arg + ext);
-            if (fs::exists(p))
-                return p.string();
-        }
+        for (const WorldFormat &format : worldFormats()) // the formats loadWorld reads, in their order
+            for (const std::string &ext : format.extensions)
+            {
+                const fs::path p = fs::path(environmentsDir()) / (arg + "." + ext);
+                if (fs::exists(p))
+                    return p.string();
+            }
         throw InputError("world '" + arg + "': no such file, and no shipped world of that name in " +
                          environmentsDir() + " (see 'mhplan worlds')");
     }

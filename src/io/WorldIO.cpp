@@ -12,6 +12,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace mhplan
 {
@@ -522,50 +524,135 @@ namespace mhplan
         }
     } // namespace
 
+    namespace
+    {
+        /** A grid file format, \e extension: \e parse reads the grid; the world is named after the file's
+            stem. */
+        WorldFormat gridFormat(const char *extension,
+                               OccupancyGrid (*parse)(std::istream &, const std::string &))
+        {
+            const auto read = [parse](const std::string &text, const std::string &path)
+            {
+                std::string stem =
+                    path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+                stem = stem.substr(0, stem.find_last_of('.'));
+                std::istringstream in(text);
+                World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(parse(in, path)));
+                w.file = path;
+                return w;
+            };
+            return {{extension}, kMaxGridFileBytes, read, ""};
+        }
+
+        /** The built-in world formats: the registration list. One entry per format (docs/conventions.md). */
+        std::vector<WorldFormat> builtInWorldFormats()
+        {
+            return {
+                {{"yaml", "yml"},
+                 kMaxYamlBytes,
+                 parseWorldYaml,
+                 "YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
+                     " bytes (4 MiB; large grids belong in .map or .pgm files)"},
+                gridFormat("map", [](std::istream &in, const std::string &file)
+                           { return parseMovingAIMap(in, file); }),
+                gridFormat("pgm",
+                           [](std::istream &in, const std::string &file) { return parsePgm(in, file); }),
+            };
+        }
+
+        std::vector<WorldFormat> &formatRegistry()
+        {
+            static std::vector<WorldFormat> formats = builtInWorldFormats();
+            return formats;
+        }
+
+        /** The format of extension \e ext, or null. */
+        const WorldFormat *formatOf(const std::string &ext)
+        {
+            for (const WorldFormat &f : worldFormats())
+                if (std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end())
+                    return &f;
+            return nullptr;
+        }
+
+        /** The accepted extensions ".a, .b, .c", the last joined by \e lastJoint. */
+        std::string acceptedExtensions(const std::string &lastJoint)
+        {
+            std::vector<std::string> all;
+            for (const WorldFormat &f : worldFormats())
+                for (const std::string &e : f.extensions)
+                    all.push_back("." + e);
+            std::string out;
+            for (std::size_t i = 0; i < all.size(); ++i)
+                out += (i == 0 ? "" : i + 1 == all.size() ? lastJoint : ", ") + all[i];
+            return out;
+        }
+    } // namespace
+
+    const std::vector<WorldFormat> &worldFormats()
+    {
+        return formatRegistry();
+    }
+
+    void registerWorldFormat(WorldFormat format)
+    {
+        if (format.extensions.empty() || !format.parse)
+            throw std::invalid_argument(
+                "registerWorldFormat: a world format needs an extension and a parser");
+        for (const std::string &e : format.extensions)
+            if (formatOf(e) != nullptr)
+                throw std::invalid_argument("registerWorldFormat: the extension '." + e +
+                                            "' is registered already");
+        formatRegistry().push_back(std::move(format));
+    }
+
+    bool unregisterWorldFormat(const std::string &extension)
+    {
+        std::vector<WorldFormat> &formats = formatRegistry();
+        for (std::size_t i = builtInWorldFormats().size(); i < formats.size(); ++i)
+            if (std::find(formats[i].extensions.begin(), formats[i].extensions.end(), extension) !=
+                formats[i].extensions.end())
+            {
+                formats.erase(formats.begin() + static_cast<std::ptrdiff_t>(i));
+                return true;
+            }
+        return false;
+    }
+
     World loadWorld(const std::string &path, std::string *contents)
     {
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec))
-            throw InputError(path + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
+            throw InputError(path + ": is a directory, not a world file (" + acceptedExtensions(" or ") +
+                             ")");
         const std::string ext = extensionOf(path);
-        const bool grid = ext == "map" || ext == "pgm";
-        if (!grid && ext != "yaml" && ext != "yml")
+        const WorldFormat *format = formatOf(ext);
+        if (format == nullptr)
         {
             requireRegularFile(path, "world file");
             throw InputError(path + ": " +
                              (ext.empty() ? std::string("the file name has no extension")
                                           : "unknown world file type '." + ext + "'") +
-                             "; accepted: .yaml, .yml, .map, .pgm");
+                             "; accepted: " + acceptedExtensions(", "));
         }
         // Read once, whole (only a regular file, at most its limit): what is parsed is exactly what the
         // caller may fingerprint (contents).
         std::string text;
         try
         {
-            text = readInputFile(path, grid ? kMaxGridFileBytes : kMaxYamlBytes, "world file");
+            text = readInputFile(path, format->maxBytes, "world file");
         }
         catch (const InputError &e)
         {
-            if (!grid && std::string(e.what()).find("is larger than") != std::string::npos)
-                throw InputError(path + ": the world file is larger than " + std::to_string(kMaxYamlBytes) +
-                                 " bytes; YAML input files are limited to " + std::to_string(kMaxYamlBytes) +
-                                 " bytes (4 MiB; large grids belong in .map or .pgm files)");
+            if (!format->limitNote.empty() &&
+                std::string(e.what()).find("is larger than") != std::string::npos)
+                throw InputError(path + ": the world file is larger than " +
+                                 std::to_string(format->maxBytes) + " bytes; " + format->limitNote);
             throw;
         }
         if (contents)
             *contents = text;
-        std::string stem =
-            path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
-        stem = stem.substr(0, stem.find_last_of('.'));
-        if (grid)
-        {
-            std::istringstream in(std::move(text));
-            World w = gridWorld(stem, std::make_shared<const OccupancyGrid>(
-                                          ext == "map" ? parseMovingAIMap(in, path) : parsePgm(in, path)));
-            w.file = path;
-            return w;
-        }
-        return parseWorldYaml(text, path);
+        return format->parse(text, path);
     }
 
     namespace

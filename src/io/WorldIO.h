@@ -6,9 +6,11 @@
 #include "src/base/World.h"
 #include "src/io/YamlReader.h"
 
+#include <cstddef>
+#include <functional>
 #include <set>
-
 #include <string>
+#include <vector>
 
 namespace mhplan
 {
@@ -32,14 +34,41 @@ namespace mhplan
         an extent below kMinExtent), or an empty string when it can. */
     std::string boundsProblem(const Box &b);
 
-    /** \brief Load a world: a YAML world file (.yaml/.yml, see environments/README.md), a MovingAI map
-        (.map) or a PGM image (.pgm, threshold 0.5 of the maximum grey value, dark = blocked). Throws
+    /** \brief Load a world in the format its extension names (worldFormats): a YAML world file (.yaml/.yml,
+        see environments/README.md), a MovingAI map (.map) or a PGM image (.pgm, threshold 0.5 of the
+        maximum grey value, dark = blocked). Throws
         InputError naming the file, line and field on any problem (malformed YAML, unknown keys, negative
         radii, self-intersecting polygons, start or goal out of bounds or in collision), and any file that
         is not a regular file (a FIFO, a device) or exceeds its limit before reading it (InputFile.h).
         \e contents, when given, receives the bytes that were parsed (read once, so a fingerprint of them
         describes exactly the world returned). */
     World loadWorld(const std::string &path, std::string *contents = nullptr);
+
+    /** \brief A world file format loadWorld reads (docs/conventions.md, "Adding a world format"): the file
+        extensions it is chosen by (lower case, without the dot), the most bytes a file may have, and its
+        parser, which turns the file's whole text into a World (\e path names the file in messages) and
+        refuses bad input with InputError "FILE:LINE: ...". \e limitNote, when not empty, replaces the
+        reader's size complaint: "FILE: the world file is larger than N bytes; <limitNote>". */
+    struct WorldFormat
+    {
+        std::vector<std::string> extensions;
+        std::size_t maxBytes{0};
+        std::function<World(const std::string &text, const std::string &path)> parse;
+        std::string limitNote;
+    };
+
+    /** \brief Every world format loadWorld reads, the built-in ones first (YAML, MovingAI map, PGM; the
+        registration list in WorldIO.cpp), in registration order: the order of the accepted list in
+        messages and of the extensions a shipped world's name is tried with. */
+    const std::vector<WorldFormat> &worldFormats();
+
+    /** \brief Register one more world format (a program's or a test's own). Throws std::invalid_argument
+        when it has no extension or no parser, or when one of its extensions is taken. */
+    void registerWorldFormat(WorldFormat format);
+
+    /** \brief Remove a format registered by registerWorldFormat (tests), named by one of its extensions;
+        false when there is none or it is a built-in one. */
+    bool unregisterWorldFormat(const std::string &extension);
 
     /** \brief Parse a YAML world from text; \e fileName is used in error messages and to resolve relative
         grid file paths (relative to its directory). */

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "src/metrics/MetricList.h"
 
+#include "src/collision/RigidValidity.h"
+
 #include <algorithm>
 #include <regex>
 #include <stdexcept>
@@ -83,6 +85,40 @@ namespace mhplan
         p.path = &path;
         p.points = std::move(drawn);
         return p;
+    }
+
+    MetricPath rigidRunMetricPath(const World &world, const ompl::base::SpaceInformation &si,
+                                  const ompl::geometric::PathGeometric &path, double step, bool exact,
+                                  double optimum, std::vector<Pose2> &poses, RigidPathMetrics *measured)
+    {
+        const RigidBodyModel model(world);
+        const RigidPathMetrics m = rigidPathMetrics(world, si, path, model, step);
+        poses.clear();
+        if (world.space == SpaceType::SE2)
+            for (std::size_t i = 0; i < path.getStateCount(); ++i)
+                poses.push_back(statePose(path.getState(i)));
+        else
+        {
+            const double spacing = world.turningRadius / 8.0;
+            const std::size_t every = std::max<std::size_t>(1, static_cast<std::size_t>(spacing / step));
+            for (std::size_t i = 0; i < m.poses.size(); i += every)
+                poses.push_back(m.poses[i]);
+            poses.push_back(m.poses.back());
+        }
+        std::vector<Vec2> drawn;
+        for (const Pose2 &p : poses)
+            drawn.emplace_back(p.x, p.y);
+        MetricPath out = rigidMetricPath(world, si, path, m, withoutDuplicates(drawn), exact, optimum);
+        if (measured != nullptr)
+            *measured = m;
+        return out;
+    }
+
+    std::string metricColumn(const std::string &property)
+    {
+        std::string name = property.substr(0, property.rfind(' '));
+        std::replace(name.begin(), name.end(), ' ', '_');
+        return name;
     }
 
     const std::vector<PathMetric> &pathMetrics()

@@ -53,6 +53,20 @@ namespace mhplan
                                const ompl::geometric::PathGeometric &path, const RigidPathMetrics &m,
                                std::vector<Vec2> drawn, bool exact, double optimum);
 
+    /** \brief An SE(2)-based path's MetricPath as every program prepares it (docs/spaces.md, "Rigid-body and
+        car worlds"): rigidPathMetrics every \e step (the length in the space's metric, the independent dense
+        check along the space's interpolation, the FCL clearance); the shape metrics are taken on the
+        waypoints (se2) or on the driven curve sampled every eighth of the turning radius (cars), which
+        \e poses receives with the robot's heading (the path a campaign stores). \e measured, when given,
+        receives rigidPathMetrics' result. */
+    MetricPath rigidRunMetricPath(const World &world, const ompl::base::SpaceInformation &si,
+                                  const ompl::geometric::PathGeometric &path, double step, bool exact,
+                                  double optimum, std::vector<Pose2> &poses,
+                                  RigidPathMetrics *measured = nullptr);
+
+    /** \brief The name of a metric's property ("path length REAL"): its database column, "path_length". */
+    std::string metricColumn(const std::string &property);
+
     /** \brief One registered metric: its OMPL run property ("name REAL", "name INTEGER" or "name BOOLEAN")
        and its value on a path (no value: nothing is stored for that run). */
     struct PathMetric
