@@ -75,11 +75,13 @@ namespace
         std::atomic<unsigned long> &count_;
     };
 
-    /** \brief Deepest penetration of the polyline into any disc, sampled every \e step (0 when free). */
+    /** \brief Deepest penetration of the polyline into any disc, sampled every \e step (0 when free); \e at
+        the arc length where it is. */
     double deepestCut(const std::vector<std::array<double, 2>> &pts, const std::vector<Disc> &discs,
-                      double step)
+                      double step, double &at)
     {
-        double deepest = 0.0;
+        double deepest = 0.0, before = 0.0;
+        at = 0.0;
         for (std::size_t i = 1; i < pts.size(); ++i)
         {
             const double dx = pts[i][0] - pts[i - 1][0], dy = pts[i][1] - pts[i - 1][1];
@@ -90,8 +92,13 @@ namespace
                 const double x = pts[i - 1][0] + dx * double(k) / double(n);
                 const double y = pts[i - 1][1] + dy * double(k) / double(n);
                 for (const Disc &d : discs)
-                    deepest = std::max(deepest, d.r - std::hypot(x - d.x, y - d.y));
+                    if (d.r - std::hypot(x - d.x, y - d.y) > deepest)
+                    {
+                        deepest = d.r - std::hypot(x - d.x, y - d.y);
+                        at = before + std::hypot(dx, dy) * double(k) / double(n);
+                    }
             }
+            before += std::hypot(dx, dy);
         }
         return deepest;
     }
@@ -293,7 +300,8 @@ int main(int argc, char **argv)
                 firstTime = ompl::time::seconds(ompl::time::now() - t0); // planners without callbacks
             if (std::isnan(within) && length <= 1.01 * optimum)
                 within = firstTime;
-            const double cut = deepestCut(pts, discs, 0.01);
+            double cutAt = 0.0;
+            const double cut = deepestCut(pts, discs, 0.01, cutAt);
             if (cut > 0.0)
             {
                 ++row.cut;
@@ -310,7 +318,12 @@ int main(int argc, char **argv)
                 std::cout << "run: query " << q << " " << name << " gap " << fixed(row.gaps.back(), 3)
                           << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4)
                           << " s within-1% " << fixed(within, 4) << " s state checks " << stateChecks.load()
-                          << " motion checks " << motionChecks.load() << "\n";
+                          << " motion checks " << motionChecks.load();
+            if (verbose && cut > 0.0)
+                std::cout << " cut " << fixed(1000.0 * cut, 3) << " mm at " << fixed(cutAt, 3) << " of "
+                          << fixed(length, 3) << " m";
+            if (verbose)
+                std::cout << "\n";
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))
