@@ -11,7 +11,8 @@
 
    mhplan_ompl_app [--time S] [--queries N] [--count C] [--resolution R] [--planners A,B,...]
                    [--params KEY=VALUE,...] [--seed N] [--verbose 1]
-   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks).
+   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks);
+   --verbose 2 also the circles ("disc x y r") and every returned path ("path x y x y ...").
  */
 #include "benchmarks/WorldFamilies.h"
 
@@ -147,7 +148,7 @@ int main(int argc, char **argv)
     double timeLimit = 1.0, resolution = 0.002;
     unsigned int queries = 20, count = 70;
     std::uint64_t seed = 31;
-    bool verbose = false;
+    bool verbose = false, paths = false;
     std::vector<std::string> planners = {"GA-MEM",          "SMA-MEM", "LRSMA-MEM", "MGO-MEM",
                                          "InformedRRTstar", "RRTstar", "ABITstar"};
     std::map<std::string, std::string> extra;
@@ -165,7 +166,10 @@ int main(int argc, char **argv)
         else if (key == "--planners")
             planners = splitList(value);
         else if (key == "--verbose")
+        {
             verbose = value != "0";
+            paths = value == "2";
+        }
         else if (key == "--seed")
             seed = static_cast<std::uint64_t>(std::atoll(value.c_str()));
         else if (key == "--params")
@@ -183,7 +187,7 @@ int main(int argc, char **argv)
         {
             std::cerr << "mhplan_ompl_app: unknown option '" << key
                       << "'; accepted: --time S, --queries N, --count C, --resolution R, --planners A,B,..., "
-                         "--params KEY=VALUE,..., --seed N, --verbose 0|1\n";
+                         "--params KEY=VALUE,..., --seed N, --verbose 0|1|2\n";
             return 1;
         }
     }
@@ -224,6 +228,10 @@ int main(int argc, char **argv)
               << resolution * std::hypot(world.bounds.width(), world.bounds.height()) << " m), " << timeLimit
               << " s per run\n";
 
+    if (paths)
+        for (const Disc &d : discs)
+            std::cout << "disc " << std::setprecision(17) << d.x << " " << d.y << " " << d.r
+                      << std::setprecision(6) << "\n";
     std::map<std::string, Row> rows;
     for (unsigned int q = 0; q < queries; ++q)
     {
@@ -324,6 +332,13 @@ int main(int argc, char **argv)
                           << fixed(length, 3) << " m";
             if (verbose)
                 std::cout << "\n";
+            if (paths)
+            {
+                std::cout << "path";
+                for (const auto &p : pts)
+                    std::cout << " " << std::setprecision(17) << p[0] << " " << p[1];
+                std::cout << std::setprecision(6) << "\n";
+            }
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))
