@@ -11,7 +11,8 @@
 
    mhplan_ompl_app [--time S] [--queries N] [--count C] [--resolution R] [--planners A,B,...]
                    [--params KEY=VALUE,...] [--seed N] [--verbose 1]
-   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks).
+   --verbose 1 also prints one line per run (query, planner, gap, first-solution time, time to 1 %, checks);
+   --verbose 2 also the circles ("disc x y r") and every returned path ("path x y x y ...").
  */
 #include "benchmarks/WorldFamilies.h"
 
@@ -75,11 +76,13 @@ namespace
         std::atomic<unsigned long> &count_;
     };
 
-    /** \brief Deepest penetration of the polyline into any disc, sampled every \e step (0 when free). */
+    /** \brief Deepest penetration of the polyline into any disc, sampled every \e step (0 when free); \e at
+        the arc length where it is. */
     double deepestCut(const std::vector<std::array<double, 2>> &pts, const std::vector<Disc> &discs,
-                      double step)
+                      double step, double &at)
     {
-        double deepest = 0.0;
+        double deepest = 0.0, before = 0.0;
+        at = 0.0;
         for (std::size_t i = 1; i < pts.size(); ++i)
         {
             const double dx = pts[i][0] - pts[i - 1][0], dy = pts[i][1] - pts[i - 1][1];
@@ -90,8 +93,13 @@ namespace
                 const double x = pts[i - 1][0] + dx * double(k) / double(n);
                 const double y = pts[i - 1][1] + dy * double(k) / double(n);
                 for (const Disc &d : discs)
-                    deepest = std::max(deepest, d.r - std::hypot(x - d.x, y - d.y));
+                    if (d.r - std::hypot(x - d.x, y - d.y) > deepest)
+                    {
+                        deepest = d.r - std::hypot(x - d.x, y - d.y);
+                        at = before + std::hypot(dx, dy) * double(k) / double(n);
+                    }
             }
+            before += std::hypot(dx, dy);
         }
         return deepest;
     }
@@ -140,7 +148,7 @@ int main(int argc, char **argv)
     double timeLimit = 1.0, resolution = 0.002;
     unsigned int queries = 20, count = 70;
     std::uint64_t seed = 31;
-    bool verbose = false;
+    bool verbose = false, paths = false;
     std::vector<std::string> planners = {"GA-MEM",          "SMA-MEM", "LRSMA-MEM", "MGO-MEM",
                                          "InformedRRTstar", "RRTstar", "ABITstar"};
     std::map<std::string, std::string> extra;
@@ -158,7 +166,10 @@ int main(int argc, char **argv)
         else if (key == "--planners")
             planners = splitList(value);
         else if (key == "--verbose")
+        {
             verbose = value != "0";
+            paths = value == "2";
+        }
         else if (key == "--seed")
             seed = static_cast<std::uint64_t>(std::atoll(value.c_str()));
         else if (key == "--params")
@@ -176,7 +187,7 @@ int main(int argc, char **argv)
         {
             std::cerr << "mhplan_ompl_app: unknown option '" << key
                       << "'; accepted: --time S, --queries N, --count C, --resolution R, --planners A,B,..., "
-                         "--params KEY=VALUE,..., --seed N, --verbose 0|1\n";
+                         "--params KEY=VALUE,..., --seed N, --verbose 0|1|2\n";
             return 1;
         }
     }
@@ -217,6 +228,10 @@ int main(int argc, char **argv)
               << resolution * std::hypot(world.bounds.width(), world.bounds.height()) << " m), " << timeLimit
               << " s per run\n";
 
+    if (paths)
+        for (const Disc &d : discs)
+            std::cout << "disc " << std::setprecision(17) << d.x << " " << d.y << " " << d.r
+                      << std::setprecision(6) << "\n";
     std::map<std::string, Row> rows;
     for (unsigned int q = 0; q < queries; ++q)
     {
@@ -293,7 +308,8 @@ int main(int argc, char **argv)
                 firstTime = ompl::time::seconds(ompl::time::now() - t0); // planners without callbacks
             if (std::isnan(within) && length <= 1.01 * optimum)
                 within = firstTime;
-            const double cut = deepestCut(pts, discs, 0.01);
+            double cutAt = 0.0;
+            const double cut = deepestCut(pts, discs, 0.01, cutAt);
             if (cut > 0.0)
             {
                 ++row.cut;
@@ -310,7 +326,19 @@ int main(int argc, char **argv)
                 std::cout << "run: query " << q << " " << name << " gap " << fixed(row.gaps.back(), 3)
                           << " % (optimum " << fixed(optimum, 3) << ") first " << fixed(firstTime, 4)
                           << " s within-1% " << fixed(within, 4) << " s state checks " << stateChecks.load()
-                          << " motion checks " << motionChecks.load() << "\n";
+                          << " motion checks " << motionChecks.load();
+            if (verbose && cut > 0.0)
+                std::cout << " cut " << fixed(1000.0 * cut, 3) << " mm at " << fixed(cutAt, 3) << " of "
+                          << fixed(length, 3) << " m";
+            if (verbose)
+                std::cout << "\n";
+            if (paths)
+            {
+                std::cout << "path";
+                for (const auto &p : pts)
+                    std::cout << " " << std::setprecision(17) << p[0] << " " << p[1];
+                std::cout << std::setprecision(6) << "\n";
+            }
             row.stateChecks.push_back(double(stateChecks.load()));
             row.motionChecks.push_back(double(motionChecks.load()));
             if (const auto mp = std::dynamic_pointer_cast<MemeticPlanner>(planner))

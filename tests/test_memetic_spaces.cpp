@@ -231,7 +231,9 @@ TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
     for (const Case &c :
          {Case{"validator_margin", "0.5", "1.5", "-0.1", "5", [&] { return mp->getValidatorMargin(); }},
           Case{"validator_clearance", "0.03", "0.1", "-0.01", "0.6",
-               [&] { return mp->getValidatorClearance(); }}})
+               [&] { return mp->getValidatorClearance(); }},
+          Case{"validator_min_clearance", "0.001", "0.002", "-0.01", "0.6",
+               [&] { return mp->getValidatorMinClearance(); }}})
     {
         EXPECT_EQ(p->params()[c.name].getValue(), c.byDefault) << c.name;
         ASSERT_TRUE(p->params().setParam(c.name, c.good)) << c.name;
@@ -246,6 +248,37 @@ TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
     EXPECT_NEAR(mp->marginDistance(), 1.5 * 0.01 * extent, 1e-12);
 }
 
+/** A 20 m square with the point checker \e valid, OMPL's DiscreteMotionValidator at resolution 0.02 (samples
+    0.57 m apart), start (1, 10), goal (19, \e goalY), path length; GA-MEM with \e params. */
+static std::shared_ptr<og::SimpleSetup> gapProblem(const std::function<bool(double, double)> &valid,
+                                                   double goalY,
+                                                   const std::map<std::string, std::string> &params)
+{
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 20.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker(
+        [valid](const ob::State *s)
+        {
+            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+            return valid(v[0], v[1]);
+        });
+    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+    si->setStateValidityCheckingResolution(0.02);
+    si->setup();
+    auto ss = std::make_shared<og::SimpleSetup>(si);
+    ob::ScopedState<> start(space), goal(space);
+    start[0] = 1.0;
+    start[1] = 10.0;
+    goal[0] = 19.0;
+    goal[1] = goalY;
+    ss->setStartAndGoalStates(start, goal);
+    ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+    ss->setPlanner(builtinPlanners().create("GA-MEM", si, params));
+    ss->setup();
+    return ss;
+}
+
 TEST(MemeticMargin, ANarrowGapStaysUsable)
 {
     // A wall across the square (0.8 m thick, wider than the sample spacing s = 0.57 m) with one gap of 0.5 m,
@@ -255,29 +288,9 @@ TEST(MemeticMargin, ANarrowGapStaysUsable)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     const auto valid = [](double x, double y)
     { return std::abs(x - 10.0) > 0.4 || std::abs(y - 10.0) < 0.25; };
-    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-    space->setBounds(0.0, 20.0);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker(
-        [&](const ob::State *s)
-        {
-            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-            return valid(v[0], v[1]);
-        });
-    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
-    si->setStateValidityCheckingResolution(0.02);
-    si->setup();
-    og::SimpleSetup ss(si);
-    ob::ScopedState<> start(space), goal(space);
-    start[0] = 1.0;
-    start[1] = 10.0;
-    goal[0] = 19.0;
-    goal[1] = 10.1;
-    ss.setStartAndGoalStates(start, goal);
-    ss.setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
-    ob::PlannerPtr p = builtinPlanners().create("GA-MEM", si, {{"seed", "3"}, {"max_iterations", "3"}});
-    ss.setPlanner(p);
-    ss.setup();
+    auto setup = gapProblem(valid, 10.1, {{"seed", "3"}, {"max_iterations", "3"}});
+    const og::SimpleSetup &ss = *setup;
+    const ob::PlannerPtr p = ss.getPlanner();
     ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION);
     const og::PathGeometric &path = ss.getSolutionPath();
     EXPECT_LT(path.length(), 18.01);
@@ -287,6 +300,40 @@ TEST(MemeticMargin, ANarrowGapStaysUsable)
         const double *b = path.getState(i)->as<ob::RealVectorStateSpace::StateType>()->values;
         for (int k = 0; k <= 1000; ++k)
             EXPECT_TRUE(valid(a[0] + (b[0] - a[0]) * k / 1000.0, a[1] + (b[1] - a[1]) * k / 1000.0));
+    }
+}
+
+TEST(MemeticMargin, APassageNarrowerThanTwiceTheClearanceStaysUsable)
+{
+    // Two discs of radius 1 m with a gap of 2 cm between them, narrower than twice the clearance (2 x 0.03 s
+    // = 3.4 cm, s = 0.57 m), on the shortest way (about 18.01 m; round the upper disc it is about 18.35 m):
+    // obstacles on both sides of the segment through the gap, so the margin halves the clearance there
+    // (validator_min_clearance, docs/variants.md) and a path through the gap (under 18.2 m) is returned,
+    // clear of both discs; with the clearance never halved no path through the gap passes the margin.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const auto valid = [](double x, double y)
+    { return std::hypot(x - 10.0, y - 11.01) >= 1.0 && std::hypot(x - 10.0, y - 8.99) >= 1.0; };
+    for (const char *least : {"0.001", "0"})
+    {
+        auto setup = gapProblem(
+            valid, 10.5, {{"seed", "3"}, {"max_iterations", "10"}, {"validator_min_clearance", least}});
+        const og::SimpleSetup &ss = *setup;
+        const ob::PlannerPtr p = ss.getPlanner();
+        ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << least;
+        const og::PathGeometric &path = ss.getSolutionPath();
+        if (std::string(least) == "0")
+        {
+            EXPECT_GT(path.length(), 18.2);
+            continue;
+        }
+        EXPECT_LT(path.length(), 18.2);
+        for (std::size_t i = 1; i < path.getStateCount(); ++i)
+        {
+            const double *a = path.getState(i - 1)->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double *b = path.getState(i)->as<ob::RealVectorStateSpace::StateType>()->values;
+            for (int k = 0; k <= 4000; ++k)
+                EXPECT_TRUE(valid(a[0] + (b[0] - a[0]) * k / 4000.0, a[1] + (b[1] - a[1]) * k / 4000.0));
+        }
     }
 }
 

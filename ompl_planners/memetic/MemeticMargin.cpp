@@ -18,9 +18,12 @@ namespace mhplan
     {
         // Cached verdicts: the motion validator's, and the margin's when it was asked for.
         constexpr char kInvalid = 0;
-        constexpr char kValid = 1;       // the validator accepts, the margin not checked yet
-        constexpr char kMarginValid = 2; // both accept
-        constexpr char kMarginInvalid = 3;
+        constexpr char kValid = 1;         // the validator accepts, the margin not checked yet
+        constexpr char kMarginValid = 2;   // both accept
+        constexpr char kMarginInvalid = 3; // the margin refuses (obstacles on both sides, or no clearance)
+        // 4 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
+        // halved k times (the level at which only that side found one).
+        constexpr char kMarginSided = 4;
     } // namespace
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
@@ -48,8 +51,20 @@ namespace mhplan
         if (!strict)
             return true;
         if (it->second == kValid)
-            it->second = marginValid(a, b) ? kMarginValid : kMarginInvalid;
+            it->second = marginValid(a, b) ? kMarginValid
+                         : hitSide_ == 0   ? kMarginInvalid
+                                           : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
         return it->second == kMarginValid;
+    }
+
+    int MemeticToolkit::refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const
+    {
+        const auto it = cache_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == cache_.end() || it->second < kMarginSided)
+            return 0;
+        const int code = it->second - kMarginSided;
+        clearance = std::ldexp(clearance_, -(code / 2));
+        return code % 2 == 0 ? 1 : -1;
     }
 
     bool MemeticToolkit::marginValid(const Vec2 &a, const Vec2 &b)
@@ -75,6 +90,8 @@ namespace mhplan
         const auto shifted = [&](double t, double offset)
         { return a + d * t + n * (offset * ((1.0 - t) * wa + t * wb)); };
         ++marginChecks_;
+        hitSide_ = 0;
+        hitLevel_ = 0;
         const double spacing = 2.0 * margin_;
         const auto samples = static_cast<unsigned int>(std::ceil(l / spacing));
         const double reach = spacing / l; // 2m along the segment, as a fraction of it
@@ -101,16 +118,35 @@ namespace mhplan
             return windows_.empty();
         for (const auto &w : windows_)
         {
-            const auto fine = std::max(
-                1u, static_cast<unsigned int>(std::ceil((w.second - w.first) * l / (2.0 * clearance_))));
-            for (unsigned int k = 0; k <= fine; ++k)
+            // The clearance adapts to the passage (docs/variants.md, "validator_min_clearance"): where the
+            // copies on both sides hit obstacles, the segment runs through a gap narrower than 2c; the
+            // window is checked again with c halved (copies every c), down to the smallest clearance. A
+            // segment that touches or enters an obstacle is refused at every level (the copy on that side
+            // enters it over a chord of at least twice the level's clearance), so only the clearance kept
+            // changes, never the guarantee.
+            hitLevel_ = 0;
+            for (double c = clearance_;; c *= 0.5, ++hitLevel_)
             {
-                const double t = w.first + (w.second - w.first) * double(k) / double(fine);
-                for (const double side : {1.0, -1.0})
+                const auto fine =
+                    std::max(1u, static_cast<unsigned int>(std::ceil((w.second - w.first) * l / (2.0 * c))));
+                bool hit[2] = {false, false};
+                for (unsigned int k = 0; k <= fine && !(hit[0] && hit[1]); ++k)
                 {
-                    const Vec2 p = shifted(t, side * clearance_);
-                    if (inBounds(p) && !checkPoint(p))
-                        return false;
+                    const double t = w.first + (w.second - w.first) * double(k) / double(fine);
+                    for (int side = 0; side < 2; ++side)
+                    {
+                        if (hit[side])
+                            continue;
+                        const Vec2 p = shifted(t, side == 0 ? c : -c);
+                        hit[side] = inBounds(p) && !checkPoint(p);
+                    }
+                }
+                if (!hit[0] && !hit[1])
+                    break; // this window passes
+                if (!(hit[0] && hit[1]) || minClearance_ <= 0.0 || 0.5 * c < minClearance_ * (1.0 - 1e-9))
+                {
+                    hitSide_ = hit[0] == hit[1] ? 0 : hit[0] ? 1 : -1;
+                    return false;
                 }
             }
         }
@@ -127,13 +163,16 @@ namespace mhplan
     {
         if (margin_ <= 0.0)
             return true;
-        // A path tightened against the validator alone touches obstacles at its turning waypoints, on the
-        // inner side of each turn. Push the waypoints of every segment the margin refuses outward (away from
-        // the chord of their neighbours) by 2c, 4c, ... until every segment passes; a segment between the
-        // start and the goal gets a midpoint, pushed to whichever side works.
+        // A path tightened against the validator alone touches obstacles. The margin says on which side of a
+        // refused segment it found the obstacle within the clearance (c, or c halved in a passage): the
+        // segment's movable ends are shifted away from it along the segment's normal by that clearance per
+        // round (halved down to twice the smallest clearance where that point is not valid: a narrow
+        // passage). Where the margin cannot tell the side (obstacles on both sides, or validator_clearance
+        // 0), the ends are pushed outward (away from the chord of their neighbours) by 2c, 4c, ...; a segment
+        // between the start and the goal gets a midpoint first.
         const StrictScope strict(*this);
         const double base = clearance_ > 0.0 ? 2.0 * clearance_ : margin_;
-        for (unsigned int round = 0; round < 8; ++round)
+        for (unsigned int round = 0; round < 12; ++round)
         {
             bool all = true;
             for (std::size_t i = 1; i < path.size(); ++i)
@@ -147,9 +186,19 @@ namespace mhplan
                     ++i;
                     continue;
                 }
+                double by = clearance_;
+                const int side = refusedSide(path[i - 1], path[i], by);
+                const Vec2 d = path[i] - path[i - 1];
+                const double l = norm(d);
                 for (const std::size_t j : {i - 1, i})
-                    if (j > 0 && j + 1 < path.size())
+                {
+                    if (j == 0 || j + 1 >= path.size())
+                        continue;
+                    if (side != 0 && l > 0.0)
+                        shiftAway(path, j, Vec2(d.y / l, -d.x / l) * double(side), by);
+                    else if (round < 8)
                         pushOut(path, j, base * double(1u << round));
+                }
             }
             if (all)
                 return true;
@@ -157,6 +206,23 @@ namespace mhplan
                 return false;
         }
         return pathValid(path);
+    }
+
+    void MemeticToolkit::shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step)
+    {
+        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
+        const StrictScope loose(*this, false);
+        for (double h = step;; h *= 0.5)
+        {
+            const Vec2 q = path[j] + dir * h;
+            if (pointValid(q) && motionValid(path[j - 1], q) && motionValid(q, path[j + 1]))
+            {
+                path[j] = q;
+                return;
+            }
+            if (0.5 * h < least * (1.0 - 1e-9))
+                return;
+        }
     }
 
     void MemeticToolkit::pushOut(MemeticPath &path, std::size_t j, double step)
@@ -175,17 +241,23 @@ namespace mhplan
             dir = Vec2(-c.y, c.x);
             l = std::sqrt(cc);
         }
+        // In a passage narrower than the push, the pushed point lands in the obstacle across it: halve the
+        // push down to twice the smallest clearance the margin accepts there.
+        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
+        const StrictScope loose(*this, false); // a pushed waypoint need only be valid; the margin is asked of
+                                               // the next round
         for (const double side : {1.0, -1.0})
         {
-            const Vec2 q = v + dir * (side * step / l);
-            const bool was = strict_;
-            strict_ = false; // a pushed waypoint need only be valid; the margin is asked of the next round
-            const bool ok = pointValid(q) && motionValid(u, q) && motionValid(q, w);
-            strict_ = was;
-            if (ok)
+            for (double h = step;; h *= 0.5)
             {
-                path[j] = q;
-                return;
+                const Vec2 q = v + dir * (side * h / l);
+                if (pointValid(q) && motionValid(u, q) && motionValid(q, w))
+                {
+                    path[j] = q;
+                    return;
+                }
+                if (0.5 * h < least * (1.0 - 1e-9))
+                    break;
             }
             if (!straight)
                 return;

@@ -45,6 +45,10 @@ namespace mhplan
         constexpr ParamRange kValidatorClearance{"validator_clearance", 0, 0.005, 0.5,
                                                  "clearance kept from the obstacles the margin finds, in "
                                                  "sample spacings (0 = refuse the segment)"};
+        constexpr ParamRange kValidatorMinClearance{
+            "validator_min_clearance", 0, 0.0005, 0.5,
+            "smallest clearance the margin keeps in a passage with obstacles on both sides, in sample "
+            "spacings (validator_clearance halved down to it; 0 = never halved)"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -84,6 +88,9 @@ namespace mhplan
                               &MemeticPlanner::getValidatorMargin);
         declareRanged<double>(params(), this, kValidatorClearance, &MemeticPlanner::setValidatorClearance,
                               &MemeticPlanner::getValidatorClearance);
+        declareRanged<double>(params(), this, kValidatorMinClearance,
+                              &MemeticPlanner::setValidatorMinClearance,
+                              &MemeticPlanner::getValidatorMinClearance);
 
         declareProgress(true);
         addPlannerProgressProperty("motion checks INTEGER",
@@ -163,6 +170,12 @@ namespace mhplan
     void MemeticPlanner::setValidatorClearance(double c)
     {
         storeChecked(kValidatorClearance, validatorClearance_, c);
+    }
+
+    void MemeticPlanner::setValidatorMinClearance(double c)
+    {
+        checkParameter(kValidatorMinClearance, c);
+        validatorMinClearance_ = c;
     }
 
     double MemeticPlanner::marginDistance() const

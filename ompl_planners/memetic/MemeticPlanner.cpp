@@ -99,7 +99,7 @@ namespace mhplan
         toolkit_->setBounds(box);
         toolkit_->setBisections(bisections_);
         const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
-        toolkit_->setMargin(margin, validatorClearance_ * spacing);
+        toolkit_->setMargin(margin, validatorClearance_ * spacing, validatorMinClearance_ * spacing);
         toolkit_->setFixedPoints(start_, goal_);
         toolkit_->resetCounts();
         toolkit_->clearCache(); // the margin and the fixed points are part of every cached verdict

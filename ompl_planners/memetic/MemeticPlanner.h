@@ -132,6 +132,10 @@ namespace mhplan
             refuse a segment with an obstacle within the margin; docs/variants.md). */
         void setValidatorClearance(double c);
         double getValidatorClearance() const { return validatorClearance_; }
+        /** \brief The smallest clearance, in sample spacings, the margin keeps in a passage with obstacles
+            on both sides (validator_clearance halved while at or above it; 0 = never; docs/variants.md). */
+        void setValidatorMinClearance(double c);
+        double getValidatorMinClearance() const { return validatorMinClearance_; }
         /** \brief The margin in the space's distance for the current motion validator: validator_margin x
             the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
         double marginDistance() const;
@@ -265,6 +269,7 @@ namespace mhplan
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
         double validatorClearance_{0.03};
+        double validatorMinClearance_{0.001};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         std::function<bool()> stop_;

@@ -72,11 +72,14 @@ namespace mhplan
             every 2m; 0: no margin at all), \e clearance the distance kept from the obstacles found (the
             copies shifted by it checked every 2 x clearance within 2m along the segment of where an obstacle
             was found; 0: a segment with an obstacle within m is refused, the plain sideways-copy margin). The
-            start and goal are never shifted. */
-        void setMargin(double m, double clearance = 0.0)
+            start and goal are never shifted. \e minClearance: where the copies on both sides of a window find
+            obstacles (a passage narrower than 2 x clearance) the clearance is halved for that window while it
+            stays at or above \e minClearance (0 or >= clearance: never). */
+        void setMargin(double m, double clearance = 0.0, double minClearance = 0.0)
         {
             margin_ = m;
             clearance_ = clearance;
+            minClearance_ = minClearance;
         }
         double margin() const { return margin_; }
         /** \brief The points never shifted by the margin (the query's start and goal). */
@@ -93,11 +96,14 @@ namespace mhplan
             reports, docs/variants.md); the search runs without it. */
         void setStrict(bool strict) { strict_ = strict; }
         bool strict() const { return strict_; }
-        /** \brief The strict mode for a scope. */
+        /** \brief The strict mode (or, with \e strict false, the loose one) for a scope. */
         class StrictScope
         {
           public:
-            explicit StrictScope(MemeticToolkit &t) : t_(t), old_(t.strict_) { t_.strict_ = true; }
+            explicit StrictScope(MemeticToolkit &t, bool strict = true) : t_(t), old_(t.strict_)
+            {
+                t_.strict_ = strict;
+            }
             ~StrictScope() { t_.strict_ = old_; }
             StrictScope(const StrictScope &) = delete;
             StrictScope &operator=(const StrictScope &) = delete;
@@ -107,7 +113,8 @@ namespace mhplan
             bool old_;
         };
         /** \brief Make \e path pass the strict mode: the waypoints of every segment the margin refuses are
-            pushed outward (away from their neighbours' chord, 2c, 4c, ... up to 8 rounds). True when every
+            pushed outward (away from their neighbours' chord, 2c, 4c, ... up to 8 rounds; a push whose point
+            is invalid is halved down to 2 x the smallest clearance, for narrow passages). True when every
             segment passes (always without a margin). */
         bool makeStrict(MemeticPath &path, const std::function<bool()> &stop);
         /** \brief Segments the margin checked (a check of its own, beside motionChecks()). */
@@ -216,10 +223,18 @@ namespace mhplan
         bool marginValid(const Vec2 &a, const Vec2 &b);
         bool checkPoint(const Vec2 &p);
         void pushOut(MemeticPath &path, std::size_t j, double step);
+        /** \brief Shift waypoint j by \e step along the unit \e dir (halved while the result is invalid). */
+        void shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step);
+        /** \brief The side (+1 left of a -> b, -1 right, 0 unknown) of the obstacle for which the margin
+            refused the segment (cached verdict), and in \e clearance the clearance it was refused at. */
+        int refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const;
+        int hitSide_{0};
+        int hitLevel_{0};
         bool strict_{false};
         unsigned long marginChecks_{0};
         double margin_{0.0};
         double clearance_{0.0};
+        double minClearance_{0.0};
         std::vector<std::pair<double, double>> windows_;
         Vec2 fixedA_, fixedB_;
 
