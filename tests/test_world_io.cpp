@@ -405,7 +405,7 @@ TEST(WorldFormats, ANewFormatIsOneParserAndOneRegistration)
     EXPECT_EQ(errorOf(good), good + ": unknown world file type '.rows'; accepted: .yaml, .yml, .map, .pgm");
     EXPECT_EQ(errorOf(dir), dir + ": is a directory, not a world file (.yaml, .yml, .map or .pgm)");
 
-    registerWorldFormat({{"rows"}, 1 << 20, parseRows});
+    registerWorldFormat({{"rows"}, 1 << 20, parseRows, ""});
     const World w = loadWorld(good);
     ASSERT_TRUE(w.isGrid());
     EXPECT_EQ(w.grid->width(), 4);
@@ -416,7 +416,7 @@ TEST(WorldFormats, ANewFormatIsOneParserAndOneRegistration)
     const std::string txt = std::string(MHPLAN_TEST_DATA_DIR) + "/worldio_not_a_world.txt";
     EXPECT_EQ(errorOf(txt),
               txt + ": unknown world file type '.txt'; accepted: .yaml, .yml, .map, .pgm, .rows");
-    EXPECT_THROW(registerWorldFormat({{"map"}, 1, parseRows}), std::invalid_argument);
+    EXPECT_THROW(registerWorldFormat({{"map"}, 1, parseRows, ""}), std::invalid_argument);
     EXPECT_FALSE(unregisterWorldFormat("yaml")); // built-in formats stay
     EXPECT_TRUE(unregisterWorldFormat("rows"));
     EXPECT_EQ(errorOf(good), good + ": unknown world file type '.rows'; accepted: .yaml, .yml, .map, .pgm");
