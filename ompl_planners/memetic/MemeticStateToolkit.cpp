@@ -63,6 +63,7 @@ namespace mhplan
     {
         motionChecks_ = stateChecks_ = cacheHits_ = 0;
         cache_.clear();
+        roadmapClear();
     }
 
     void MemeticStateToolkit::fromState(const ob::State *s, StatePoint &p) const
@@ -91,7 +92,20 @@ namespace mhplan
         ++motionChecks_;
         toState(a, a_);
         toState(b, b_);
-        const bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        if (ok && clearance_ > 0.0)
+        {
+            // The clearance kept between the validator's samples (docs/spaces.md): a tight motion that
+            // touches an obstacle between two samples has a sample nearer than the clearance.
+            const double d = si_->distance(a_, b_);
+            const auto n = static_cast<unsigned long>(std::ceil(d / clearanceSpacing_));
+            const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
+            for (unsigned long k = 1; k < n && ok; ++k)
+            {
+                si_->getStateSpace()->interpolate(a_, b_, double(k) / double(n), c_);
+                ok = checker->clearance(c_) >= clearance_;
+            }
+        }
         if (cache_.size() >= kCacheLimit)
             cache_.clear();
         cache_.emplace(key_, ok);
@@ -104,6 +118,15 @@ namespace mhplan
             if (!motionValid(path[i - 1], path[i]))
                 return false;
         return true;
+    }
+
+    void MemeticStateToolkit::setClearance(double c, double spacing)
+    {
+        const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
+        const bool computes =
+            checker && checker->getSpecs().clearanceComputationType != ob::StateValidityCheckerSpecs::NONE;
+        clearance_ = computes && spacing > 0.0 ? c : 0.0;
+        clearanceSpacing_ = spacing;
     }
 
     double MemeticStateToolkit::segmentCost(const StatePoint &a, const StatePoint &b)
@@ -546,6 +569,47 @@ namespace mhplan
             len = now;
         }
         return !stop();
+    }
+
+    bool MemeticStateToolkit::perturb(StatePath &path, double &step, unsigned int tries,
+                                      const std::function<bool()> &stop)
+    {
+        // Cost first: the objective's motion costs are far cheaper than a motion check (a certified validator
+        // steps along the whole motion), so a candidate that cannot lower the cost is never checked.
+        bool changed = false;
+        StatePoint w(param_.dimension());
+        for (std::size_t i = 1; i + 1 < path.size(); ++i)
+        {
+            if (stop())
+                return changed;
+            const StatePoint &a = path[i - 1], &b = path[i + 1];
+            const double now = segmentCost(a, path[i]) + segmentCost(path[i], b);
+            bool moved = false;
+            for (unsigned int k = 0; k < tries && !moved; ++k)
+            {
+                for (unsigned int c = 0; c < param_.dimension(); ++c)
+                {
+                    const double d = step * (param_.upper(c) - param_.lower(c));
+                    w[c] = path[i][c] + rng_.uniformReal(-d, d);
+                }
+                param_.enforce(w.data());
+                const double after = segmentCost(a, w) + segmentCost(w, b);
+                if (!(after < now - 1e-12 * now))
+                    continue;
+                if (!pointValid(w) || !motionValid(a, w) || !motionValid(w, b))
+                    continue;
+                path[i] = w;
+                moved = true;
+            }
+            if (moved)
+            {
+                changed = true;
+                step = std::min(0.1, 2.0 * step);
+            }
+            else
+                step = std::max(1e-6, 0.7 * step);
+        }
+        return changed;
     }
 
     void MemeticStateToolkit::resample(const StatePath &path, unsigned int n, StatePath &out,
