@@ -81,9 +81,22 @@ namespace mhplan
     {
         ++evaluationCount_;
         const double c = stateToolkit_->cost(path);
-        if (improves(c))
+        if (!improvesOn(c))
+            return c;
+        const StatePath *reported = &path;
+        StatePath strict;
+        if (stateToolkit_->strictNeeded())
         {
-            bestStates_ = path;
+            // A sampling validator and no clearance: a path is reported only when it passes the fine check
+            // (mended where it does not); one that cannot be mended counts as invalid (docs/spaces.md).
+            strict = path;
+            if (!stateToolkit_->makeStrict(strict, stop_))
+                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            reported = &strict;
+        }
+        if (improves(reported == &path ? c : stateToolkit_->cost(*reported)))
+        {
+            bestStates_ = *reported;
             reportImprovementOf(
                 bestStates_.size(), [this](ob::State *s, std::size_t i) { fillState(s, bestStates_[i]); },
                 bestCostObj_);

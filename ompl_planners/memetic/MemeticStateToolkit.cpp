@@ -63,6 +63,7 @@ namespace mhplan
     {
         motionChecks_ = stateChecks_ = cacheHits_ = 0;
         cache_.clear();
+        strictCache_.clear();
         roadmapClear();
     }
 
@@ -127,6 +128,66 @@ namespace mhplan
             checker && checker->getSpecs().clearanceComputationType != ob::StateValidityCheckerSpecs::NONE;
         clearance_ = computes && spacing > 0.0 ? c : 0.0;
         clearanceSpacing_ = spacing;
+        // No clearance to keep: reported paths are followed at the spacing c instead (makeStrict).
+        strictSpacing_ = !computes && spacing > 0.0 ? c : 0.0;
+        strictCache_.clear();
+    }
+
+    double MemeticStateToolkit::strictFailure(const StatePoint &a, const StatePoint &b)
+    {
+        key_.assign(a.begin(), a.end());
+        key_.insert(key_.end(), b.begin(), b.end());
+        const auto it = strictCache_.find(key_);
+        if (it != strictCache_.end())
+            return it->second;
+        toState(a, a_);
+        toState(b, b_);
+        const auto n = static_cast<unsigned long>(std::ceil(si_->distance(a_, b_) / strictSpacing_));
+        double failure = -1.0;
+        for (unsigned long k = 1; k < n && failure < 0.0; ++k)
+        {
+            const double t = double(k) / double(n);
+            si_->getStateSpace()->interpolate(a_, b_, t, c_);
+            ++stateChecks_;
+            if (!si_->isValid(c_))
+                failure = t;
+        }
+        if (strictCache_.size() >= kCacheLimit)
+            strictCache_.clear();
+        strictCache_.emplace(key_, failure);
+        return failure;
+    }
+
+    bool MemeticStateToolkit::makeStrict(StatePath &path, const std::function<bool()> &stop)
+    {
+        if (!strictNeeded())
+            return true;
+        StatePath out{path.front()};
+        StatePoint p, q;
+        for (std::size_t i = 1; i < path.size(); ++i)
+        {
+            if (stop())
+                return false;
+            const StatePoint a = out.back();
+            const double t = strictFailure(a, path[i]);
+            if (t >= 0.0)
+            {
+                interpolate(a, path[i], t, p);
+                bool mended = false;
+                for (int k = 0; k < 16 && !mended; ++k)
+                {
+                    sampleNear(p, margin_ * double(1 << (k / 4)), q);
+                    mended = pointValid(q) && motionValid(a, q) && motionValid(q, path[i]) &&
+                             strictFailure(a, q) < 0.0 && strictFailure(q, path[i]) < 0.0;
+                }
+                if (!mended)
+                    return false;
+                out.push_back(q);
+            }
+            out.push_back(path[i]);
+        }
+        path.swap(out);
+        return true;
     }
 
     double MemeticStateToolkit::segmentCost(const StatePoint &a, const StatePoint &b)
