@@ -2,15 +2,21 @@
 /* mhplan_space_table: every population planner that runs on any state space, and RRT*, on one problem per
    space: R^2 (bfo_case2), R^4 and R^6 (a hypersphere in [0,1]^k, as tests/test_nd.cpp), SE(2)
    (se2_narrow_passage), Dubins (dubins_circles), Reeds-Shepp (reeds_shepp_parking) and SE(3) (a stick among
-   balls, below), with a fixed time budget and fixed seeds; prints a Markdown table of the success rate (exact
-   paths that pass the independent check) and the median cost (the problem's objective) per planner and
-   space (docs/spaces.md).
+   balls, below; se3w: the rod through the hole of environments/3d/narrow_passage_se3.yaml, docs/worlds3d.md,
+   with its certified validator and the independent dense mesh check), with a fixed time budget and fixed
+   seeds; prints a Markdown table of the success rate (exact paths that pass the independent check) and the
+   median cost (the problem's objective) per planner and space (docs/spaces.md).
 
    mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...]
-                      [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3] */
+                      [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w] */
 #include "src/metrics/Metrics.h"
 #include "src/collision/Problem.h"
 #include "src/collision/RigidValidity.h"
+#include "src/collision/MeshRigidBody.h"
+#include "src/io/CfgIO.h"
+#include "src/io/InputFile.h"
+#include "src/io/World3dIO.h"
+#include "src/io/YamlReader.h"
 #include "src/io/WorldIO.h"
 #include "src/registry/Registry.h"
 
@@ -233,6 +239,28 @@ namespace
         return p;
     }
 
+    /** A 3D YAML world's first query (docs/worlds3d.md), checked by the dense mesh check at 1e-3 of the
+        volume's diagonal (as `mhplan plan`). */
+    Problem world3dProblemOf(const std::string &key, const std::string &label, const std::string &file)
+    {
+        const auto world = std::make_shared<const World3d>(
+            parseWorld3d(readInputFile(file, kMaxYamlBytes, "world file"), file));
+        auto loaded = std::make_shared<LoadedCfgProblem>(loadCfgProblem(world3dProblem(world, "")));
+        Problem p;
+        p.key = key;
+        p.label = label;
+        p.make = [loaded]() { return makeMeshSetup(loaded->spec); };
+        p.independentlyFree = [loaded](const og::SimpleSetup &ss)
+        {
+            const double step = 1e-3 * loaded->spec.volume.diagonal().norm();
+            long contact = -1;
+            denseMeshPathCheck(*loaded->spec.model, *ss.getSpaceInformation(), ss.getSolutionPath(), step,
+                               contact);
+            return contact < 0;
+        };
+        return p;
+    }
+
     std::string cell(std::size_t success, std::size_t runs, std::vector<double> costs,
                      const std::string &note)
     {
@@ -276,7 +304,7 @@ int main(int argc, char **argv)
         {
             std::cerr << "mhplan_space_table: unknown option '" << key
                       << "'; accepted: --time S, --seeds N, --environments DIR, --planners A,B,..., "
-                         "--problems r2,r4,r6,se2,dubins,reeds_shepp,se3\n";
+                         "--problems r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w\n";
             return 1;
         }
     }
@@ -299,6 +327,7 @@ int main(int argc, char **argv)
         worldProblem("reeds_shepp", "Reeds-Shepp (reeds_shepp_parking)",
                      environments + "/reeds_shepp_parking.yaml"),
         {"se3", "SE(3) (stick among balls)", se3Problem, se3Free},
+        world3dProblemOf("se3w", "SE(3) (narrow_passage_se3)", environments + "/3d/narrow_passage_se3.yaml"),
     };
     std::vector<Problem> problems;
     for (const Problem &p : all)
@@ -307,7 +336,8 @@ int main(int argc, char **argv)
             problems.push_back(p);
     if (problems.empty())
     {
-        std::cerr << "mhplan_space_table: --problems names none of r2,r4,r6,se2,dubins,reeds_shepp,se3\n";
+        std::cerr
+            << "mhplan_space_table: --problems names none of r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w\n";
         return 1;
     }
     const PlannerRegistry &registry = builtinPlanners();

@@ -57,6 +57,7 @@ namespace mhplan
         bestStates_.clear();
         closestStates_.clear();
         polishedStates_.clear();
+        perturbStep_ = 0.01;
         level_ = 0;
         noPath_ = false;
         fillCut_ = false;

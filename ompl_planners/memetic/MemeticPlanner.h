@@ -251,6 +251,10 @@ namespace mhplan
         void setupStateMode();
         bool prepareStateProblem(const ompl::base::State *start, const ompl::base::State *goal);
         bool walkStateIndividual(Individual &out);
+        /** \brief The next route of the lazy roadmap on states as a new path; false when it has none. */
+        bool roadmapStateIndividual(Individual &out);
+        /** \brief A path from a randomised connection (through a random valid state every other time). */
+        bool connectStateIndividual(Individual &out);
         bool improveAndEvaluateStates(Individual &ind);
         void polishEliteStates();
         void eliteReconnects();
@@ -283,6 +287,8 @@ namespace mhplan
         std::unique_ptr<MemeticStateToolkit> stateToolkit_;
         StatePoint startState_, goalState_;
         StatePath bestStates_, closestStates_, polishedStates_;
+        /** \brief The step of MemeticStateToolkit::perturb on the polished path (a share of each range). */
+        double perturbStep_{0.01};
         unsigned int level_{0};
         bool noPath_{false};
         bool fillCut_{false};

@@ -22,6 +22,10 @@ namespace mhplan
         constexpr unsigned int kConnectNodes = 5000;
         /** \brief Tree states of one re-connect of a piece (mutation, elite re-connects). */
         constexpr unsigned int kReconnectNodes = 2000;
+        /** \brief Samples of the first, small roadmap on states, and the most one epoch's roadmap draws (its
+            k-nearest search is quadratic in the samples). */
+        constexpr unsigned int kStateRoadmapFirst = 200;
+        constexpr unsigned int kStateRoadmapMax = 2000;
     } // namespace
 
     void MemeticPlanner::setupStateMode()
@@ -51,7 +55,9 @@ namespace mhplan
             stateToolkit_ = std::make_unique<MemeticStateToolkit>(si_, *param_, rng_);
         stateToolkit_->setObjective(pdef_->getOptimizationObjective());
         stateToolkit_->setBisections(bisections_);
-        stateToolkit_->setMargin(marginDistance());
+        const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
+        stateToolkit_->setMargin(margin);
+        stateToolkit_->setClearance(validatorClearance_ * spacing, spacing);
         stateToolkit_->resetCounts();
         stateToolkit_->fromState(start, startState_);
         stateToolkit_->fromState(goal, goalState_);
@@ -75,9 +81,22 @@ namespace mhplan
     {
         ++evaluationCount_;
         const double c = stateToolkit_->cost(path);
-        if (improves(c))
+        if (!improvesOn(c))
+            return c;
+        const StatePath *reported = &path;
+        StatePath strict;
+        if (stateToolkit_->strictNeeded())
         {
-            bestStates_ = path;
+            // A sampling validator and no clearance: a path is reported only when it passes the fine check
+            // (mended where it does not); one that cannot be mended counts as invalid (docs/spaces.md).
+            strict = path;
+            if (!stateToolkit_->makeStrict(strict, stop_))
+                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            reported = &strict;
+        }
+        if (improves(reported == &path ? c : stateToolkit_->cost(*reported)))
+        {
+            bestStates_ = *reported;
             reportImprovementOf(
                 bestStates_.size(), [this](ob::State *s, std::size_t i) { fillState(s, bestStates_[i]); },
                 bestCostObj_);
@@ -112,7 +131,62 @@ namespace mhplan
         return true;
     }
 
+    bool MemeticPlanner::roadmapStateIndividual(Individual &out)
+    {
+        // As the planar mode's roadmap (docs/spaces.md, "First paths: a lazy roadmap on states"): up to 2 N
+        // routes per (re)start; the first from a small roadmap, the next from the full one, drawn inside the
+        // incumbent's informed set; the connections take over when it has no route.
+        MemeticStateToolkit &tk = *stateToolkit_;
+        if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
+            return false;
+        const bool first = tk.roadmapSize() == 0;
+        if (roadmapStale_)
+        {
+            if (!tk.roadmapGrow(first ? kStateRoadmapFirst : std::min(roadmapSamples_, kStateRoadmapMax),
+                                startState_, goalState_, informedBound(), stop_))
+                return false;
+            roadmapStale_ = false;
+            smallRoadmap_ = first;
+        }
+        if (tk.roadmapPath(out.states, smallRoadmap_ ? 20 : 100, stop_))
+        {
+            ++roadmapPaths_;
+            ++walks_;
+            if (smallRoadmap_)
+                roadmapStale_ = true; // the next route from the full roadmap
+            return true;
+        }
+        if (stopRequested())
+            return false;
+        if (smallRoadmap_)
+        {
+            roadmapStale_ = true;
+            smallRoadmap_ = false;
+            return false;
+        }
+        roadmapAlive_ = false;
+        return false;
+    }
+
     bool MemeticPlanner::walkStateIndividual(Individual &out)
+    {
+        MemeticStateToolkit &tk = *stateToolkit_;
+        if (!roadmapStateIndividual(out))
+        {
+            if (stopRequested() || !connectStateIndividual(out))
+                return false;
+        }
+        if (!haveSolution_ && tk.pathValid(out.states))
+        {
+            // The first path is reported at once, before its local search.
+            if (stopRequested())
+                return false;
+            evaluate(out.states);
+        }
+        return improveAndEvaluateStates(out) && std::isfinite(out.cost);
+    }
+
+    bool MemeticPlanner::connectStateIndividual(Individual &out)
     {
         MemeticStateToolkit &tk = *stateToolkit_;
         const double range = 0.2 * tk.extent();
@@ -144,16 +218,7 @@ namespace mhplan
         else
             r = tk.connect(out.states, startState_, goalState_, range, kConnectNodes, uniform, stop_,
                            &closestStates_, &closestDistance_);
-        if (r != MemeticStateToolkit::ConnectResult::Found)
-            return false;
-        if (!haveSolution_ && tk.pathValid(out.states))
-        {
-            // The first path is reported at once, before its local search.
-            if (stopRequested())
-                return false;
-            evaluate(out.states);
-        }
-        return improveAndEvaluateStates(out) && std::isfinite(out.cost);
+        return r == MemeticStateToolkit::ConnectResult::Found;
     }
 
     void MemeticPlanner::polishEliteStates()
@@ -167,6 +232,11 @@ namespace mhplan
         }
         StatePath p = polishedStates_;
         tk.tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 4000, true);
+        // Then a random local search of the waypoints (cost first, docs/spaces.md): it moves headings and
+        // positions together where the pull moves' straight-line moves in the parametrisation stall (the car
+        // spaces).
+        if (!stopRequested())
+            tk.perturb(p, perturbStep_, 3, stop_);
         if (stopRequested() || !tk.pathValid(p))
             return;
         polishedStates_.swap(p);

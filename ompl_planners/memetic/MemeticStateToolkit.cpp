@@ -63,6 +63,8 @@ namespace mhplan
     {
         motionChecks_ = stateChecks_ = cacheHits_ = 0;
         cache_.clear();
+        strictCache_.clear();
+        roadmapClear();
     }
 
     void MemeticStateToolkit::fromState(const ob::State *s, StatePoint &p) const
@@ -91,7 +93,20 @@ namespace mhplan
         ++motionChecks_;
         toState(a, a_);
         toState(b, b_);
-        const bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        if (ok && clearance_ > 0.0)
+        {
+            // The clearance kept between the validator's samples (docs/spaces.md): a tight motion that
+            // touches an obstacle between two samples has a sample nearer than the clearance.
+            const double d = si_->distance(a_, b_);
+            const auto n = static_cast<unsigned long>(std::ceil(d / clearanceSpacing_));
+            const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
+            for (unsigned long k = 1; k < n && ok; ++k)
+            {
+                si_->getStateSpace()->interpolate(a_, b_, double(k) / double(n), c_);
+                ok = checker->clearance(c_) >= clearance_;
+            }
+        }
         if (cache_.size() >= kCacheLimit)
             cache_.clear();
         cache_.emplace(key_, ok);
@@ -103,6 +118,75 @@ namespace mhplan
         for (std::size_t i = 1; i < path.size(); ++i)
             if (!motionValid(path[i - 1], path[i]))
                 return false;
+        return true;
+    }
+
+    void MemeticStateToolkit::setClearance(double c, double spacing)
+    {
+        const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
+        const bool computes =
+            checker && checker->getSpecs().clearanceComputationType != ob::StateValidityCheckerSpecs::NONE;
+        clearance_ = computes && spacing > 0.0 ? c : 0.0;
+        clearanceSpacing_ = spacing;
+        // No clearance to keep: reported paths are followed at the spacing c instead (makeStrict).
+        strictSpacing_ = !computes && spacing > 0.0 ? c : 0.0;
+        strictCache_.clear();
+    }
+
+    double MemeticStateToolkit::strictFailure(const StatePoint &a, const StatePoint &b)
+    {
+        key_.assign(a.begin(), a.end());
+        key_.insert(key_.end(), b.begin(), b.end());
+        const auto it = strictCache_.find(key_);
+        if (it != strictCache_.end())
+            return it->second;
+        toState(a, a_);
+        toState(b, b_);
+        const auto n = static_cast<unsigned long>(std::ceil(si_->distance(a_, b_) / strictSpacing_));
+        double failure = -1.0;
+        for (unsigned long k = 1; k < n && failure < 0.0; ++k)
+        {
+            const double t = double(k) / double(n);
+            si_->getStateSpace()->interpolate(a_, b_, t, c_);
+            ++stateChecks_;
+            if (!si_->isValid(c_))
+                failure = t;
+        }
+        if (strictCache_.size() >= kCacheLimit)
+            strictCache_.clear();
+        strictCache_.emplace(key_, failure);
+        return failure;
+    }
+
+    bool MemeticStateToolkit::makeStrict(StatePath &path, const std::function<bool()> &stop)
+    {
+        if (!strictNeeded())
+            return true;
+        StatePath out{path.front()};
+        StatePoint p, q;
+        for (std::size_t i = 1; i < path.size(); ++i)
+        {
+            if (stop())
+                return false;
+            const StatePoint a = out.back();
+            const double t = strictFailure(a, path[i]);
+            if (t >= 0.0)
+            {
+                interpolate(a, path[i], t, p);
+                bool mended = false;
+                for (int k = 0; k < 16 && !mended; ++k)
+                {
+                    sampleNear(p, margin_ * double(1 << (k / 4)), q);
+                    mended = pointValid(q) && motionValid(a, q) && motionValid(q, path[i]) &&
+                             strictFailure(a, q) < 0.0 && strictFailure(q, path[i]) < 0.0;
+                }
+                if (!mended)
+                    return false;
+                out.push_back(q);
+            }
+            out.push_back(path[i]);
+        }
+        path.swap(out);
         return true;
     }
 
@@ -546,6 +630,47 @@ namespace mhplan
             len = now;
         }
         return !stop();
+    }
+
+    bool MemeticStateToolkit::perturb(StatePath &path, double &step, unsigned int tries,
+                                      const std::function<bool()> &stop)
+    {
+        // Cost first: the objective's motion costs are far cheaper than a motion check (a certified validator
+        // steps along the whole motion), so a candidate that cannot lower the cost is never checked.
+        bool changed = false;
+        StatePoint w(param_.dimension());
+        for (std::size_t i = 1; i + 1 < path.size(); ++i)
+        {
+            if (stop())
+                return changed;
+            const StatePoint &a = path[i - 1], &b = path[i + 1];
+            const double now = segmentCost(a, path[i]) + segmentCost(path[i], b);
+            bool moved = false;
+            for (unsigned int k = 0; k < tries && !moved; ++k)
+            {
+                for (unsigned int c = 0; c < param_.dimension(); ++c)
+                {
+                    const double d = step * (param_.upper(c) - param_.lower(c));
+                    w[c] = path[i][c] + rng_.uniformReal(-d, d);
+                }
+                param_.enforce(w.data());
+                const double after = segmentCost(a, w) + segmentCost(w, b);
+                if (!(after < now - 1e-12 * now))
+                    continue;
+                if (!pointValid(w) || !motionValid(a, w) || !motionValid(w, b))
+                    continue;
+                path[i] = w;
+                moved = true;
+            }
+            if (moved)
+            {
+                changed = true;
+                step = std::min(0.1, 2.0 * step);
+            }
+            else
+                step = std::max(1e-6, 0.7 * step);
+        }
+        return changed;
     }
 
     void MemeticStateToolkit::resample(const StatePath &path, unsigned int n, StatePath &out,

@@ -65,6 +65,19 @@ namespace mhplan
         /** \brief The validator margin (space distance, 0: none): a pull move the motion validator blocks
             stops this far short of the blocked position (docs/spaces.md). */
         void setMargin(double m) { margin_ = m; }
+        /** \brief With a sampling motion validator whose validity checker computes clearance: a motion is
+            valid only when, besides the validator's verdict, the states every \e spacing along it (its ends
+            excepted) keep clearance \e c (0: off; docs/spaces.md). */
+        void setClearance(double c, double spacing);
+        /** \brief Whether reported paths must pass strictValid() (a sampling validator whose checker computes
+            no clearance). */
+        bool strictNeeded() const { return strictSpacing_ > 0.0; }
+        /** \brief Make \e path pass the fine check (docs/spaces.md): each motion is followed at the fine
+            spacing (the clearance the planner would keep, validator_clearance sample spacings) with the
+            validity checker; a motion that fails there gets a valid state drawn near its first failing state
+            (every coordinate within 1, 2, 4, 8 margins), kept when both new motions pass the validator and
+            the fine check. False when a motion could not be mended (or when stopped). Verdicts cached. */
+        bool makeStrict(StatePath &path, const std::function<bool()> &stop);
 
         unsigned int dimension() const { return param_.dimension(); }
         const StateParametrisation &parametrisation() const { return param_; }
@@ -88,6 +101,7 @@ namespace mhplan
         unsigned long motionChecks() const { return motionChecks_; }
         unsigned long stateChecks() const { return stateChecks_; }
         unsigned long cacheHits() const { return cacheHits_; }
+        /** \brief Zero the counts, forget the cached verdicts and the roadmap (a new problem). */
         void resetCounts();
 
         enum class ConnectResult
@@ -117,6 +131,32 @@ namespace mhplan
             costlier). */
         bool tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
                      const std::function<bool()> &stop, unsigned int maxPoints = 2000, bool precise = false);
+
+        /** \brief Random local search of the waypoints (a (1+1) evolution strategy per waypoint,
+           docs/spaces.md): \e tries candidates per interior waypoint drawn with every coordinate within \e
+           step x its parametrisation range of the waypoint's; a candidate's cost through its neighbours is
+           computed first, and only one that lowers it is checked (isValid, then both motions). \e step
+           doubles after a success and shrinks by 0.7 after a waypoint's failures, within [1e-6, 0.1]. False
+           when nothing moved. */
+        bool perturb(StatePath &path, double &step, unsigned int tries, const std::function<bool()> &stop);
+
+        /** \brief The lazy roadmap of the state mode (docs/spaces.md, "First paths: a lazy roadmap on
+           states"): forget every sample. */
+        void roadmapClear();
+        /** \brief Rebuild the roadmap on \e start, \e goal, the kept samples and \e n new valid ones
+           (uniform, the parametrisation's draw), only inside the informed set of cost \e bound
+           (distance(start, q) + distance(q, goal) < bound; infinity: everywhere); directed edges from every
+           state to its k nearest (k = e (1 + 1/d) ln n, PRM*'s), and from its k nearest to it, none checked
+           yet. False when stopped. */
+        bool roadmapGrow(unsigned int n, const StatePoint &start, const StatePoint &goal, double bound,
+                         const std::function<bool()> &stop);
+        /** \brief The next route of the roadmap: the cheapest under the penalties (A*, the space's distance
+           to the goal as heuristic when the objective is path length), its unknown edges checked by the
+           motion validator in their direction, refused ones removed, repeated; the route's states and their
+            neighbours are penalised (an edge costs c (1 + (p_a + p_b) / 2)) so the next route goes another
+            way. False when the goal is cut off, after \e maxInvalid refused routes, or when stopped. */
+        bool roadmapPath(StatePath &path, unsigned int maxInvalid, const std::function<bool()> &stop);
+        std::size_t roadmapSize() const { return rmPoints_.size(); }
 
         /** \brief Crossover at states where \e a and \e b (resampled at 48 states each) pass within
             \e radius: a[..p] -> b[q..] or a[..p1] -> b[q1..q2] -> a[p2..], the joints checked. */
@@ -161,6 +201,12 @@ namespace mhplan
         ompl::base::OptimizationObjectivePtr opt_;
         unsigned int bisections_{10};
         double margin_{0.0};
+        double clearance_{0.0};
+        double strictSpacing_{0.0};
+        /** \brief The fine check of a -> b: -1 when every state passes, else the first failing fraction. */
+        double strictFailure(const StatePoint &a, const StatePoint &b);
+        std::unordered_map<std::vector<double>, double, KeyHash> strictCache_;
+        double clearanceSpacing_{0.0};
         ompl::base::State *a_{nullptr};
         ompl::base::State *b_{nullptr};
         ompl::base::State *c_{nullptr};
@@ -168,6 +214,18 @@ namespace mhplan
         unsigned long stateChecks_{0};
         unsigned long cacheHits_{0};
         std::unordered_map<std::vector<double>, bool, KeyHash> cache_;
+        // The lazy roadmap: states (0 = start, 1 = goal), directed edges (state 0 unknown, 1 valid, 2
+        // refused).
+        struct RoadmapEdge
+        {
+            std::uint32_t from, to;
+            double cost;
+            char state;
+        };
+        StatePath rmPoints_;
+        std::vector<RoadmapEdge> rmEdges_;
+        std::vector<std::vector<std::uint32_t>> rmOut_;
+        std::vector<double> rmPenalty_;
         std::vector<double> key_;
     };
 } // namespace mhplan
