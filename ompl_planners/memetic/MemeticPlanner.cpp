@@ -303,37 +303,54 @@ namespace mhplan
         // roadmap has no route, and the next epoch's roadmap has twice the samples. The very first route
         // comes from a small roadmap (kRoadmapFirst samples, a few milliseconds); then the roadmap grows to
         // roadmapSamples_ new samples inside the first path's informed set.
+        const RoadmapStep step = nextRoadmapRoute(
+            toolkit_->roadmapSize() == 0, kRoadmapFirst, roadmapSamples_,
+            [&](unsigned int samples)
+            {
+                toolkit_->roadmapGrow(samples, start_, goal_, informedBound());
+                return true;
+            },
+            [&](unsigned int maxInvalid) { return toolkit_->roadmapPath(out.path, maxInvalid, stop_); });
+        if (step == RoadmapStep::GaveUp)
+            roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
+        return step == RoadmapStep::Route;
+    }
+
+    MemeticPlanner::RoadmapStep
+    MemeticPlanner::nextRoadmapRoute(bool first, unsigned int firstSamples, unsigned int samples,
+                                     const std::function<bool(unsigned int)> &grow,
+                                     const std::function<bool(unsigned int)> &route)
+    {
         if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
-            return false;
-        const bool first = toolkit_->roadmapSize() == 0;
+            return RoadmapStep::None;
         if (roadmapStale_)
         {
-            toolkit_->roadmapGrow(first ? kRoadmapFirst : roadmapSamples_, start_, goal_, informedBound());
+            if (!grow(first ? firstSamples : samples))
+                return RoadmapStep::None;
             roadmapStale_ = false;
             smallRoadmap_ = first;
         }
         // Refused routes before the roadmap is given up (a roadmap cut in two refuses route after route).
-        const unsigned int maxInvalid = smallRoadmap_ ? 20 : 100;
-        if (toolkit_->roadmapPath(out.path, maxInvalid, stop_))
+        if (route(smallRoadmap_ ? 20 : 100))
         {
             ++roadmapPaths_;
             ++walks_;
             if (smallRoadmap_)
                 roadmapStale_ = true; // the next route from the full roadmap
-            return true;
+            return RoadmapStep::Route;
         }
         if (stopRequested())
-            return false;
+            return RoadmapStep::None;
         if (smallRoadmap_)
         {
-            // The small roadmap had no route (cluttered worlds): a walk this time, the full roadmap next.
+            // The small roadmap had no route (cluttered worlds): another way this time, the full roadmap
+            // next.
             roadmapStale_ = true;
             smallRoadmap_ = false;
-            return false;
+            return RoadmapStep::None;
         }
         roadmapAlive_ = false;
-        roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
-        return false;
+        return RoadmapStep::GaveUp;
     }
 
     bool MemeticPlanner::finishWalk(Individual &out)

@@ -228,6 +228,19 @@ namespace mhplan
         static constexpr unsigned int kRoadmapMaxSamples = 8000;
         /** \brief The next route of the lazy roadmap as a new path (planar); false when it has none. */
         bool roadmapIndividual(Individual &out);
+        /** \brief What nextRoadmapRoute did: a route, none this time, or the roadmap given up. */
+        enum class RoadmapStep
+        {
+            Route,
+            None,
+            GaveUp
+        };
+        /** \brief The lazy roadmap's schedule, one for both modes (docs/variants.md, "First paths: a lazy
+            roadmap"): \e grow(samples) (re)builds the roadmap with that many new samples (false: stopped),
+            \e route(maxInvalid) takes its next route; \e first: no roadmap yet. */
+        RoadmapStep nextRoadmapRoute(bool first, unsigned int firstSamples, unsigned int samples,
+                                     const std::function<bool(unsigned int)> &grow,
+                                     const std::function<bool(unsigned int)> &route);
         /** \brief The first path is reported at once; then the coarse local search and the evaluation. */
         bool finishWalk(Individual &out);
         /** \brief The incumbent's cost when the objective is path length (then the informed set bounds

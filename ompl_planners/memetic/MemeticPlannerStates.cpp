@@ -137,35 +137,12 @@ namespace mhplan
         // routes per (re)start; the first from a small roadmap, the next from the full one, drawn inside the
         // incumbent's informed set; the connections take over when it has no route.
         MemeticStateToolkit &tk = *stateToolkit_;
-        if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
-            return false;
-        const bool first = tk.roadmapSize() == 0;
-        if (roadmapStale_)
-        {
-            if (!tk.roadmapGrow(first ? kStateRoadmapFirst : std::min(roadmapSamples_, kStateRoadmapMax),
-                                startState_, goalState_, informedBound(), stop_))
-                return false;
-            roadmapStale_ = false;
-            smallRoadmap_ = first;
-        }
-        if (tk.roadmapPath(out.states, smallRoadmap_ ? 20 : 100, stop_))
-        {
-            ++roadmapPaths_;
-            ++walks_;
-            if (smallRoadmap_)
-                roadmapStale_ = true; // the next route from the full roadmap
-            return true;
-        }
-        if (stopRequested())
-            return false;
-        if (smallRoadmap_)
-        {
-            roadmapStale_ = true;
-            smallRoadmap_ = false;
-            return false;
-        }
-        roadmapAlive_ = false;
-        return false;
+        return nextRoadmapRoute(
+                   tk.roadmapSize() == 0, kStateRoadmapFirst, std::min(roadmapSamples_, kStateRoadmapMax),
+                   [&](unsigned int samples)
+                   { return tk.roadmapGrow(samples, startState_, goalState_, informedBound(), stop_); },
+                   [&](unsigned int maxInvalid)
+                   { return tk.roadmapPath(out.states, maxInvalid, stop_); }) == RoadmapStep::Route;
     }
 
     bool MemeticPlanner::walkStateIndividual(Individual &out)

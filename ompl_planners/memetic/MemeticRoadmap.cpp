@@ -4,6 +4,7 @@
    the edges of a found route checked. Part of MemeticToolkit; its path operators are in MemeticToolkit.cpp.
  */
 #include "ompl_planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/memetic/RoadmapSearch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -124,7 +125,6 @@ namespace mhplan
         const std::size_t m = rmPoints_.size();
         if (m < 2)
             return false;
-        constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
         std::vector<double> g(m);
         std::vector<std::uint32_t> via(m);
         std::vector<std::uint32_t> nodes;
@@ -133,43 +133,16 @@ namespace mhplan
         std::vector<double> h(m);
         for (std::size_t v = 0; v < m; ++v)
             h[v] = std::sqrt(squaredNorm(rmPoints_[v] - goal));
-        using Entry = std::pair<double, std::uint32_t>;
         while (true)
         {
             if (stop())
                 return false;
             // A* from 0 to 1 under the penalties (weights >= lengths: the distance to the goal is
             // admissible).
-            std::fill(g.begin(), g.end(), std::numeric_limits<double>::infinity());
-            std::fill(via.begin(), via.end(), none);
-            std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-            g[0] = 0.0;
-            open.push({h[0], 0u});
-            while (!open.empty())
-            {
-                const Entry e = open.top();
-                open.pop();
-                const std::uint32_t u = e.second;
-                if (u == 1)
-                    break;
-                if (e.first > g[u] + h[u] * (1.0 + 1e-12))
-                    continue;
-                for (const std::uint32_t id : rmAdjacent_[u])
-                {
-                    const RoadmapEdge &edge = rmEdges_[id];
-                    if (edge.state == 2)
-                        continue;
-                    const std::uint32_t v = edge.a == u ? edge.b : edge.a;
-                    const double w = edge.length * (1.0 + 0.5 * (rmPenalty_[u] + rmPenalty_[v]));
-                    if (g[u] + w < g[v])
-                    {
-                        g[v] = g[u] + w;
-                        via[v] = id;
-                        open.push({g[v] + h[v], v});
-                    }
-                }
-            }
-            if (!std::isfinite(g[1]))
+            if (!penalisedRoadmapSearch(
+                    rmAdjacent_, rmEdges_,
+                    [](const RoadmapEdge &edge, std::uint32_t u) { return edge.a == u ? edge.b : edge.a; },
+                    [](const RoadmapEdge &edge) { return edge.length; }, h, rmPenalty_, g, via))
                 return false; // cut off in the roadmap
             nodes.clear();
             std::vector<std::uint32_t> edges;

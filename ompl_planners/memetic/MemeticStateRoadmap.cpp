@@ -4,6 +4,7 @@
    distance, A* routes under route penalties, only the edges of a found route checked (in their direction).
    Part of MemeticStateToolkit. */
 #include "ompl_planners/memetic/MemeticStateToolkit.h"
+#include "ompl_planners/memetic/RoadmapSearch.h"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 
@@ -133,7 +134,6 @@ namespace mhplan
         const std::size_t m = rmPoints_.size();
         if (m < 2)
             return false;
-        constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
         // The space's distance to the goal bounds the remaining length from below: admissible for path length
         // only (other objectives: Dijkstra).
         const bool length =
@@ -146,41 +146,13 @@ namespace mhplan
         std::vector<std::uint32_t> via(m);
         std::vector<std::uint32_t> nodes, edges;
         unsigned int refused = 0;
-        using Entry = std::pair<double, std::uint32_t>;
         while (true)
         {
             if (stop())
                 return false;
-            std::fill(g.begin(), g.end(), std::numeric_limits<double>::infinity());
-            std::fill(via.begin(), via.end(), none);
-            std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-            g[0] = 0.0;
-            open.push({h[0], 0u});
-            while (!open.empty())
-            {
-                const Entry e = open.top();
-                open.pop();
-                const std::uint32_t u = e.second;
-                if (u == 1)
-                    break;
-                if (e.first > g[u] + h[u] * (1.0 + 1e-12))
-                    continue;
-                for (const std::uint32_t id : rmOut_[u])
-                {
-                    const RoadmapEdge &edge = rmEdges_[id];
-                    if (edge.state == 2)
-                        continue;
-                    const std::uint32_t v = edge.to;
-                    const double w = edge.cost * (1.0 + 0.5 * (rmPenalty_[u] + rmPenalty_[v]));
-                    if (g[u] + w < g[v])
-                    {
-                        g[v] = g[u] + w;
-                        via[v] = id;
-                        open.push({g[v] + h[v], v});
-                    }
-                }
-            }
-            if (!std::isfinite(g[1]))
+            if (!penalisedRoadmapSearch(
+                    rmOut_, rmEdges_, [](const RoadmapEdge &edge, std::uint32_t) { return edge.to; },
+                    [](const RoadmapEdge &edge) { return edge.cost; }, h, rmPenalty_, g, via))
                 return false; // the goal is cut off in the roadmap
             nodes.clear();
             edges.clear();
