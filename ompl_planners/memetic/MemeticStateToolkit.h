@@ -174,6 +174,8 @@ namespace mhplan
                       std::vector<std::size_t> *segments);
 
       private:
+        /** \brief Drop consecutive duplicates (zero-length motions a piece split at a waypoint leaves). */
+        static void dedupe(StatePath &path);
         /** \brief One pass of drops and pull moves over the dirty waypoints; \e held marks those that could
             not move. */
         bool pullPass(StatePath &path, std::vector<char> &dirty, std::vector<char> &held,
