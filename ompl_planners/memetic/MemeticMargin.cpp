@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <utility>
 
@@ -21,9 +22,16 @@ namespace mhplan
         constexpr char kValid = 1;         // the validator accepts, the margin not checked yet
         constexpr char kMarginValid = 2;   // both accept
         constexpr char kMarginInvalid = 3; // the margin refuses (obstacles on both sides, or no clearance)
-        // 4 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
+        constexpr char kFineValid = 4;     // the margin accepts, and so does the fine check
+        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (fineFailures_)
+        // 8 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
         // halved k times (the level at which only that side found one).
-        constexpr char kMarginSided = 4;
+        constexpr char kMarginSided = 8;
+
+        bool marginAccepts(char code)
+        {
+            return code == kMarginValid || code == kFineValid || code == kFineInvalid;
+        }
     } // namespace
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
@@ -41,7 +49,7 @@ namespace mhplan
             setStatePosition(b_, b);
             const bool valid = si_->checkMotion(a_, b_);
             if (cache_.size() >= (std::size_t(1) << 20))
-                cache_.clear();
+                clearCache();
             it = cache_.emplace(key, valid ? kValid : kInvalid).first;
         }
         else if (it->second == kInvalid || !strict || it->second != kValid)
@@ -54,7 +62,7 @@ namespace mhplan
             it->second = marginValid(a, b) ? kMarginValid
                          : hitSide_ == 0   ? kMarginInvalid
                                            : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
-        return it->second == kMarginValid;
+        return marginAccepts(it->second);
     }
 
     int MemeticToolkit::refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const
@@ -85,10 +93,19 @@ namespace mhplan
         if (l <= 0.0)
             return true;
         const Vec2 n(-d.y / l, d.x / l);
-        const double wa = a == fixedA_ || a == fixedB_ ? 0.0 : 1.0;
-        const double wb = b == fixedA_ || b == fixedB_ ? 0.0 : 1.0;
+        // The copies fan out from a fixed end over min(s, l) (over the whole segment without s): beyond s
+        // from the start and the goal they are at their full offset, so the chord argument holds there.
+        const bool fa = a == fixedA_ || a == fixedB_, fb = b == fixedA_ || b == fixedB_;
+        const double ramp = spacing_ > 0.0 ? std::min(spacing_, l) : l;
         const auto shifted = [&](double t, double offset)
-        { return a + d * t + n * (offset * ((1.0 - t) * wa + t * wb)); };
+        {
+            double w = 1.0;
+            if (fa)
+                w = std::min(w, t * l / ramp);
+            if (fb)
+                w = std::min(w, (1.0 - t) * l / ramp);
+            return a + d * t + n * (offset * w);
+        };
         ++marginChecks_;
         hitSide_ = 0;
         hitLevel_ = 0;
@@ -170,6 +187,8 @@ namespace mhplan
         // passage). Where the margin cannot tell the side (obstacles on both sides, or validator_clearance
         // 0), the ends are pushed outward (away from the chord of their neighbours) by 2c, 4c, ...; a segment
         // between the start and the goal gets a midpoint first.
+        // A segment the margin accepts then gets the fine check (docs/variants.md, "The fine check"); one it
+        // refuses gets a waypoint beside its first failing sample.
         const StrictScope strict(*this);
         const double base = clearance_ > 0.0 ? 2.0 * clearance_ : margin_;
         for (unsigned int round = 0; round < 12; ++round)
@@ -178,7 +197,14 @@ namespace mhplan
             for (std::size_t i = 1; i < path.size(); ++i)
             {
                 if (motionValid(path[i - 1], path[i]))
+                {
+                    if (reportableSegment(path[i - 1], path[i]))
+                        continue;
+                    all = false;
+                    if (mendBeside(path, i))
+                        ++i; // the new segment i -> i + 1 is checked in the next round
                     continue;
+                }
                 all = false;
                 if (i == 1 && i + 1 == path.size())
                 {
@@ -205,7 +231,115 @@ namespace mhplan
             if (stop())
                 return false;
         }
-        return pathValid(path);
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!reportableSegment(path[i - 1], path[i]))
+                return false;
+        return true;
+    }
+
+    void MemeticToolkit::makeReportablePrefix(MemeticPath &path)
+    {
+        if (margin_ <= 0.0 || path.size() < 2)
+            return;
+        makeStrict(path, [] { return false; });
+        const StrictScope strict(*this);
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!reportableSegment(path[i - 1], path[i]))
+            {
+                path.resize(i);
+                return;
+            }
+    }
+
+    bool MemeticToolkit::reportableSegment(const Vec2 &a, const Vec2 &b)
+    {
+        // The fine check (docs/variants.md, "The fine check"): once per segment the margin accepts, the
+        // validity checker every fineStep_ along it. The sideways copies see obstacles a segment touches
+        // when their chord exceeds the copies' spacing (discs, corners of 90 degrees or more); an acute tip
+        // (a star's) may cross the segment between all of their samples, and near the start and the goal the
+        // copies fan in. The fine check sees whatever the segment crosses over more than its step.
+        if (!motionValid(a, b))
+            return false;
+        if (fineStep_ <= 0.0 || !strict_)
+            return true;
+        const SegmentKey key{a.x, a.y, b.x, b.y};
+        const auto it = cache_.find(key);
+        if (it == cache_.end())
+            return false; // not reached: motionValid() cached the verdict
+        if (it->second == kMarginValid)
+        {
+            double t = 0.0;
+            const bool ok = fineCheck(a, b, t);
+            it->second = ok ? kFineValid : kFineInvalid;
+            if (!ok)
+                fineFailures_[key] = t;
+        }
+        return it->second == kFineValid;
+    }
+
+    bool MemeticToolkit::fineCheck(const Vec2 &a, const Vec2 &b, double &t, double from, double to)
+    {
+        // The samples a + (b - a) k / K, K = ceil(l / step): the step is validator_fine_step x s, a share of
+        // the validator's spacing, never the caller's (docs/variants.md).
+        const Vec2 d = b - a;
+        const double l = norm(d);
+        const auto pieces = static_cast<std::size_t>(std::ceil(l / fineStep_));
+        for (std::size_t k = 1; k < pieces; ++k)
+        {
+            const double u = static_cast<double>(k) / static_cast<double>(pieces);
+            if (u * l < from || u * l > to)
+                continue;
+            if (!checkPoint(a + d * u))
+            {
+                t = u;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    bool MemeticToolkit::mendBeside(MemeticPath &path, std::size_t i)
+    {
+        const Vec2 a = path[i - 1], b = path[i];
+        const auto it = fineFailures_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == fineFailures_.end())
+            return false;
+        const Vec2 d = b - a;
+        const double l = norm(d);
+        if (l <= 0.0)
+            return false;
+        const Vec2 p = a + d * it->second, n(-d.y / l, d.x / l);
+        const double first = clearance_ > 0.0 ? clearance_ : fineStep_, last = 4.0 * spacing_;
+        const StrictScope loose(*this, false); // the new segments face the margin in the next round
+        for (double h = first; h <= last * (1.0 + 1e-9); h *= 2.0)
+        {
+            bool found = false;
+            Vec2 best;
+            double bestLength = 0.0;
+            for (const double side : {1.0, -1.0})
+            {
+                const Vec2 q = p + n * (side * h);
+                double t = 0.0;
+                // A cheap choice of the side: the samples within s of the new waypoint only (where the
+                // obstacle was met); both new segments get the whole fine check in the next round.
+                if (!pointValid(q) || !motionValid(a, q) || !motionValid(q, b) ||
+                    !fineCheck(q, a, t, 0.0, spacing_) || !fineCheck(q, b, t, 0.0, spacing_))
+                    continue;
+                const double len = distance(a, q) + distance(q, b);
+                if (!found || len < bestLength)
+                {
+                    found = true;
+                    best = q;
+                    bestLength = len;
+                }
+            }
+            if (found)
+            {
+                path.insert(path.begin() + static_cast<std::ptrdiff_t>(i), best);
+                return true;
+            }
+        }
+        return false;
     }
 
     void MemeticToolkit::shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step)
