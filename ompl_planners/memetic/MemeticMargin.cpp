@@ -15,6 +15,7 @@
 
 namespace mhplan
 {
+
     namespace
     {
         // Cached verdicts: the motion validator's, and the margin's when it was asked for.
@@ -28,10 +29,6 @@ namespace mhplan
         // halved k times (the level at which only that side found one).
         constexpr char kMarginSided = 8;
 
-        bool marginAccepts(char code)
-        {
-            return code == kMarginValid || code == kFineValid || code == kFineInvalid;
-        }
     } // namespace
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
@@ -49,7 +46,10 @@ namespace mhplan
             setStatePosition(b_, b);
             const bool valid = si_->checkMotion(a_, b_);
             if (cache_.size() >= (std::size_t(1) << 20))
-                clearCache();
+            {
+                cache_.clear();
+                fineFailures_.clear();
+            }
             it = cache_.emplace(key, valid ? kValid : kInvalid).first;
         }
         else if (it->second == kInvalid || !strict || it->second != kValid)
@@ -59,10 +59,46 @@ namespace mhplan
         if (!strict)
             return true;
         if (it->second == kValid)
+        {
             it->second = marginValid(a, b) ? kMarginValid
                          : hitSide_ == 0   ? kMarginInvalid
                                            : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
-        return marginAccepts(it->second);
+            double t = 0.0;
+            if (it->second == kMarginValid && !nearHazardsValid(a, b, t))
+            {
+                it->second = kFineInvalid;
+                fineFailures_[key] = t;
+            }
+        }
+        return it->second == kMarginValid || it->second == kFineValid;
+    }
+
+    bool MemeticToolkit::nearHazardsValid(const Vec2 &a, const Vec2 &b, double &t)
+    {
+        // Where the fine check once failed (an obstacle the validator and the margin missed), every strict
+        // verdict looks again with it: the samples of the fine check within s along the segment of each such
+        // point within s of it (docs/variants.md, "The fine check"), so that the elite polish does not pull
+        // the path back across what the fine check found.
+        if (hazards_.empty() || fineStep_ <= 0.0)
+            return true;
+        const Vec2 d = b - a;
+        const double ll = dot(d, d);
+        if (ll <= 0.0)
+            return true;
+        const double l = std::sqrt(ll), r = spacing_;
+        const double x0 = std::min(a.x, b.x) - r, x1 = std::max(a.x, b.x) + r;
+        const double y0 = std::min(a.y, b.y) - r, y1 = std::max(a.y, b.y) + r;
+        for (const Vec2 &h : hazards_)
+        {
+            if (h.x < x0 || h.x > x1 || h.y < y0 || h.y > y1)
+                continue;
+            const double u = std::min(1.0, std::max(0.0, dot(h - a, d) / ll));
+            if (squaredNorm(a + d * u - h) > r * r)
+                continue;
+            if (!fineCheck(a, b, t, u * l - r, u * l + r))
+                return false;
+        }
+        return true;
     }
 
     int MemeticToolkit::refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const
@@ -196,16 +232,15 @@ namespace mhplan
             bool all = true;
             for (std::size_t i = 1; i < path.size(); ++i)
             {
-                if (motionValid(path[i - 1], path[i]))
+                if (reportableSegment(path[i - 1], path[i]))
+                    continue;
+                all = false;
+                if (fineRefused(path[i - 1], path[i]))
                 {
-                    if (reportableSegment(path[i - 1], path[i]))
-                        continue;
-                    all = false;
                     if (mendBeside(path, i))
                         ++i; // the new segment i -> i + 1 is checked in the next round
                     continue;
                 }
-                all = false;
                 if (i == 1 && i + 1 == path.size())
                 {
                     path.insert(path.begin() + 1, (path[0] + path[1]) * 0.5);
@@ -272,9 +307,19 @@ namespace mhplan
             const bool ok = fineCheck(a, b, t);
             it->second = ok ? kFineValid : kFineInvalid;
             if (!ok)
+            {
                 fineFailures_[key] = t;
+                if (hazards_.size() < (std::size_t(1) << 16))
+                    hazards_.push_back(a + (b - a) * t);
+            }
         }
         return it->second == kFineValid;
+    }
+
+    bool MemeticToolkit::fineRefused(const Vec2 &a, const Vec2 &b) const
+    {
+        const auto it = cache_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        return it != cache_.end() && it->second == kFineInvalid;
     }
 
     bool MemeticToolkit::fineCheck(const Vec2 &a, const Vec2 &b, double &t, double from, double to)

@@ -157,6 +157,7 @@ namespace mhplan
         {
             cache_.clear();
             fineFailures_.clear();
+            hazards_.clear();
         }
 
         /** \brief Lazy roadmap (docs/variants.md, "First paths: a lazy roadmap"): forget every sample. */
@@ -251,6 +252,13 @@ namespace mhplan
             point and motions the validator accepts and whose new segments pass the fine check within s of
             it. False when none does. */
         bool mendBeside(MemeticPath &path, std::size_t i);
+        /** \brief The fine check refused the segment (cached verdict). */
+        bool fineRefused(const Vec2 &a, const Vec2 &b) const;
+        /** \brief The fine check's samples of a -> b near the points where it once failed (hazards_);
+            false with \e t the first failing sample's fraction. */
+        bool nearHazardsValid(const Vec2 &a, const Vec2 &b, double &t);
+        /** \brief Where the fine check failed (a sample inside an obstacle), at most 2^16. */
+        MemeticPath hazards_;
         bool checkPoint(const Vec2 &p);
         void pushOut(MemeticPath &path, std::size_t j, double step);
         /** \brief Shift waypoint j by \e step along the unit \e dir (halved while the result is invalid). */
