@@ -17,6 +17,7 @@
 #include <ompl/util/Console.h>
 
 #include "RegistrySupport.h"
+#include "SpaceProblems.h"
 
 #include <gtest/gtest.h>
 
@@ -53,27 +54,9 @@ namespace
     og::SimpleSetupPtr problem(const Outline &obstacle, const std::string &planner,
                                const std::map<std::string, std::string> &params)
     {
-        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-        space->setBounds(0.0, 20.0);
-        auto si = std::make_shared<ob::SpaceInformation>(space);
-        si->setStateValidityChecker(
-            [obstacle](const ob::State *s)
-            {
-                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-                return !inside(obstacle, v[0], v[1]);
-            });
-        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
-        si->setStateValidityCheckingResolution(0.002);
-        si->setup();
-        auto ss = std::make_shared<og::SimpleSetup>(si);
-        ob::ScopedState<> start(space), goal(space);
-        start[0] = 1.0;
-        start[1] = 10.0;
-        goal[0] = 19.0;
-        goal[1] = 10.0;
-        ss->setStartAndGoalStates(start, goal);
-        ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
-        ss->setPlanner(builtinPlanners().create(planner, si, params));
+        auto ss = test::planarAppProblem([obstacle](double x, double y) { return !inside(obstacle, x, y); },
+                                         0.002, {1.0, 10.0}, {19.0, 10.0});
+        ss->setPlanner(builtinPlanners().create(planner, ss->getSpaceInformation(), params));
         ss->setup();
         return ss;
     }

@@ -24,7 +24,7 @@ namespace mhplan
         constexpr char kMarginValid = 2;   // both accept
         constexpr char kMarginInvalid = 3; // the margin refuses (obstacles on both sides, or no clearance)
         constexpr char kFineValid = 4;     // the margin accepts, and so does the fine check
-        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (fineFailures_)
+        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (refusedAt_)
         // 8 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
         // halved k times (the level at which only that side found one).
         constexpr char kMarginSided = 8;
@@ -48,7 +48,7 @@ namespace mhplan
             if (cache_.size() >= (std::size_t(1) << 20))
             {
                 cache_.clear();
-                fineFailures_.clear();
+                refusedAt_.clear();
             }
             it = cache_.emplace(key, valid ? kValid : kInvalid).first;
         }
@@ -63,11 +63,13 @@ namespace mhplan
             it->second = marginValid(a, b) ? kMarginValid
                          : hitSide_ == 0   ? kMarginInvalid
                                            : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
+            if (it->second != kMarginValid)
+                refusedAt_[key] = hitAt_;
             double t = 0.0;
             if (it->second == kMarginValid && !nearHazardsValid(a, b, t))
             {
                 it->second = kFineInvalid;
-                fineFailures_[key] = t;
+                refusedAt_[key] = t;
             }
         }
         return it->second == kMarginValid || it->second == kFineValid;
@@ -168,7 +170,11 @@ namespace mhplan
                 windows_.emplace_back(lo, hi);
         }
         if (clearance_ <= 0.0)
+        {
+            if (!windows_.empty())
+                hitAt_ = 0.5 * (windows_.front().first + windows_.front().second);
             return windows_.empty();
+        }
         for (const auto &w : windows_)
         {
             // The clearance adapts to the passage (docs/variants.md, "validator_min_clearance"): where the
@@ -198,6 +204,7 @@ namespace mhplan
                     break; // this window passes
                 if (!(hit[0] && hit[1]) || minClearance_ <= 0.0 || 0.5 * c < minClearance_ * (1.0 - 1e-9))
                 {
+                    hitAt_ = 0.5 * (w.first + w.second);
                     hitSide_ = hit[0] == hit[1] ? 0 : hit[0] ? 1 : -1;
                     return false;
                 }
@@ -243,7 +250,12 @@ namespace mhplan
                 }
                 if (i == 1 && i + 1 == path.size())
                 {
-                    path.insert(path.begin() + 1, (path[0] + path[1]) * 0.5);
+                    // Where the margin found the obstacle (the window's middle), so that the next rounds'
+                    // shifts move the segment there by their full length.
+                    const auto at = refusedAt_.find(SegmentKey{path[0].x, path[0].y, path[1].x, path[1].y});
+                    const double t =
+                        at != refusedAt_.end() && at->second > 0.0 && at->second < 1.0 ? at->second : 0.5;
+                    path.insert(path.begin() + 1, path[0] + (path[1] - path[0]) * t);
                     ++i;
                     continue;
                 }
@@ -308,7 +320,7 @@ namespace mhplan
             it->second = ok ? kFineValid : kFineInvalid;
             if (!ok)
             {
-                fineFailures_[key] = t;
+                refusedAt_[key] = t;
                 if (hazards_.size() < (std::size_t(1) << 16))
                     hazards_.push_back(a + (b - a) * t);
             }
@@ -346,8 +358,8 @@ namespace mhplan
     bool MemeticToolkit::mendBeside(MemeticPath &path, std::size_t i)
     {
         const Vec2 a = path[i - 1], b = path[i];
-        const auto it = fineFailures_.find(SegmentKey{a.x, a.y, b.x, b.y});
-        if (it == fineFailures_.end())
+        const auto it = refusedAt_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == refusedAt_.end())
             return false;
         const Vec2 d = b - a;
         const double l = norm(d);

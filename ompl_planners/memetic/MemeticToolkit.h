@@ -156,7 +156,7 @@ namespace mhplan
         void clearCache()
         {
             cache_.clear();
-            fineFailures_.clear();
+            refusedAt_.clear();
             hazards_.clear();
         }
 
@@ -268,6 +268,7 @@ namespace mhplan
         int refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const;
         int hitSide_{0};
         int hitLevel_{0};
+        double hitAt_{0.5}; ///< where along the segment the margin refused it (a fraction)
         bool strict_{false};
         unsigned long marginChecks_{0};
         double margin_{0.0};
@@ -303,8 +304,9 @@ namespace mhplan
             std::size_t operator()(const SegmentKey &k) const;
         };
         std::unordered_map<SegmentKey, char, SegmentHash> cache_; ///< MemeticMargin.cpp's verdict codes
-        /** \brief The fraction of the first sample the fine check refused, per refused segment. */
-        std::unordered_map<SegmentKey, double, SegmentHash> fineFailures_;
+        /** \brief Per refused segment (the margin or the fine check), the fraction where: the fine check's
+            first failing sample, the middle of the margin's refusing window. */
+        std::unordered_map<SegmentKey, double, SegmentHash> refusedAt_;
 
         // The lazy roadmap: points (0 = start, 1 = goal), edges with a state (0 unknown, 1 valid, 2 invalid).
         struct RoadmapEdge
