@@ -7,7 +7,9 @@
 
 #include "src/collision/CarSpaces.h"
 
+#include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
@@ -113,6 +115,38 @@ namespace mhplan::test
         ss->setStartAndGoalStates(s, g, 1e-9);
         ss->setOptimizationObjective(
             std::make_shared<ompl::base::PathLengthOptimizationObjective>(ss->getSpaceInformation()));
+        return ss;
+    }
+
+    /** \brief An OMPL program's planar problem in the 20 m square: the point checker \e valid (x, y), OMPL's
+        DiscreteMotionValidator at \e resolution of the extent (28.3 m), path length objective, \e start and
+        \e goal (x, y); no planner yet. */
+    inline ompl::geometric::SimpleSetupPtr planarAppProblem(const std::function<bool(double, double)> &valid,
+                                                            double resolution,
+                                                            const std::array<double, 2> &start,
+                                                            const std::array<double, 2> &goal)
+    {
+        namespace ob = ompl::base;
+        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+        space->setBounds(0.0, 20.0);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker(
+            [valid](const ob::State *s)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                return valid(v[0], v[1]);
+            });
+        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+        si->setStateValidityCheckingResolution(resolution);
+        si->setup();
+        auto ss = std::make_shared<ompl::geometric::SimpleSetup>(si);
+        ob::ScopedState<> a(space), b(space);
+        a[0] = start[0];
+        a[1] = start[1];
+        b[0] = goal[0];
+        b[1] = goal[1];
+        ss->setStartAndGoalStates(a, b);
+        ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
         return ss;
     }
 

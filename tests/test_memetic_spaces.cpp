@@ -233,7 +233,9 @@ TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
           Case{"validator_clearance", "0.03", "0.1", "-0.01", "0.6",
                [&] { return mp->getValidatorClearance(); }},
           Case{"validator_min_clearance", "0.001", "0.002", "-0.01", "0.6",
-               [&] { return mp->getValidatorMinClearance(); }}})
+               [&] { return mp->getValidatorMinClearance(); }},
+          Case{"validator_fine_step", "0.25", "0.5", "-0.01", "1.5",
+               [&] { return mp->getValidatorFineStep(); }}})
     {
         EXPECT_EQ(p->params()[c.name].getValue(), c.byDefault) << c.name;
         ASSERT_TRUE(p->params().setParam(c.name, c.good)) << c.name;
@@ -254,27 +256,8 @@ static std::shared_ptr<og::SimpleSetup> gapProblem(const std::function<bool(doub
                                                    double goalY,
                                                    const std::map<std::string, std::string> &params)
 {
-    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-    space->setBounds(0.0, 20.0);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker(
-        [valid](const ob::State *s)
-        {
-            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-            return valid(v[0], v[1]);
-        });
-    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
-    si->setStateValidityCheckingResolution(0.02);
-    si->setup();
-    auto ss = std::make_shared<og::SimpleSetup>(si);
-    ob::ScopedState<> start(space), goal(space);
-    start[0] = 1.0;
-    start[1] = 10.0;
-    goal[0] = 19.0;
-    goal[1] = goalY;
-    ss->setStartAndGoalStates(start, goal);
-    ss->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
-    ss->setPlanner(builtinPlanners().create("GA-MEM", si, params));
+    auto ss = test::planarAppProblem(valid, 0.02, {1.0, 10.0}, {19.0, goalY});
+    ss->setPlanner(builtinPlanners().create("GA-MEM", ss->getSpaceInformation(), params));
     ss->setup();
     return ss;
 }

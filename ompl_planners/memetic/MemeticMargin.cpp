@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <utility>
 
 namespace mhplan
 {
+
     namespace
     {
         // Cached verdicts: the motion validator's, and the margin's when it was asked for.
@@ -21,9 +23,12 @@ namespace mhplan
         constexpr char kValid = 1;         // the validator accepts, the margin not checked yet
         constexpr char kMarginValid = 2;   // both accept
         constexpr char kMarginInvalid = 3; // the margin refuses (obstacles on both sides, or no clearance)
-        // 4 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
+        constexpr char kFineValid = 4;     // the margin accepts, and so does the fine check
+        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (refusedAt_)
+        // 8 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
         // halved k times (the level at which only that side found one).
-        constexpr char kMarginSided = 4;
+        constexpr char kMarginSided = 8;
+
     } // namespace
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b)
@@ -41,7 +46,10 @@ namespace mhplan
             setStatePosition(b_, b);
             const bool valid = si_->checkMotion(a_, b_);
             if (cache_.size() >= (std::size_t(1) << 20))
+            {
                 cache_.clear();
+                refusedAt_.clear();
+            }
             it = cache_.emplace(key, valid ? kValid : kInvalid).first;
         }
         else if (it->second == kInvalid || !strict || it->second != kValid)
@@ -51,10 +59,48 @@ namespace mhplan
         if (!strict)
             return true;
         if (it->second == kValid)
+        {
             it->second = marginValid(a, b) ? kMarginValid
                          : hitSide_ == 0   ? kMarginInvalid
                                            : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
-        return it->second == kMarginValid;
+            if (it->second != kMarginValid)
+                refusedAt_[key] = hitAt_;
+            double t = 0.0;
+            if (it->second == kMarginValid && !nearHazardsValid(a, b, t))
+            {
+                it->second = kFineInvalid;
+                refusedAt_[key] = t;
+            }
+        }
+        return it->second == kMarginValid || it->second == kFineValid;
+    }
+
+    bool MemeticToolkit::nearHazardsValid(const Vec2 &a, const Vec2 &b, double &t)
+    {
+        // Where the fine check once failed (an obstacle the validator and the margin missed), every strict
+        // verdict looks again with it: the samples of the fine check within s along the segment of each such
+        // point within s of it (docs/variants.md, "The fine check"), so that the elite polish does not pull
+        // the path back across what the fine check found.
+        if (hazards_.empty() || fineStep_ <= 0.0)
+            return true;
+        const Vec2 d = b - a;
+        const double ll = dot(d, d);
+        if (ll <= 0.0)
+            return true;
+        const double l = std::sqrt(ll), r = spacing_;
+        const double x0 = std::min(a.x, b.x) - r, x1 = std::max(a.x, b.x) + r;
+        const double y0 = std::min(a.y, b.y) - r, y1 = std::max(a.y, b.y) + r;
+        for (const Vec2 &h : hazards_)
+        {
+            if (h.x < x0 || h.x > x1 || h.y < y0 || h.y > y1)
+                continue;
+            const double u = std::min(1.0, std::max(0.0, dot(h - a, d) / ll));
+            if (squaredNorm(a + d * u - h) > r * r)
+                continue;
+            if (!fineCheck(a, b, t, u * l - r, u * l + r))
+                return false;
+        }
+        return true;
     }
 
     int MemeticToolkit::refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const
@@ -85,10 +131,19 @@ namespace mhplan
         if (l <= 0.0)
             return true;
         const Vec2 n(-d.y / l, d.x / l);
-        const double wa = a == fixedA_ || a == fixedB_ ? 0.0 : 1.0;
-        const double wb = b == fixedA_ || b == fixedB_ ? 0.0 : 1.0;
+        // The copies fan out from a fixed end over min(s, l) (over the whole segment without s): beyond s
+        // from the start and the goal they are at their full offset, so the chord argument holds there.
+        const bool fa = a == fixedA_ || a == fixedB_, fb = b == fixedA_ || b == fixedB_;
+        const double ramp = spacing_ > 0.0 ? std::min(spacing_, l) : l;
         const auto shifted = [&](double t, double offset)
-        { return a + d * t + n * (offset * ((1.0 - t) * wa + t * wb)); };
+        {
+            double w = 1.0;
+            if (fa)
+                w = std::min(w, t * l / ramp);
+            if (fb)
+                w = std::min(w, (1.0 - t) * l / ramp);
+            return a + d * t + n * (offset * w);
+        };
         ++marginChecks_;
         hitSide_ = 0;
         hitLevel_ = 0;
@@ -115,7 +170,11 @@ namespace mhplan
                 windows_.emplace_back(lo, hi);
         }
         if (clearance_ <= 0.0)
+        {
+            if (!windows_.empty())
+                hitAt_ = 0.5 * (windows_.front().first + windows_.front().second);
             return windows_.empty();
+        }
         for (const auto &w : windows_)
         {
             // The clearance adapts to the passage (docs/variants.md, "validator_min_clearance"): where the
@@ -145,6 +204,7 @@ namespace mhplan
                     break; // this window passes
                 if (!(hit[0] && hit[1]) || minClearance_ <= 0.0 || 0.5 * c < minClearance_ * (1.0 - 1e-9))
                 {
+                    hitAt_ = 0.5 * (w.first + w.second);
                     hitSide_ = hit[0] == hit[1] ? 0 : hit[0] ? 1 : -1;
                     return false;
                 }
@@ -170,6 +230,8 @@ namespace mhplan
         // passage). Where the margin cannot tell the side (obstacles on both sides, or validator_clearance
         // 0), the ends are pushed outward (away from the chord of their neighbours) by 2c, 4c, ...; a segment
         // between the start and the goal gets a midpoint first.
+        // A segment the margin accepts then gets the fine check (docs/variants.md, "The fine check"); one it
+        // refuses gets a waypoint beside its first failing sample.
         const StrictScope strict(*this);
         const double base = clearance_ > 0.0 ? 2.0 * clearance_ : margin_;
         for (unsigned int round = 0; round < 12; ++round)
@@ -177,12 +239,23 @@ namespace mhplan
             bool all = true;
             for (std::size_t i = 1; i < path.size(); ++i)
             {
-                if (motionValid(path[i - 1], path[i]))
+                if (reportableSegment(path[i - 1], path[i]))
                     continue;
                 all = false;
+                if (fineRefused(path[i - 1], path[i]))
+                {
+                    if (mendBeside(path, i))
+                        ++i; // the new segment i -> i + 1 is checked in the next round
+                    continue;
+                }
                 if (i == 1 && i + 1 == path.size())
                 {
-                    path.insert(path.begin() + 1, (path[0] + path[1]) * 0.5);
+                    // Where the margin found the obstacle (the window's middle), so that the next rounds'
+                    // shifts move the segment there by their full length.
+                    const auto at = refusedAt_.find(SegmentKey{path[0].x, path[0].y, path[1].x, path[1].y});
+                    const double t =
+                        at != refusedAt_.end() && at->second > 0.0 && at->second < 1.0 ? at->second : 0.5;
+                    path.insert(path.begin() + 1, path[0] + (path[1] - path[0]) * t);
                     ++i;
                     continue;
                 }
@@ -205,7 +278,125 @@ namespace mhplan
             if (stop())
                 return false;
         }
-        return pathValid(path);
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!reportableSegment(path[i - 1], path[i]))
+                return false;
+        return true;
+    }
+
+    void MemeticToolkit::makeReportablePrefix(MemeticPath &path)
+    {
+        if (margin_ <= 0.0 || path.size() < 2)
+            return;
+        makeStrict(path, [] { return false; });
+        const StrictScope strict(*this);
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (!reportableSegment(path[i - 1], path[i]))
+            {
+                path.resize(i);
+                return;
+            }
+    }
+
+    bool MemeticToolkit::reportableSegment(const Vec2 &a, const Vec2 &b)
+    {
+        // The fine check (docs/variants.md, "The fine check"): once per segment the margin accepts, the
+        // validity checker every fineStep_ along it. The sideways copies see obstacles a segment touches
+        // when their chord exceeds the copies' spacing (discs, corners of 90 degrees or more); an acute tip
+        // (a star's) may cross the segment between all of their samples, and near the start and the goal the
+        // copies fan in. The fine check sees whatever the segment crosses over more than its step.
+        if (!motionValid(a, b))
+            return false;
+        if (fineStep_ <= 0.0 || !strict_)
+            return true;
+        const SegmentKey key{a.x, a.y, b.x, b.y};
+        const auto it = cache_.find(key);
+        if (it == cache_.end())
+            return false; // not reached: motionValid() cached the verdict
+        if (it->second == kMarginValid)
+        {
+            double t = 0.0;
+            const bool ok = fineCheck(a, b, t);
+            it->second = ok ? kFineValid : kFineInvalid;
+            if (!ok)
+            {
+                refusedAt_[key] = t;
+                if (hazards_.size() < (std::size_t(1) << 16))
+                    hazards_.push_back(a + (b - a) * t);
+            }
+        }
+        return it->second == kFineValid;
+    }
+
+    bool MemeticToolkit::fineRefused(const Vec2 &a, const Vec2 &b) const
+    {
+        const auto it = cache_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        return it != cache_.end() && it->second == kFineInvalid;
+    }
+
+    bool MemeticToolkit::fineCheck(const Vec2 &a, const Vec2 &b, double &t, double from, double to)
+    {
+        // The samples a + (b - a) k / K, K = ceil(l / step): the step is validator_fine_step x s, a share of
+        // the validator's spacing, never the caller's (docs/variants.md).
+        const Vec2 d = b - a;
+        const double l = norm(d);
+        const auto pieces = static_cast<std::size_t>(std::ceil(l / fineStep_));
+        for (std::size_t k = 1; k < pieces; ++k)
+        {
+            const double u = static_cast<double>(k) / static_cast<double>(pieces);
+            if (u * l < from || u * l > to)
+                continue;
+            if (!checkPoint(a + d * u))
+            {
+                t = u;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    bool MemeticToolkit::mendBeside(MemeticPath &path, std::size_t i)
+    {
+        const Vec2 a = path[i - 1], b = path[i];
+        const auto it = refusedAt_.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == refusedAt_.end())
+            return false;
+        const Vec2 d = b - a;
+        const double l = norm(d);
+        if (l <= 0.0)
+            return false;
+        const Vec2 p = a + d * it->second, n(-d.y / l, d.x / l);
+        const double first = clearance_ > 0.0 ? clearance_ : fineStep_, last = 4.0 * spacing_;
+        const StrictScope loose(*this, false); // the new segments face the margin in the next round
+        for (double h = first; h <= last * (1.0 + 1e-9); h *= 2.0)
+        {
+            bool found = false;
+            Vec2 best;
+            double bestLength = 0.0;
+            for (const double side : {1.0, -1.0})
+            {
+                const Vec2 q = p + n * (side * h);
+                double t = 0.0;
+                // A cheap choice of the side: the samples within s of the new waypoint only (where the
+                // obstacle was met); both new segments get the whole fine check in the next round.
+                if (!pointValid(q) || !motionValid(a, q) || !motionValid(q, b) ||
+                    !fineCheck(q, a, t, 0.0, spacing_) || !fineCheck(q, b, t, 0.0, spacing_))
+                    continue;
+                const double len = distance(a, q) + distance(q, b);
+                if (!found || len < bestLength)
+                {
+                    found = true;
+                    best = q;
+                    bestLength = len;
+                }
+            }
+            if (found)
+            {
+                path.insert(path.begin() + static_cast<std::ptrdiff_t>(i), best);
+                return true;
+            }
+        }
+        return false;
     }
 
     void MemeticToolkit::shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step)

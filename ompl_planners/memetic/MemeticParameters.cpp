@@ -49,6 +49,10 @@ namespace mhplan
             "validator_min_clearance", 0, 0.0005, 0.5,
             "smallest clearance the margin keeps in a passage with obstacles on both sides, in sample "
             "spacings (validator_clearance halved down to it; 0 = never halved)"};
+        constexpr ParamRange kValidatorFineStep{
+            "validator_fine_step", 0, 0.01, 1,
+            "step of the validity checker along every segment of a path before it is reported, in sample "
+            "spacings (0 = no fine check)"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -91,6 +95,8 @@ namespace mhplan
         declareRanged<double>(params(), this, kValidatorMinClearance,
                               &MemeticPlanner::setValidatorMinClearance,
                               &MemeticPlanner::getValidatorMinClearance);
+        declareRanged<double>(params(), this, kValidatorFineStep, &MemeticPlanner::setValidatorFineStep,
+                              &MemeticPlanner::getValidatorFineStep);
 
         declareProgress(true);
         addPlannerProgressProperty("motion checks INTEGER",
@@ -176,6 +182,11 @@ namespace mhplan
     {
         checkParameter(kValidatorMinClearance, c);
         validatorMinClearance_ = c;
+    }
+
+    void MemeticPlanner::setValidatorFineStep(double f)
+    {
+        storeChecked(kValidatorFineStep, validatorFineStep_, f);
     }
 
     double MemeticPlanner::marginDistance() const

@@ -101,6 +101,7 @@ namespace mhplan
         toolkit_->setBisections(bisections_);
         const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
         toolkit_->setMargin(margin, validatorClearance_ * spacing, validatorMinClearance_ * spacing);
+        toolkit_->setFineCheck(spacing, validatorFineStep_ * spacing);
         toolkit_->setFixedPoints(start_, goal_);
         toolkit_->resetCounts();
         toolkit_->clearCache(); // the margin and the fixed points are part of every cached verdict
@@ -468,7 +469,7 @@ namespace mhplan
         MemeticPath p = polished_;
         const MemeticToolkit::StrictScope strict(*toolkit_);
         toolkit_->tighten(p, fineTurn_, 1e-10, polishPasses_, stop_, 20000, true);
-        if (stopRequested() || !toolkit_->pathValid(p))
+        if (stopRequested() || !toolkit_->makeStrict(p, stop_)) // the margin, and the fine check
             return;
         polished_.swap(p);
         evaluate(polished_);
@@ -642,9 +643,19 @@ namespace mhplan
             return;
         exact = haveSolution_;
         approximate = !exact;
+        double difference = closestDistance_;
+        MemeticPath prefix;
+        if (approximate && toolkit_->margin() > 0.0)
+        {
+            // The approximate path passes what the reported exact ones pass (docs/variants.md).
+            prefix = closest_;
+            toolkit_->makeReportablePrefix(prefix);
+            points = &prefix;
+            difference = distance(prefix.back(), goal_);
+        }
         addSolutionPath(
             points->size(), [points](ob::State *s, std::size_t i) { setStatePosition(s, (*points)[i]); },
-            exact, bestCostObj_, closestDistance_);
+            exact, bestCostObj_, difference);
     }
 
     void MemeticPlanner::getPlannerData(ob::PlannerData &data) const

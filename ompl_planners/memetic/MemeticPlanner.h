@@ -136,6 +136,10 @@ namespace mhplan
             on both sides (validator_clearance halved while at or above it; 0 = never; docs/variants.md). */
         void setValidatorMinClearance(double c);
         double getValidatorMinClearance() const { return validatorMinClearance_; }
+        /** \brief The step of the fine check of reported paths, in sample spacings (0.01..1; 0 = none;
+            docs/variants.md, "The fine check"). */
+        void setValidatorFineStep(double f);
+        double getValidatorFineStep() const { return validatorFineStep_; }
         /** \brief The margin in the space's distance for the current motion validator: validator_margin x
             the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
         double marginDistance() const;
@@ -287,6 +291,7 @@ namespace mhplan
         double validatorMargin_{0.5};
         double validatorClearance_{0.03};
         double validatorMinClearance_{0.001};
+        double validatorFineStep_{0.25};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         std::function<bool()> stop_;

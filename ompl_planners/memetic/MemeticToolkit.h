@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -82,6 +83,15 @@ namespace mhplan
             minClearance_ = minClearance;
         }
         double margin() const { return margin_; }
+        /** \brief The fine check of reported paths (docs/variants.md, "The fine check"): \e spacing the
+           motion validator's sample spacing s (the sideways copies fan out from the start and the goal over
+           min(s, the segment's length)), \e step the spacing of the validity checker's samples along every
+           segment of a path before it is reported (0: no fine check). */
+        void setFineCheck(double spacing, double step)
+        {
+            spacing_ = spacing;
+            fineStep_ = step;
+        }
         /** \brief The points never shifted by the margin (the query's start and goal). */
         void setFixedPoints(const Vec2 &a, const Vec2 &b)
         {
@@ -112,11 +122,16 @@ namespace mhplan
             MemeticToolkit &t_;
             bool old_;
         };
-        /** \brief Make \e path pass the strict mode: the waypoints of every segment the margin refuses are
-            pushed outward (away from their neighbours' chord, 2c, 4c, ... up to 8 rounds; a push whose point
-            is invalid is halved down to 2 x the smallest clearance, for narrow passages). True when every
-            segment passes (always without a margin). */
+        /** \brief Make \e path pass the strict mode and the fine check: the waypoints of every segment the
+            margin refuses are shifted away from the obstacle it found (or pushed outward, away from their
+            neighbours' chord, 2c, 4c, ... up to 8 rounds; a push whose point is invalid is halved down to 2 x
+            the smallest clearance, for narrow passages); a segment the fine check refuses gets a waypoint
+            beside its first failing sample (mendBeside). True when every segment passes both (always without
+            a margin). */
         bool makeStrict(MemeticPath &path, const std::function<bool()> &stop);
+        /** \brief An approximate path made reportable: makeStrict() (at most its 12 rounds), then cut before
+            its first segment that still fails the strict mode or the fine check. */
+        void makeReportablePrefix(MemeticPath &path);
         /** \brief Segments the margin checked (a check of its own, beside motionChecks()). */
         unsigned long marginChecks() const { return marginChecks_; }
         /** \brief motionValid(); when invalid, \e fraction is the motion validator's last valid fraction
@@ -138,7 +153,12 @@ namespace mhplan
         /** \brief Forget every cached segment verdict (a new problem, clear()). The cache is keyed by the
             exact coordinates of the segment's two ends and holds valid and invalid verdicts (margin
             included), up to 2^20 entries, then starts over (docs/variants.md, "Checks"). */
-        void clearCache() { cache_.clear(); }
+        void clearCache()
+        {
+            cache_.clear();
+            refusedAt_.clear();
+            hazards_.clear();
+        }
 
         /** \brief Lazy roadmap (docs/variants.md, "First paths: a lazy roadmap"): forget every sample. */
         void roadmapClear();
@@ -221,6 +241,24 @@ namespace mhplan
         double bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b);
         bool inBounds(const Vec2 &p) const { return bounds_.contains(p); }
         bool marginValid(const Vec2 &a, const Vec2 &b);
+        /** \brief The strict verdict of a segment and its fine check (cached; docs/variants.md). */
+        bool reportableSegment(const Vec2 &a, const Vec2 &b);
+        /** \brief The validity checker at the fine step along a -> b (ends excluded), the samples of the
+            arc window [from, to] of the segment only; false with \e t the first failing sample's fraction. */
+        bool fineCheck(const Vec2 &a, const Vec2 &b, double &t, double from = 0.0,
+                       double to = std::numeric_limits<double>::infinity());
+        /** \brief Insert a waypoint beside the first sample of segment i - 1 -> i the fine check refused:
+            shifted sideways by c, 2c, 4c, ... up to 4 s, the first shift (either side, the shorter) whose
+            point and motions the validator accepts and whose new segments pass the fine check within s of
+            it. False when none does. */
+        bool mendBeside(MemeticPath &path, std::size_t i);
+        /** \brief The fine check refused the segment (cached verdict). */
+        bool fineRefused(const Vec2 &a, const Vec2 &b) const;
+        /** \brief The fine check's samples of a -> b near the points where it once failed (hazards_);
+            false with \e t the first failing sample's fraction. */
+        bool nearHazardsValid(const Vec2 &a, const Vec2 &b, double &t);
+        /** \brief Where the fine check failed (a sample inside an obstacle), at most 2^16. */
+        MemeticPath hazards_;
         bool checkPoint(const Vec2 &p);
         void pushOut(MemeticPath &path, std::size_t j, double step);
         /** \brief Shift waypoint j by \e step along the unit \e dir (halved while the result is invalid). */
@@ -230,11 +268,14 @@ namespace mhplan
         int refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const;
         int hitSide_{0};
         int hitLevel_{0};
+        double hitAt_{0.5}; ///< where along the segment the margin refused it (a fraction)
         bool strict_{false};
         unsigned long marginChecks_{0};
         double margin_{0.0};
         double clearance_{0.0};
         double minClearance_{0.0};
+        double spacing_{0.0};
+        double fineStep_{0.0};
         std::vector<std::pair<double, double>> windows_;
         Vec2 fixedA_, fixedB_;
 
@@ -263,6 +304,9 @@ namespace mhplan
             std::size_t operator()(const SegmentKey &k) const;
         };
         std::unordered_map<SegmentKey, char, SegmentHash> cache_; ///< MemeticMargin.cpp's verdict codes
+        /** \brief Per refused segment (the margin or the fine check), the fraction where: the fine check's
+            first failing sample, the middle of the margin's refusing window. */
+        std::unordered_map<SegmentKey, double, SegmentHash> refusedAt_;
 
         // The lazy roadmap: points (0 = start, 1 = goal), edges with a state (0 unknown, 1 valid, 2 invalid).
         struct RoadmapEdge

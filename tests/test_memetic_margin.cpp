@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/* The memetic planners' reported paths in an OMPL program's set-up (a plain point checker, OMPL's
+   DiscreteMotionValidator): no corner and no acute tip that the validator's samples miss is cut
+   (docs/variants.md, "No corner the validator cannot see" and "The fine check"). Each world puts one obstacle
+   on the straight way from the start to the goal, poking between the validator's samples and the margin's
+   sideways copies; every returned path must pass the independent dense check of the benchmarks (points at
+   most 1/2000 of the bounds' diagonal apart on every segment, the exact geometry; src/metrics/Metrics.h,
+   defaultMetricStep). Budgets are generations, never wall-clock. */
+#include "ompl_planners/memetic/MemeticPlanner.h"
+#include "src/registry/Registry.h"
+
+#include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/util/Console.h>
+
+#include "RegistrySupport.h"
+#include "SpaceProblems.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <vector>
+
+using namespace mhplan;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace
+{
+    using Outline = std::vector<std::array<double, 2>>;
+
+    bool inside(const Outline &poly, double x, double y)
+    {
+        bool in = false;
+        for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+        {
+            const auto &p = poly[i], &q = poly[j];
+            if ((p[1] > y) != (q[1] > y) && x < (q[0] - p[0]) * (y - p[1]) / (q[1] - p[1]) + p[0])
+                in = !in;
+        }
+        return in;
+    }
+
+    /** \brief The 20 m square with one polygonal obstacle: a point checker, OMPL's DiscreteMotionValidator at
+        resolution 0.002 (an OMPL app's; of the extent 28.3: a sample every s = 5.66 cm), start (1, 10), goal
+        (19, 10). */
+    og::SimpleSetupPtr problem(const Outline &obstacle, const std::string &planner,
+                               const std::map<std::string, std::string> &params)
+    {
+        auto ss = test::planarAppProblem([obstacle](double x, double y) { return !inside(obstacle, x, y); },
+                                         0.002, {1.0, 10.0}, {19.0, 10.0});
+        ss->setPlanner(builtinPlanners().create(planner, ss->getSpaceInformation(), params));
+        ss->setup();
+        return ss;
+    }
+
+    /** \brief The length of the path's pieces inside the obstacle, each segment sampled at \e step (the
+        benchmarks' dense check at the bounds' diagonal / 2000 = 1.41 cm; 0: it passes). */
+    double lengthInside(const og::PathGeometric &path, const Outline &obstacle, double step)
+    {
+        double cut = 0.0;
+        for (std::size_t i = 1; i < path.getStateCount(); ++i)
+        {
+            const double *a = path.getState(i - 1)->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double *b = path.getState(i)->as<ob::RealVectorStateSpace::StateType>()->values;
+            const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
+            const auto n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(l / step)));
+            for (std::size_t k = 0; k <= n; ++k)
+            {
+                const double u = double(k) / double(n);
+                if (inside(obstacle, a[0] + (b[0] - a[0]) * u, a[1] + (b[1] - a[1]) * u))
+                    cut += l / double(n);
+            }
+        }
+        return cut;
+    }
+
+    const double kDenseStep = std::hypot(20.0, 20.0) / 2000.0;
+
+    /** \brief Every memetic planner on \e obstacle with \e params; the returned paths' lengths inside it. */
+    std::map<std::string, double> cuts(const Outline &obstacle,
+                                       const std::map<std::string, std::string> &params,
+                                       std::map<std::string, double> *lengths = nullptr)
+    {
+        std::map<std::string, double> out;
+        for (const std::string &name : test::ofFamily("memetic"))
+        {
+            og::SimpleSetupPtr ss = problem(obstacle, name, params);
+            const ob::PlannerPtr p = ss->getPlanner();
+            EXPECT_EQ(p->solve(ob::PlannerTerminationCondition([] { return false; })),
+                      ob::PlannerStatus::EXACT_SOLUTION)
+                << name;
+            if (!ss->haveExactSolutionPath())
+                continue;
+            out[name] = lengthInside(ss->getSolutionPath(), obstacle, kDenseStep);
+            if (lengths != nullptr)
+                (*lengths)[name] = ss->getSolutionPath().length();
+        }
+        return out;
+    }
+
+    /** \brief A star's tip: a triangle of apex angle 30 degrees pointing up, its apex 5 cm above the straight
+        way at x = 10.113. There the tip is 2.7 cm wide, between two of the validator's samples (x = 10.085
+       and 10.141 on the straight segment), and the margin's copies 2.8 cm to either side cross it over 1.2
+       and 4.2 cm, between their samples (at the same x) too. */
+    Outline tip()
+    {
+        const double apexX = 10.113, apexY = 10.05, depth = 6.0, half = depth * std::tan(M_PI / 12.0);
+        return {{apexX - half, apexY - depth}, {apexX + half, apexY - depth}, {apexX, apexY}};
+    }
+} // namespace
+
+TEST(MemeticFineCheck, AnAcuteTipBetweenTheSamplesIsNotCut)
+{
+    // Without the fine check (validator_fine_step 0) the straight way through the tip passes the validator
+    // and the margin, and is returned (so it was before the fine check); with it (the default, every s / 4 =
+    // 1.41 cm, the dense check's step) every memetic planner's path goes round the tip's apex.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const Outline obstacle = tip();
+    std::map<std::string, double> lengths;
+    const auto without =
+        cuts(obstacle, {{"seed", "5"}, {"max_iterations", "8"}, {"validator_fine_step", "0"}});
+    const auto with = cuts(obstacle, {{"seed", "5"}, {"max_iterations", "8"}}, &lengths);
+    std::size_t cutWithout = 0;
+    for (const auto &[name, cut] : without)
+        cutWithout += cut > 0.0 ? 1 : 0;
+    EXPECT_GE(cutWithout, 1u) << "the test world no longer pokes between the samples";
+    ASSERT_EQ(with.size(), test::ofFamily("memetic").size());
+    for (const auto &[name, cut] : with)
+    {
+        EXPECT_EQ(cut, 0.0) << name << ": the returned path runs " << cut << " m inside the tip";
+        EXPECT_LT(lengths[name], 18.001) << name;
+        std::cout << "[fine check] " << name << ": length " << lengths[name]
+                  << " (straight 18; inside without " << without.at(name) << " m)\n";
+    }
+}
+
+TEST(MemeticFineCheck, ACornerBesideTheFirstSegmentIsSeenByTheCopies)
+{
+    // A square's 90-degree corner pokes 1 cm across the straight way 3 m from the start, between two of the
+    // validator's samples (x = 3.934 and 3.991). The margin's copies used to fan out from the start and the
+    // goal over the whole segment (on the segment from the start to the goal they never left it) and missed
+    // it; now they reach their full offset s from the start and the goal, so the copy beside the corner
+    // crosses it over 7.7 cm, more than their spacing (5.7 cm), and sees it, with or without the fine check.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const double cx = 3.962, cy = 9.99, d = 1.0;
+    const Outline corner{{cx, cy}, {cx + d, cy + d}, {cx, cy + 2.0 * d}, {cx - d, cy + d}};
+    for (const char *step : {"0", "0.25"})
+        for (const auto &[name, cut] :
+             cuts(corner, {{"seed", "5"}, {"max_iterations", "8"}, {"validator_fine_step", step}}))
+            EXPECT_EQ(cut, 0.0) << name << " (validator_fine_step " << step << "): the returned path runs "
+                                << cut << " m inside the corner";
+}
