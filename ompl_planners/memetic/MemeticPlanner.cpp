@@ -176,13 +176,34 @@ namespace mhplan
             // A path that cannot be made to pass counts as invalid, so that the search leaves a way round
             // that only the validator's gaps allow.
             MemeticPath q = path;
-            if (!toolkit_->makeStrict(q, stop_))
+            if (!strictCopy(q))
                 return stopRequested() ? c : std::numeric_limits<double>::infinity();
             record(q, pathCost(q));
             return c;
         }
         record(path, c);
         return c;
+    }
+
+    bool MemeticPlanner::strictCopy(MemeticPath &path)
+    {
+        const MemeticPath loose = path;
+        if (toolkit_->makeStrict(path, stop_))
+            return true;
+        if (stopRequested())
+            return false;
+        // A tightened path threads gaps with segments that touch an obstacle on each side (an inner tangent
+        // between two discs): the margin finds obstacles on both sides and cannot tell which way to push.
+        // Halved, each segment touches one obstacle, and its ends are pushed away from it (docs/variants.md,
+        // "Checks"); without this retry the way through the gap counted as invalid.
+        path.clear();
+        path.push_back(loose.front());
+        for (std::size_t i = 1; i < loose.size(); ++i)
+        {
+            path.push_back((loose[i - 1] + loose[i]) * 0.5);
+            path.push_back(loose[i]);
+        }
+        return toolkit_->makeStrict(path, stop_);
     }
 
     bool MemeticPlanner::improveAndEvaluate(Individual &ind)
@@ -422,13 +443,11 @@ namespace mhplan
             }
             Individual ind;
             if (walkIndividual(ind))
-            {
+                // No polish before the population is complete: the roadmap's routes come in other homotopy
+                // classes within milliseconds, each coarsely tightened to a fraction of a percent of its
+                // class's optimum, while a polish of the first path (in whatever class it took) under the
+                // validator margin cost a hundred times as much (docs/variants.md, "Checks").
                 pop_.push_back(std::move(ind));
-                // Planar: a new best path is polished at once (the time to a near-optimal path matters more
-                // than a full population).
-                if (!stateMode_ && !started_ && bestIndex() == pop_.size() - 1)
-                    polishElite();
-            }
             else if (stopRequested())
                 return false;
             else if (pop_.empty() || noPath_)
@@ -458,7 +477,7 @@ namespace mhplan
             // under the validator margin (docs/variants.md), once it has been pushed clear of it.
             MemeticPath q = pop_[b].path;
             polishedSource_ = pop_[b].cost;
-            if (toolkit_->makeStrict(q, stop_))
+            if (strictCopy(q))
                 polished_.swap(q);
             else if (!stopRequested())
                 pop_[b].cost = std::numeric_limits<double>::infinity(); // as an invalid path

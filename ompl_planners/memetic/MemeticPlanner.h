@@ -247,6 +247,9 @@ namespace mhplan
             every shorter path), else infinity. */
         double informedBound() const;
         void polishElite();
+        /** \brief \e path made to pass the validator margin (MemeticToolkit::makeStrict), retried once with
+            every segment halved; false when it does not pass. */
+        bool strictCopy(MemeticPath &path);
         /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
         void eliteRewalks();
         void restart();
