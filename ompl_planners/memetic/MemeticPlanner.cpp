@@ -54,6 +54,8 @@ namespace mhplan
         bestPath_.clear();
         closest_.clear();
         polished_.clear();
+        strictFallback_.clear();
+        strictFallbackCost_ = std::numeric_limits<double>::quiet_NaN();
         bestStates_.clear();
         closestStates_.clear();
         polishedStates_.clear();
@@ -165,7 +167,7 @@ namespace mhplan
             bestCostObj_);
     }
 
-    double MemeticPlanner::evaluate(const MemeticPath &path)
+    double MemeticPlanner::evaluate(const MemeticPath &path, const MemeticPath *raw)
     {
         ++evaluationCount_;
         const double c = pathCost(path);
@@ -177,7 +179,15 @@ namespace mhplan
             // that only the validator's gaps allow.
             MemeticPath q = path;
             if (!strictCopy(q))
-                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            {
+                // Tight paths round many corners (a maze) resist the pushes; the path before its local search
+                // (raw) is tightened again under the margin instead, which keeps the clearance by
+                // construction.
+                if (stopRequested() || raw == nullptr || !strictTighten(*raw, q))
+                    return stopRequested() ? c : std::numeric_limits<double>::infinity();
+                strictFallback_ = q;
+                strictFallbackCost_ = c;
+            }
             record(q, pathCost(q));
             return c;
         }
@@ -206,6 +216,16 @@ namespace mhplan
         return toolkit_->makeStrict(path, stop_);
     }
 
+    bool MemeticPlanner::strictTighten(const MemeticPath &raw, MemeticPath &out)
+    {
+        out = raw;
+        if (!strictCopy(out))
+            return false;
+        const MemeticToolkit::StrictScope strict(*toolkit_);
+        toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
+        return !stopRequested() && toolkit_->pathValid(out);
+    }
+
     bool MemeticPlanner::improveAndEvaluate(Individual &ind)
     {
         if (stateMode_)
@@ -223,7 +243,7 @@ namespace mhplan
             MemeticToolkit::resample(ind.path, 16, ind.signature);
             return true;
         }
-        ind.cost = evaluate(ind.path);
+        ind.cost = evaluate(ind.path, &p);
         MemeticToolkit::resample(ind.path, 16, ind.signature);
         return true;
     }
@@ -479,6 +499,8 @@ namespace mhplan
             polishedSource_ = pop_[b].cost;
             if (strictCopy(q))
                 polished_.swap(q);
+            else if (!stopRequested() && pop_[b].cost == strictFallbackCost_ && !strictFallback_.empty())
+                polished_ = strictFallback_; // evaluate() tightened its raw path under the margin
             else if (!stopRequested())
                 pop_[b].cost = std::numeric_limits<double>::infinity(); // as an invalid path
         }
