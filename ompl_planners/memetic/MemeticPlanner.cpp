@@ -54,6 +54,8 @@ namespace mhplan
         bestPath_.clear();
         closest_.clear();
         polished_.clear();
+        strictFallback_.clear();
+        strictFallbackCost_ = std::numeric_limits<double>::quiet_NaN();
         bestStates_.clear();
         closestStates_.clear();
         polishedStates_.clear();
@@ -166,7 +168,7 @@ namespace mhplan
             bestCostObj_);
     }
 
-    double MemeticPlanner::evaluate(const MemeticPath &path)
+    double MemeticPlanner::evaluate(const MemeticPath &path, const MemeticPath *raw)
     {
         ++evaluationCount_;
         const double c = pathCost(path);
@@ -177,13 +179,52 @@ namespace mhplan
             // A path that cannot be made to pass counts as invalid, so that the search leaves a way round
             // that only the validator's gaps allow.
             MemeticPath q = path;
-            if (!toolkit_->makeStrict(q, stop_))
-                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            if (!strictCopy(q))
+            {
+                // Tight paths round many corners (a maze) resist the pushes; the path before its local search
+                // (raw) is tightened again under the margin instead, which keeps the clearance by
+                // construction.
+                if (stopRequested() || raw == nullptr || !strictTighten(*raw, q))
+                    return stopRequested() ? c : std::numeric_limits<double>::infinity();
+                strictFallback_ = q;
+                strictFallbackCost_ = c;
+            }
             record(q, pathCost(q));
             return c;
         }
         record(path, c);
         return c;
+    }
+
+    bool MemeticPlanner::strictCopy(MemeticPath &path)
+    {
+        const MemeticPath loose = path;
+        if (toolkit_->makeStrict(path, stop_))
+            return true;
+        if (stopRequested())
+            return false;
+        // A tightened path threads gaps with segments that touch an obstacle on each side (an inner tangent
+        // between two discs): the margin finds obstacles on both sides and cannot tell which way to push.
+        // Halved, each segment touches one obstacle, and its ends are pushed away from it (docs/variants.md,
+        // "Checks"); without this retry the way through the gap counted as invalid.
+        path.clear();
+        path.push_back(loose.front());
+        for (std::size_t i = 1; i < loose.size(); ++i)
+        {
+            path.push_back((loose[i - 1] + loose[i]) * 0.5);
+            path.push_back(loose[i]);
+        }
+        return toolkit_->makeStrict(path, stop_);
+    }
+
+    bool MemeticPlanner::strictTighten(const MemeticPath &raw, MemeticPath &out)
+    {
+        out = raw;
+        if (!strictCopy(out))
+            return false;
+        const MemeticToolkit::StrictScope strict(*toolkit_);
+        toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
+        return !stopRequested() && toolkit_->pathValid(out);
     }
 
     bool MemeticPlanner::improveAndEvaluate(Individual &ind)
@@ -203,7 +244,7 @@ namespace mhplan
             MemeticToolkit::resample(ind.path, 16, ind.signature);
             return true;
         }
-        ind.cost = evaluate(ind.path);
+        ind.cost = evaluate(ind.path, &p);
         MemeticToolkit::resample(ind.path, 16, ind.signature);
         return true;
     }
@@ -423,13 +464,11 @@ namespace mhplan
             }
             Individual ind;
             if (walkIndividual(ind))
-            {
+                // No polish before the population is complete: the roadmap's routes come in other homotopy
+                // classes within milliseconds, each coarsely tightened to a fraction of a percent of its
+                // class's optimum, while a polish of the first path (in whatever class it took) under the
+                // validator margin cost a hundred times as much (docs/variants.md, "Checks").
                 pop_.push_back(std::move(ind));
-                // Planar: a new best path is polished at once (the time to a near-optimal path matters more
-                // than a full population).
-                if (!stateMode_ && !started_ && bestIndex() == pop_.size() - 1)
-                    polishElite();
-            }
             else if (stopRequested())
                 return false;
             else if (pop_.empty() || noPath_)
@@ -459,8 +498,10 @@ namespace mhplan
             // under the validator margin (docs/variants.md), once it has been pushed clear of it.
             MemeticPath q = pop_[b].path;
             polishedSource_ = pop_[b].cost;
-            if (toolkit_->makeStrict(q, stop_))
+            if (strictCopy(q))
                 polished_.swap(q);
+            else if (!stopRequested() && pop_[b].cost == strictFallbackCost_ && !strictFallback_.empty())
+                polished_ = strictFallback_; // evaluate() tightened its raw path under the margin
             else if (!stopRequested())
                 pop_[b].cost = std::numeric_limits<double>::infinity(); // as an invalid path
         }

@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -189,8 +190,9 @@ namespace mhplan
         /** \brief Coarse local search of \e ind.path, then evaluation (cost, signature); false when
             interrupted before the evaluation (ind unchanged then). */
         bool improveAndEvaluate(Individual &ind);
-        /** \brief Objective cost of a path, counted as an evaluation; updates the best. */
-        double evaluate(const MemeticPath &path);
+        /** \brief Objective cost of a path, counted as an evaluation; updates the best. \e raw: the path
+            before its local search (a fallback under the validator margin, strictTighten). */
+        double evaluate(const MemeticPath &path, const MemeticPath *raw = nullptr);
         /** \brief Index of the best individual of pop_. */
         std::size_t bestIndex() const;
         /** \brief Deterministic crowding: \e child replaces the most similar individual (signature distance)
@@ -251,6 +253,12 @@ namespace mhplan
             every shorter path), else infinity. */
         double informedBound() const;
         void polishElite();
+        /** \brief \e path made to pass the validator margin (MemeticToolkit::makeStrict), retried once with
+            every segment halved; false when it does not pass. */
+        bool strictCopy(MemeticPath &path);
+        /** \brief \e raw (a path before its local search) made to pass the margin and tightened under it
+            (the coarse local search in the strict mode) into \e out; false when it does not pass. */
+        bool strictTighten(const MemeticPath &raw, MemeticPath &out);
         /** \brief \c elite_rewalks re-walk trials on the best individual, greedy. */
         void eliteRewalks();
         void restart();
@@ -326,6 +334,10 @@ namespace mhplan
         MemeticPath closest_;
         /** \brief The polished copy of the best individual and that individual's (coarse) cost. */
         MemeticPath polished_;
+        /** \brief The last path evaluate() tightened under the margin from a raw path, and the (loose) cost
+            of the individual it stands for (polishElite starts from it). */
+        MemeticPath strictFallback_;
+        double strictFallbackCost_{std::numeric_limits<double>::quiet_NaN()};
         double polishedSource_{0.0};
         double closestDistance_{0.0};
 
