@@ -218,12 +218,20 @@ namespace mhplan
                     if (j != i)
                         order.emplace_back(std::max(lb[j], bounds.carBasic(i, j)),
                                            static_cast<std::uint32_t>(j));
-                std::sort(order.begin(), order.end());
+                // Only the 2 k lowest sorted: past them the k-th distance is near its last value.
+                const std::size_t head = std::min(order.size(), 2 * kn);
+                std::nth_element(order.begin(), order.begin() + std::ptrdiff_t(head), order.end());
+                std::sort(order.begin(), order.begin() + std::ptrdiff_t(head));
                 heap.clear();
-                for (const auto &[bound, j] : order)
+                for (std::size_t q = 0; q < order.size(); ++q)
                 {
+                    const auto [bound, j] = order[q];
                     if (beaten(heap, bound))
-                        break;
+                    {
+                        if (q < head)
+                            break; // every later bound is at least this one
+                        continue;
+                    }
                     if (!beaten(heap, out ? bounds.carLower(i, j) : bounds.carLower(j, i)))
                         offer(heap, out ? bounds.distance(i, j) : bounds.distance(j, i), j);
                 }
