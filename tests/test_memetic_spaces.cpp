@@ -6,6 +6,7 @@
    returned paths clear of what the validator's samples miss (an independent dense check). Budgets are
    generations, never wall-clock. */
 #include "benchmarks/Campaign.h"
+#include "ompl_planners/memetic/CarBounds.h"
 #include "ompl_planners/memetic/MemeticPlanner.h"
 #include "ompl_planners/memetic/MemeticStateToolkit.h"
 #include "src/registry/Registry.h"
@@ -174,6 +175,61 @@ TEST(MemeticStateToolkit, ConnectThenTightenStaysValidAndNeverCostlier)
                                  { return test::stickValid(q, test::slotWalls(), test::kStickHalf, 0.0); }));
     std::cout << "[state toolkit] slot: connected " << connected << ", tightened " << tightened << ", "
               << tk.motionChecks() << " motion checks, " << tk.cacheHits() << " from the cache\n";
+}
+
+TEST(MemeticCarBounds, NeverAboveTheSpacesDistanceAndTighterThanThePositionsOnDubins)
+{
+    // docs/spaces.md, "The roadmap's nearest states": the lower bounds that prune the nearest-state scans of
+    // the car spaces, against the spaces' own distances on random pairs (near ones included: the bounds
+    // matter most there). Turning radius 1 and 2.5; Dubins (forward only) and Reeds-Shepp.
+    ompl::RNG rng(7);
+    for (const double radius : {1.0, 2.5})
+        for (const bool reverse : {false, true})
+        {
+            ob::StateSpacePtr space;
+            if (reverse)
+                space = std::make_shared<ob::ReedsSheppStateSpace>(radius);
+            else
+                space = std::make_shared<SafeDubinsStateSpace>(radius);
+            const CarBounds car(space.get());
+            ASSERT_DOUBLE_EQ(car.radius, radius);
+            ASSERT_EQ(car.forward, !reverse);
+            ob::State *a = space->allocState(), *b = space->allocState();
+            unsigned long tighter = 0;
+            const unsigned int pairs = 20000;
+            for (unsigned int k = 0; k < pairs; ++k)
+            {
+                const double ax = rng.uniformReal(0, 10), ay = rng.uniformReal(0, 10);
+                const double spread = k % 2 ? 10.0 : 1.5;
+                const double bx = ax + rng.uniformReal(-spread, spread),
+                             by = ay + rng.uniformReal(-spread, spread);
+                const double ayaw = rng.uniformReal(-M_PI, M_PI), byaw = rng.uniformReal(-M_PI, M_PI);
+                auto set = [](ob::State *s, double x, double y, double yaw)
+                {
+                    auto *se2 = s->as<ob::SE2StateSpace::StateType>();
+                    se2->setXY(x, y);
+                    se2->setYaw(yaw);
+                };
+                set(a, ax, ay, ayaw);
+                set(b, bx, by, byaw);
+                const double d = space->distance(a, b);
+                const CarPose pa(ax, ay, ayaw), pb(bx, by, byaw);
+                const double basic = car.basic(pa, pb), lower = car.lower(pa, pb);
+                ASSERT_LE(lower, d) << (reverse ? "Reeds-Shepp" : "Dubins") << " r " << radius << " pair "
+                                    << k;
+                ASSERT_GE(lower, basic);
+                ASSERT_GE(basic, std::hypot(bx - ax, by - ay) * (1.0 - 2e-9));
+                tighter += lower > 1.2 * std::hypot(bx - ax, by - ay);
+            }
+            space->freeState(a);
+            space->freeState(b);
+            std::cout << "[car bounds] " << (reverse ? "Reeds-Shepp" : "Dubins") << " r " << radius << ": "
+                      << tighter << " of " << pairs << " bounds 20 % above the positions' distance\n";
+            if (!reverse)
+            {
+                EXPECT_GT(tighter, pairs / 4);
+            }
+        }
 }
 
 TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)

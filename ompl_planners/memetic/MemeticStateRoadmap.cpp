@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /* mhplan: the memetic planners' lazy roadmap on states (docs/spaces.md, "First paths: a lazy roadmap on
    states"): uniform valid states in the incumbent's informed set, directed k-nearest edges under the space's
-   distance, A* routes under route penalties, only the edges of a found route checked (in their direction).
-   Part of MemeticStateToolkit. */
+   distance (found with lower bounds: pivots, and the car bounds on the Dubins and Reeds-Shepp spaces), A*
+   routes under route penalties, only the edges of a found route checked (in their direction). Part of
+   MemeticStateToolkit. */
+#include "ompl_planners/memetic/CarBounds.h"
 #include "ompl_planners/memetic/MemeticStateToolkit.h"
 #include "ompl_planners/memetic/RoadmapSearch.h"
 
@@ -19,6 +21,124 @@ namespace ob = ompl::base;
 
 namespace mhplan
 {
+    /** \brief Lower bounds of the space's distance between the roadmap's states, for its k-nearest search
+        (docs/spaces.md, "First paths: a lazy roadmap on states"). Pivots (LAESA): the distances from and to
+        a few far-apart states are computed once; since the distance is a shortest length, the directed
+        triangle inequality d(a, c) <= d(a, b) + d(b, c) bounds every other one from below: d(i, j) >=
+        d(i, p) - d(j, p) and d(i, j) >= d(p, j) - d(p, i) (so also under Dubins' asymmetric distance). On
+        the car spaces also CarBounds::lower(). */
+    class MemeticStateToolkit::RoadmapBounds
+    {
+      public:
+        RoadmapBounds(const ob::SpaceInformationPtr &si, const StateParametrisation &param,
+                      const StatePath &points, bool symmetric)
+            : si_(si), m_(points.size()), symmetric_(symmetric), car_(si->getStateSpace().get())
+        {
+            states_.reserve(m_);
+            for (const StatePoint &p : points)
+            {
+                states_.push_back(si_->allocState());
+                param.fromVector(p.data(), states_.back());
+                if (car_.active())
+                    poses_.emplace_back(p[0], p[1], p[2]);
+            }
+            // OMPL's symmetric Dubins distance (the shorter direction) need not meet the triangle
+            // inequality: no pivots there.
+            const bool pivots = !(car_.active() && !car_.forward && symmetric_ &&
+                                  dynamic_cast<const ob::DubinsStateSpace *>(si_->getStateSpace().get()));
+            // Farthest-first pivots (under the larger of the two directions), the start first.
+            std::vector<double> spread(m_, std::numeric_limits<double>::infinity());
+            std::size_t next = 0;
+            for (std::size_t p = 0; pivots && p < std::min(m_, kPivots); ++p)
+            {
+                const std::size_t base = to_.size();
+                to_.resize(base + m_);
+                from_.resize(symmetric_ ? 0 : base + m_);
+                for (std::size_t x = 0; x < m_; ++x)
+                {
+                    to_[base + x] = distance(next, x);
+                    if (!symmetric_)
+                        from_[base + x] = distance(x, next);
+                    spread[x] = std::min(spread[x], symmetric_ ? to_[base + x]
+                                                               : std::max(to_[base + x], from_[base + x]));
+                }
+                next = std::size_t(std::max_element(spread.begin(), spread.end()) - spread.begin());
+                ++pivots_;
+            }
+        }
+
+        ~RoadmapBounds()
+        {
+            for (ob::State *s : states_)
+                si_->freeState(s);
+        }
+        RoadmapBounds(const RoadmapBounds &) = delete;
+        RoadmapBounds &operator=(const RoadmapBounds &) = delete;
+
+        /** \brief The space's distance from state \e i to state \e j (counted). */
+        double distance(std::size_t i, std::size_t j)
+        {
+            ++evaluations_;
+            return si_->distance(states_[i], states_[j]);
+        }
+
+        /** \brief The pivots' lower bounds of distance(i, j) into \e out[j] and of distance(j, i) into
+            \e in[j] (shrunk for rounding: never above the distance). */
+        void pivotBounds(std::size_t i, std::vector<double> &out, std::vector<double> &in) const
+        {
+            std::fill(out.begin(), out.end(), 0.0);
+            std::fill(in.begin(), in.end(), 0.0);
+            for (std::size_t p = 0; p < pivots_; ++p)
+            {
+                const double *to = to_.data() + p * m_;
+                const double ti = to[i];
+                if (symmetric_)
+                {
+                    for (std::size_t j = 0; j < m_; ++j)
+                        out[j] = std::max(out[j], std::abs(ti - to[j]));
+                    continue;
+                }
+                const double *fr = from_.data() + p * m_;
+                const double fi = fr[i];
+                for (std::size_t j = 0; j < m_; ++j)
+                {
+                    out[j] = std::max(out[j], std::max(fi - fr[j], to[j] - ti));
+                    in[j] = std::max(in[j], std::max(fr[j] - fi, ti - to[j]));
+                }
+            }
+            for (std::size_t j = 0; j < m_; ++j)
+            {
+                out[j] = out[j] * (1.0 - 1e-9) - 1e-12;
+                in[j] = symmetric_ ? out[j] : in[j] * (1.0 - 1e-9) - 1e-12;
+            }
+        }
+
+        /** \brief CarBounds::basic() between states i and j (0 off the car spaces). */
+        double carBasic(std::size_t i, std::size_t j) const
+        {
+            return car_.active() ? car_.basic(poses_[i], poses_[j]) : 0.0;
+        }
+        /** \brief CarBounds::lower() of distance(i, j) (0 off the car spaces). */
+        double carLower(std::size_t i, std::size_t j) const
+        {
+            return car_.active() ? car_.lower(poses_[i], poses_[j]) : 0.0;
+        }
+
+        unsigned long evaluations() const { return evaluations_; }
+
+      private:
+        static constexpr std::size_t kPivots = 16;
+        ob::SpaceInformationPtr si_;
+        std::size_t m_;
+        bool symmetric_;
+        CarBounds car_;
+        std::vector<ob::State *> states_;
+        std::vector<CarPose> poses_;
+        std::vector<double> to_, from_;
+        std::size_t pivots_{0};
+        unsigned long evaluations_{0};
+    };
+
     void MemeticStateToolkit::roadmapClear()
     {
         rmPoints_.clear();
@@ -59,72 +179,86 @@ namespace mhplan
         rmPenalty_.assign(m, 0.0);
         const ob::StateSpacePtr &space = si_->getStateSpace();
         const bool symmetric = space->hasSymmetricDistance() && space->hasSymmetricInterpolate();
-        // On the car spaces the positions' distance bounds the path length from below (both ways): the
-        // candidates are visited in order of it and the scan stops once it exceeds both k-th distances.
+        // Path length: an edge's cost is the distance the neighbour search computed.
+        const bool length =
+            !opt_ || dynamic_cast<const ob::PathLengthOptimizationObjective *>(opt_.get()) != nullptr;
+        RoadmapBounds bounds(si_, param_, rmPoints_, symmetric);
+        std::vector<double> lbOut(m), lbIn(m);
         std::vector<std::pair<double, std::uint32_t>> order, outs, ins;
         order.reserve(m);
+        // Max-heaps of the k nearest (out: distance(i, j); in: distance(j, i)); a candidate's distance is
+        // computed only when its lower bound could beat the k-th one.
+        auto offer = [kn](std::vector<std::pair<double, std::uint32_t>> &heap, double d, std::uint32_t j)
+        {
+            if (heap.size() >= kn && !(d < heap.front().first))
+                return;
+            heap.emplace_back(d, j);
+            std::push_heap(heap.begin(), heap.end());
+            if (heap.size() > kn)
+            {
+                std::pop_heap(heap.begin(), heap.end());
+                heap.pop_back();
+            }
+        };
+        auto beaten = [kn](const std::vector<std::pair<double, std::uint32_t>> &heap, double lb)
+        { return heap.size() >= kn && lb >= heap.front().first; };
         for (std::size_t i = 0; i < m; ++i)
         {
             if ((i & 15u) == 0 && stop())
                 return false;
-            order.clear();
-            for (std::size_t j = 0; j < m; ++j)
-                if (j != i)
-                    order.emplace_back(positionBound_ ? std::hypot(rmPoints_[i][0] - rmPoints_[j][0],
-                                                                   rmPoints_[i][1] - rmPoints_[j][1]) *
-                                                            (1.0 - 1e-9)
-                                                      : 0.0,
-                                       static_cast<std::uint32_t>(j));
-            if (positionBound_)
-                std::sort(order.begin(), order.end());
-            outs.clear();
-            ins.clear();
-            // Max-heaps of the k nearest (out: distance(i, j); in: distance(j, i)).
-            for (const auto &[lb, j] : order)
+            bounds.pivotBounds(i, lbOut, lbIn);
+            // Each direction scans the candidates in the order of their bound (pivots, the basic car bound)
+            // and stops at the first one that cannot beat its k-th distance: no later candidate can. The
+            // tighter car bound (Dubins) is computed only for a candidate reached.
+            auto scan = [&](const std::vector<double> &lb,
+                            std::vector<std::pair<double, std::uint32_t>> &heap, bool out)
             {
-                if (positionBound_ && outs.size() >= kn && lb > outs.front().first &&
-                    (symmetric || (ins.size() >= kn && lb > ins.front().first)))
-                    break;
-                const double dOut = distance(rmPoints_[i], rmPoints_[j]);
-                if (outs.size() < kn || dOut < outs.front().first)
+                order.clear();
+                for (std::size_t j = 0; j < m; ++j)
+                    if (j != i)
+                        order.emplace_back(std::max(lb[j], bounds.carBasic(i, j)),
+                                           static_cast<std::uint32_t>(j));
+                // Only the 2 k lowest sorted: past them the k-th distance is near its last value.
+                const std::size_t head = std::min(order.size(), 2 * kn);
+                std::nth_element(order.begin(), order.begin() + std::ptrdiff_t(head), order.end());
+                std::sort(order.begin(), order.begin() + std::ptrdiff_t(head));
+                heap.clear();
+                for (std::size_t q = 0; q < order.size(); ++q)
                 {
-                    outs.emplace_back(dOut, j);
-                    std::push_heap(outs.begin(), outs.end());
-                    if (outs.size() > kn)
+                    const auto [bound, j] = order[q];
+                    if (beaten(heap, bound))
                     {
-                        std::pop_heap(outs.begin(), outs.end());
-                        outs.pop_back();
+                        if (q < head)
+                            break; // every later bound is at least this one
+                        continue;
                     }
+                    if (!beaten(heap, out ? bounds.carLower(i, j) : bounds.carLower(j, i)))
+                        offer(heap, out ? bounds.distance(i, j) : bounds.distance(j, i), j);
                 }
-                if (symmetric)
-                    continue;
-                const double dIn = distance(rmPoints_[j], rmPoints_[i]);
-                if (ins.size() < kn || dIn < ins.front().first)
-                {
-                    ins.emplace_back(dIn, j);
-                    std::push_heap(ins.begin(), ins.end());
-                    if (ins.size() > kn)
-                    {
-                        std::pop_heap(ins.begin(), ins.end());
-                        ins.pop_back();
-                    }
-                }
-            }
+            };
+            scan(lbOut, outs, true);
+            ins.clear();
+            if (!symmetric)
+                scan(lbIn, ins, false);
             const auto u = static_cast<std::uint32_t>(i);
-            auto add = [&](std::uint32_t a, std::uint32_t b)
+            auto add = [&](std::uint32_t a, std::uint32_t b, double d)
             {
                 rmOut_[a].push_back(static_cast<std::uint32_t>(rmEdges_.size()));
-                rmEdges_.push_back({a, b, segmentCost(rmPoints_[a], rmPoints_[b]), 0});
+                rmEdges_.push_back({a, b, length ? d : segmentCost(rmPoints_[a], rmPoints_[b]), 0});
             };
+            // Nearest first, ties by index: the edges do not depend on the scan's order.
+            std::sort(outs.begin(), outs.end());
+            std::sort(ins.begin(), ins.end());
             for (const auto &e : outs)
             {
-                add(u, e.second);
+                add(u, e.second, e.first);
                 if (symmetric)
-                    add(e.second, u); // duplicates are harmless: their checks hit the motion cache
+                    add(e.second, u, e.first); // duplicates are harmless: their checks hit the motion cache
             }
             for (const auto &e : ins)
-                add(e.second, u);
+                add(e.second, u, e.first);
         }
+        roadmapDistances_ += bounds.evaluations();
         return true;
     }
 

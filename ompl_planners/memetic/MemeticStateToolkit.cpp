@@ -34,16 +34,11 @@ namespace mhplan
 
     MemeticStateToolkit::MemeticStateToolkit(ob::SpaceInformationPtr si, const StateParametrisation &param,
                                              ompl::RNG &rng)
-        : si_(std::move(si)), param_(param), rng_(rng)
+        : si_(std::move(si)), param_(param), car_(si_->getStateSpace().get()), rng_(rng)
     {
         a_ = si_->allocState();
         b_ = si_->allocState();
         c_ = si_->allocState();
-        // Dubins and Reeds-Shepp states are parametrised (x, y, yaw) and their distance is a path length: at
-        // least the distance of the positions (used to prune nearest-state scans).
-        const ob::StateSpace *space = si_->getStateSpace().get();
-        positionBound_ = dynamic_cast<const ob::DubinsStateSpace *>(space) != nullptr ||
-                         dynamic_cast<const ob::ReedsSheppStateSpace *>(space) != nullptr;
     }
 
     MemeticStateToolkit::~MemeticStateToolkit()
@@ -60,7 +55,7 @@ namespace mhplan
 
     void MemeticStateToolkit::resetCounts()
     {
-        motionChecks_ = stateChecks_ = cacheHits_ = 0;
+        motionChecks_ = stateChecks_ = cacheHits_ = roadmapDistances_ = 0;
         cache_.clear();
         strictCache_.clear();
         roadmapClear();
@@ -274,9 +269,9 @@ namespace mhplan
         // tree 1 from the goal (child -> parent), so the distance runs from the tree state in tree 0 and to
         // it in tree 1. An exact scan (the first of equal nearest states, as OMPL's linear structure returns;
         // GNAT draws its pivots from a generator of its own, not reproducible from the planner's seed, and is
-        // not exact under an asymmetric distance). On the car spaces the position distance is a lower bound
-        // of the path length (docs/spaces.md): states whose bound exceeds the best distance so far are
-        // skipped, which saves most of the Dubins or Reeds-Shepp distances of a scan.
+        // not exact under an asymmetric distance). On the car spaces CarBounds bound the path length from
+        // below (docs/spaces.md): states whose bound exceeds the best distance so far are skipped, which
+        // saves most of the Dubins or Reeds-Shepp distances of a scan.
         std::vector<double> bound;
         auto nearest = [&](int t) -> std::size_t
         {
@@ -285,7 +280,7 @@ namespace mhplan
             { return t == 0 ? distance(tree[i].x, query) : distance(query, tree[i].x); };
             std::size_t best = 0;
             double bestD = dist(0);
-            if (!positionBound_)
+            if (!car_.active())
             {
                 for (std::size_t i = 1; i < tree.size(); ++i)
                 {
@@ -299,11 +294,13 @@ namespace mhplan
                 return best;
             }
             bound.resize(tree.size());
+            const CarPose q(query[0], query[1], query[2]);
+            auto pose = [&](std::size_t i) { return CarPose(tree[i].x[0], tree[i].x[1], tree[i].x[2]); };
             std::size_t m = 0;
             for (std::size_t i = 0; i < tree.size(); ++i)
             {
-                // Shrunk by a relative 1e-9: rounding never prunes the true nearest state.
-                bound[i] = std::hypot(tree[i].x[0] - query[0], tree[i].x[1] - query[1]) * (1.0 - 1e-9);
+                // The basic bound holds either way; the tighter one is computed only where it may prune.
+                bound[i] = car_.basic(CarPose(tree[i].x[0], tree[i].x[1], tree[i].x[2], false), q);
                 if (bound[i] < bound[m])
                     m = i;
             }
@@ -319,6 +316,8 @@ namespace mhplan
             for (std::size_t i = 1; i < tree.size(); ++i)
             {
                 if (i == m || bound[i] > bestD)
+                    continue;
+                if (car_.forward && (t == 0 ? car_.lower(pose(i), q) : car_.lower(q, pose(i))) > bestD)
                     continue;
                 const double d = dist(i);
                 if (d < bestD || (d == bestD && i < best))

@@ -7,6 +7,7 @@
 #define MHPLAN_MEMETIC_STATE_TOOLKIT_H
 
 #include "ompl_planners/common/StateParametrisation.h"
+#include "ompl_planners/memetic/CarBounds.h"
 
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/SpaceInformation.h>
@@ -157,6 +158,9 @@ namespace mhplan
             way. False when the goal is cut off, after \e maxInvalid refused routes, or when stopped. */
         bool roadmapPath(StatePath &path, unsigned int maxInvalid, const std::function<bool()> &stop);
         std::size_t roadmapSize() const { return rmPoints_.size(); }
+        /** \brief The space's distances computed by roadmapGrow()'s nearest-state search (its pivots
+            included) since resetCounts(). */
+        unsigned long roadmapDistances() const { return roadmapDistances_; }
 
         /** \brief Crossover at states where \e a and \e b (resampled at 48 states each) pass within
             \e radius: a[..p] -> b[q..] or a[..p1] -> b[q1..q2] -> a[p2..], the joints checked. */
@@ -197,8 +201,9 @@ namespace mhplan
 
         ompl::base::SpaceInformationPtr si_;
         const StateParametrisation &param_;
-        /** \brief The space's distance is at least the distance of the first two coordinates (x, y). */
-        bool positionBound_{false};
+        /** \brief Lower bounds of the Dubins and Reeds-Shepp distances (inactive on other spaces), used to
+            prune nearest-state scans. */
+        CarBounds car_;
         ompl::RNG &rng_;
         ompl::base::OptimizationObjectivePtr opt_;
         unsigned int bisections_{10};
@@ -228,6 +233,8 @@ namespace mhplan
         std::vector<RoadmapEdge> rmEdges_;
         std::vector<std::vector<std::uint32_t>> rmOut_;
         std::vector<double> rmPenalty_;
+        unsigned long roadmapDistances_{0};
+        class RoadmapBounds;
         std::vector<double> key_;
     };
 } // namespace mhplan
