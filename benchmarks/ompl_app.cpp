@@ -152,17 +152,54 @@ int main(int argc, char **argv)
     std::vector<std::string> planners = {"GA-MEM",          "SMA-MEM", "LRSMA-MEM", "MGO-MEM",
                                          "InformedRRTstar", "RRTstar", "ABITstar"};
     std::map<std::string, std::string> extra;
-    for (int i = 1; i + 1 < argc; i += 2)
+    const char *usage = "usage: mhplan_ompl_app [--time S] [--queries N] [--count C] [--resolution R] "
+                        "[--planners A,B,...] [--params KEY=VALUE,...] [--seed N] [--verbose 0|1|2]\n";
+    // A number option's whole value must be the number ("1s" or "" is refused, not read as 1 or 0).
+    bool badNumber = false;
+    std::string badKey;
+    const auto number = [&](const std::string &key, const std::string &value)
     {
-        const std::string key = argv[i], value = argv[i + 1];
+        char *end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        if (value.empty() || end == nullptr || *end != '\0' || !std::isfinite(v))
+        {
+            badNumber = true;
+            badKey = key + " '" + value + "' (a number expected)";
+        }
+        return v;
+    };
+    const auto integer = [&](const std::string &key, const std::string &value)
+    {
+        const double v = number(key, value);
+        if (!badNumber && (v < 0.0 || v > 4294967295.0 || v != std::floor(v)))
+        {
+            badNumber = true;
+            badKey = key + " '" + value + "' (a whole number from 0 to 4294967295 expected)";
+        }
+        return badNumber ? 0.0 : v;
+    };
+    for (int i = 1; i < argc; i += 2)
+    {
+        const std::string key = argv[i];
+        if (key == "--help" || key == "-h")
+        {
+            std::cout << usage;
+            return 0;
+        }
+        if (i + 1 >= argc)
+        {
+            std::cerr << "mhplan_ompl_app: option '" << key << "' wants a value\n" << usage;
+            return 1;
+        }
+        const std::string value = argv[i + 1];
         if (key == "--time")
-            timeLimit = std::atof(value.c_str());
+            timeLimit = number(key, value);
         else if (key == "--queries")
-            queries = static_cast<unsigned int>(std::atoi(value.c_str()));
+            queries = static_cast<unsigned int>(integer(key, value));
         else if (key == "--count")
-            count = static_cast<unsigned int>(std::atoi(value.c_str()));
+            count = static_cast<unsigned int>(integer(key, value));
         else if (key == "--resolution")
-            resolution = std::atof(value.c_str());
+            resolution = number(key, value);
         else if (key == "--planners")
             planners = splitList(value);
         else if (key == "--verbose")
@@ -171,7 +208,7 @@ int main(int argc, char **argv)
             paths = value == "2";
         }
         else if (key == "--seed")
-            seed = static_cast<std::uint64_t>(std::atoll(value.c_str()));
+            seed = static_cast<std::uint64_t>(integer(key, value));
         else if (key == "--params")
             for (const std::string &kv : splitList(value))
             {
@@ -190,6 +227,11 @@ int main(int argc, char **argv)
                          "--params KEY=VALUE,..., --seed N, --verbose 0|1|2\n";
             return 1;
         }
+    }
+    if (badNumber)
+    {
+        std::cerr << "mhplan_ompl_app: " << badKey << ": not accepted\n" << usage;
+        return 1;
     }
     if (!(timeLimit > 0.0) || queries == 0 || queries > 1000 || count == 0 || !(resolution > 0.0) ||
         resolution > 0.5)
