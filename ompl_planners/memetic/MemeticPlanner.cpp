@@ -224,7 +224,8 @@ namespace mhplan
             return false;
         const MemeticToolkit::StrictScope strict(*toolkit_);
         toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
-        return !stopRequested() && toolkit_->pathValid(out);
+        // The margin and the fine check, as every reported path (docs/variants.md, "The fine check").
+        return !stopRequested() && toolkit_->makeStrict(out, stop_);
     }
 
     bool MemeticPlanner::improveAndEvaluate(Individual &ind)
