@@ -90,6 +90,10 @@ class Targets(unittest.TestCase):
         self.assertAlmostEqual(app_mem["p90"], 0.0)
         self.assertAlmostEqual(app_mem["t1"], 0.005)
         self.assertEqual(app_irrt["dense_failures"], 1)
+        # A run whose path fails the dense check never counts as within 1 % in the clean columns.
+        self.assertEqual((mem["within_clean"], mem["t1_clean"]), (1, INF))
+        self.assertEqual((app_irrt["within"], app_irrt["within_clean"], app_irrt["t1_clean"]), (2, 1, INF))
+        self.assertAlmostEqual(app_mem["t1_clean"], 0.005)
 
     def test_targets_per_setup(self):
         verdicts = dict(targets.verdicts(targets.rows(self.database)))
@@ -104,7 +108,10 @@ class Targets(unittest.TestCase):
         self.assertIsNone(targets._at_most(INF, INF))  # neither got there: undecided, never "met"
         self.assertTrue(targets._at_most(3.0, INF))
         app = {what: met for what, _, met in verdicts["app 0.002"]}
-        self.assertEqual(len(app), 6)
+        self.assertEqual(len(app), 7)
+        clean = "best memetic's median time to within 1 % with a path passing the dense check (all runs) no " \
+                "slower than InformedRRTstar's"
+        self.assertTrue(app[clean])  # GA-MEM 0.005 s vs inf: Informed RRT*'s clean run is one of two
         self.assertTrue(all(app.values()))
 
     def test_report_section_only_with_optima(self):
