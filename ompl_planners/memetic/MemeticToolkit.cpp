@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ompl_planners/memetic/MemeticToolkit.h"
+#include "ompl_planners/memetic/PathShortcut.h"
 
 #include "src/collision/Validity.h"
 
@@ -296,47 +297,8 @@ namespace mhplan
 
     void MemeticToolkit::shortcut(MemeticPath &path, const std::function<bool()> &stop)
     {
-        if (path.size() < 3)
-            return;
-        MemeticPath out;
-        out.reserve(path.size());
-        std::size_t i = 0;
-        out.push_back(path[0]);
-        const std::size_t last = path.size() - 1;
-        while (i < last)
-        {
-            if (stop())
-            {
-                out.insert(out.end(), path.begin() + static_cast<std::ptrdiff_t>(i + 1), path.end());
-                break;
-            }
-            // Farthest visible waypoint: double the jump while visible, then bisect.
-            std::size_t good = i + 1, bad = last + 1;
-            for (std::size_t jump = 2;; jump *= 2)
-            {
-                const std::size_t j = std::min(last, i + jump);
-                if (motionValid(path[i], path[j]))
-                    good = j;
-                else
-                {
-                    bad = j;
-                    break;
-                }
-                if (j == last)
-                    break;
-            }
-            while (bad - good > 1)
-            {
-                const std::size_t mid = (good + bad) / 2;
-                if (motionValid(path[i], path[mid]))
-                    good = mid;
-                else
-                    bad = mid;
-            }
-            out.push_back(path[good]);
-            i = good;
-        }
-        path.swap(out);
+        greedyShortcut(
+            path, [this](const auto &a, const auto &b) { return motionValid(a, b); }, stop);
     }
 
     double MemeticToolkit::bisectMove(const Vec2 &a, const Vec2 &v, const Vec2 &d, const Vec2 &b)
