@@ -341,11 +341,18 @@ namespace mhplan
         const Vec2 d = b - a;
         const double l = norm(d);
         const auto pieces = static_cast<std::size_t>(std::ceil(l / fineStep_));
-        for (std::size_t k = 1; k < pieces; ++k)
+        if (pieces < 2 || !(l > 0.0) || to < from)
+            return true;
+        // Only the samples in [from, to] along the segment (the hazards' re-check asks for 2 s of it): the
+        // first and last index computed, not every sample scanned.
+        const double n = static_cast<double>(pieces);
+        const auto k0 = static_cast<std::size_t>(std::max(1.0, std::ceil(std::max(0.0, from) / l * n)));
+        const auto k1 = static_cast<std::size_t>(std::min(n - 1.0, std::floor(std::min(l, to) / l * n)));
+        for (std::size_t k = k0; k <= k1; ++k)
         {
-            const double u = static_cast<double>(k) / static_cast<double>(pieces);
+            const double u = static_cast<double>(k) / n;
             if (u * l < from || u * l > to)
-                continue;
+                continue; // rounding at the ends of [from, to]
             if (!checkPoint(a + d * u))
             {
                 t = u;
