@@ -14,7 +14,7 @@ PACKAGES=(
   g++ cmake make clang
   libompl-dev libfcl-dev libassimp-dev libeigen3-dev libyaml-cpp-dev
   libboost-filesystem-dev libboost-system-dev libboost-serialization-dev libboost-program-options-dev
-  libgtest-dev libbenchmark-dev libpagmo-dev
+  libgtest-dev libbenchmark-dev libpagmo-dev libabsl-dev
   ompl-demos sqlite3 libsqlite3-dev libgif-dev
   python3-matplotlib python3-numpy python3-yaml ccache
 )

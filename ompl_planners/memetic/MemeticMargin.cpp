@@ -5,6 +5,8 @@
    MemeticToolkit. */
 #include "ompl_planners/memetic/MemeticToolkit.h"
 
+#include "ompl_planners/memetic/detail/SegmentCaches.h"
+
 #include "src/collision/Validity.h"
 
 #include <algorithm>
@@ -24,7 +26,9 @@ namespace mhplan
         constexpr char kMarginValid = 2;   // both accept
         constexpr char kMarginInvalid = 3; // the margin refuses (obstacles on both sides, or no clearance)
         constexpr char kFineValid = 4;     // the margin accepts, and so does the fine check
-        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (refusedAt_)
+        constexpr char kFineInvalid = 5;   // the margin accepts, the fine check refuses (refusedAt)
+        constexpr char kMarginNarrow = 6;  // kMarginInvalid, and the segment's own points near the refusal
+                                           // are valid (a passage narrower than the smallest clearance)
         // 8 + 2k (+ 1): the margin refuses: an obstacle on the left (right) of a -> b within the clearance c
         // halved k times (the level at which only that side found one).
         constexpr char kMarginSided = 8;
@@ -38,41 +42,53 @@ namespace mhplan
         const bool strict = strict_ && margin_ > 0.0;
         // An unchanged segment is never checked twice (docs/variants.md, "Checks").
         const SegmentKey key{a.x, a.y, b.x, b.y};
-        auto it = cache_.find(key);
-        if (it == cache_.end())
+        auto &verdicts = caches_->verdicts;
+        auto it = verdicts.find(key);
+        char *code = it == verdicts.end() ? nullptr : &it->second;
+        if (code == nullptr)
         {
             ++motionChecks_;
             setStatePosition(a_, a);
             setStatePosition(b_, b);
             const bool valid = si_->checkMotion(a_, b_);
-            if (cache_.size() >= (std::size_t(1) << 20))
-            {
-                cache_.clear();
-                refusedAt_.clear();
-            }
-            it = cache_.emplace(key, valid ? kValid : kInvalid).first;
+            code = &remember(key, valid ? kValid : kInvalid);
         }
-        else if (it->second == kInvalid || !strict || it->second != kValid)
+        else if (*code == kInvalid || !strict || *code != kValid)
             ++cacheHits_;
-        if (it->second == kInvalid)
+        if (*code == kInvalid)
             return false;
         if (!strict)
             return true;
-        if (it->second == kValid)
+        if (*code == kValid)
+            *code = strictCode(a, b, key); // touches refusedAt only, so the pointer stays valid
+        return *code == kMarginValid || *code == kFineValid;
+    }
+
+    char MemeticToolkit::strictCode(const Vec2 &a, const Vec2 &b, const SegmentKey &key)
+    {
+        // The margin's verdict of a segment the validator accepts, then the fine check near the hazards.
+        char code = marginValid(a, b) ? kMarginValid
+                    : hitSide_ == 0   ? kMarginInvalid
+                                      : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
+        if (code != kMarginValid)
+            caches_->refusedAt[key] = hitAt_;
+        double t = 0.0;
+        if (code == kMarginValid && !nearHazardsValid(a, b, t))
         {
-            it->second = marginValid(a, b) ? kMarginValid
-                         : hitSide_ == 0   ? kMarginInvalid
-                                           : static_cast<char>(kMarginSided + 2 * hitLevel_ + (hitSide_ < 0));
-            if (it->second != kMarginValid)
-                refusedAt_[key] = hitAt_;
-            double t = 0.0;
-            if (it->second == kMarginValid && !nearHazardsValid(a, b, t))
-            {
-                it->second = kFineInvalid;
-                refusedAt_[key] = t;
-            }
+            code = kFineInvalid;
+            caches_->refusedAt[key] = t;
         }
-        return it->second == kMarginValid || it->second == kFineValid;
+        return code;
+    }
+
+    char &MemeticToolkit::remember(const SegmentKey &key, char code)
+    {
+        if (caches_->verdicts.size() >= (std::size_t(1) << 20))
+        {
+            caches_->verdicts.clear();
+            caches_->refusedAt.clear();
+        }
+        return caches_->verdicts.emplace(key, code).first->second;
     }
 
     bool MemeticToolkit::nearHazardsValid(const Vec2 &a, const Vec2 &b, double &t)
@@ -105,8 +121,8 @@ namespace mhplan
 
     int MemeticToolkit::refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const
     {
-        const auto it = cache_.find(SegmentKey{a.x, a.y, b.x, b.y});
-        if (it == cache_.end() || it->second < kMarginSided)
+        const auto it = caches_->verdicts.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == caches_->verdicts.end() || it->second < kMarginSided)
             return 0;
         const int code = it->second - kMarginSided;
         clearance = std::ldexp(clearance_, -(code / 2));
@@ -242,7 +258,7 @@ namespace mhplan
                 if (reportableSegment(path[i - 1], path[i]))
                     continue;
                 all = false;
-                if (fineRefused(path[i - 1], path[i]))
+                if (fineRefused(path[i - 1], path[i]) || crossesObstacle(path[i - 1], path[i]))
                 {
                     if (mendBeside(path, i))
                         ++i; // the new segment i -> i + 1 is checked in the next round
@@ -252,9 +268,11 @@ namespace mhplan
                 {
                     // Where the margin found the obstacle (the window's middle), so that the next rounds'
                     // shifts move the segment there by their full length.
-                    const auto at = refusedAt_.find(SegmentKey{path[0].x, path[0].y, path[1].x, path[1].y});
-                    const double t =
-                        at != refusedAt_.end() && at->second > 0.0 && at->second < 1.0 ? at->second : 0.5;
+                    const auto at =
+                        caches_->refusedAt.find(SegmentKey{path[0].x, path[0].y, path[1].x, path[1].y});
+                    const double t = at != caches_->refusedAt.end() && at->second > 0.0 && at->second < 1.0
+                                         ? at->second
+                                         : 0.5;
                     path.insert(path.begin() + 1, path[0] + (path[1] - path[0]) * t);
                     ++i;
                     continue;
@@ -280,7 +298,9 @@ namespace mhplan
         }
         for (std::size_t i = 1; i < path.size(); ++i)
             if (!reportableSegment(path[i - 1], path[i]))
+            {
                 return false;
+            }
         return true;
     }
 
@@ -310,8 +330,8 @@ namespace mhplan
         if (fineStep_ <= 0.0 || !strict_)
             return true;
         const SegmentKey key{a.x, a.y, b.x, b.y};
-        const auto it = cache_.find(key);
-        if (it == cache_.end())
+        const auto it = caches_->verdicts.find(key);
+        if (it == caches_->verdicts.end())
             return false; // not reached: motionValid() cached the verdict
         if (it->second == kMarginValid)
         {
@@ -320,7 +340,7 @@ namespace mhplan
             it->second = ok ? kFineValid : kFineInvalid;
             if (!ok)
             {
-                refusedAt_[key] = t;
+                caches_->refusedAt[key] = t;
                 if (hazards_.size() < (std::size_t(1) << 16))
                     hazards_.push_back(a + (b - a) * t);
             }
@@ -328,10 +348,47 @@ namespace mhplan
         return it->second == kFineValid;
     }
 
+    bool MemeticToolkit::crossesObstacle(const Vec2 &a, const Vec2 &b)
+    {
+        // The margin found obstacles on both sides of the segment down to the smallest clearance: either a
+        // passage narrower than that, or the segment itself runs through an obstacle the validator's samples
+        // missed (a loose path across a star's tip: the tip enters on one side and leaves on the other, so
+        // both copies are inside it). Look at the segment's own points within 2 s of where the margin
+        // refused it, every clearance c; a point inside an obstacle is mended like a fine-check refusal
+        // (mendBeside: a waypoint beside it), where pushing the ends outward barely moves the crossing.
+        const SegmentKey key{a.x, a.y, b.x, b.y};
+        const auto it = caches_->verdicts.find(key);
+        if (it == caches_->verdicts.end() || it->second != kMarginInvalid)
+            return false;
+        const double step = clearance_ > 0.0 ? clearance_ : fineStep_;
+        const auto at = caches_->refusedAt.find(key);
+        const Vec2 d = b - a;
+        const double l = norm(d);
+        bool crossed = false;
+        if (step > 0.0 && l > 0.0 && at != caches_->refusedAt.end())
+        {
+            const double from = std::max(0.0, at->second * l - 2.0 * spacing_);
+            const double to = std::min(l, at->second * l + 2.0 * spacing_);
+            const auto pieces = static_cast<std::size_t>(std::ceil((to - from) / step));
+            for (std::size_t k = 0; k <= pieces && !crossed; ++k)
+            {
+                const double u =
+                    (from + (to - from) * double(k) / double(std::max<std::size_t>(pieces, 1))) / l;
+                if (u <= 0.0 || u >= 1.0 || checkPoint(a + d * u))
+                    continue;
+                crossed = true;
+                at->second = u;
+            }
+        }
+        if (!crossed)
+            it->second = kMarginNarrow; // looked once; the ends are pushed outward as before
+        return crossed;
+    }
+
     bool MemeticToolkit::fineRefused(const Vec2 &a, const Vec2 &b) const
     {
-        const auto it = cache_.find(SegmentKey{a.x, a.y, b.x, b.y});
-        return it != cache_.end() && it->second == kFineInvalid;
+        const auto it = caches_->verdicts.find(SegmentKey{a.x, a.y, b.x, b.y});
+        return it != caches_->verdicts.end() && it->second == kFineInvalid;
     }
 
     bool MemeticToolkit::fineCheck(const Vec2 &a, const Vec2 &b, double &t, double from, double to)
@@ -365,8 +422,8 @@ namespace mhplan
     bool MemeticToolkit::mendBeside(MemeticPath &path, std::size_t i)
     {
         const Vec2 a = path[i - 1], b = path[i];
-        const auto it = refusedAt_.find(SegmentKey{a.x, a.y, b.x, b.y});
-        if (it == refusedAt_.end())
+        const auto it = caches_->refusedAt.find(SegmentKey{a.x, a.y, b.x, b.y});
+        if (it == caches_->refusedAt.end())
             return false;
         const Vec2 d = b - a;
         const double l = norm(d);

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ompl_planners/memetic/MemeticToolkit.h"
+
+#include "ompl_planners/memetic/detail/SegmentCaches.h"
 #include "ompl_planners/memetic/PathShortcut.h"
 
 #include "src/collision/Validity.h"
@@ -55,7 +57,8 @@ namespace mhplan
         }
     } // namespace
 
-    MemeticToolkit::MemeticToolkit(ob::SpaceInformationPtr si, ompl::RNG &rng) : si_(std::move(si)), rng_(rng)
+    MemeticToolkit::MemeticToolkit(ob::SpaceInformationPtr si, ompl::RNG &rng)
+        : si_(std::move(si)), rng_(rng), caches_(std::make_unique<SegmentCaches>())
     {
         a_ = si_->allocState();
         b_ = si_->allocState();
@@ -69,16 +72,11 @@ namespace mhplan
         si_->freeState(c_);
     }
 
-    std::size_t MemeticToolkit::SegmentHash::operator()(const SegmentKey &k) const
+    void MemeticToolkit::clearCache()
     {
-        std::uint64_t h = 0x9e3779b97f4a7c15ull;
-        for (const double v : {k.ax, k.ay, k.bx, k.by})
-        {
-            std::uint64_t bits;
-            std::memcpy(&bits, &v, sizeof bits);
-            h ^= bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-        }
-        return static_cast<std::size_t>(h);
+        caches_->verdicts.clear();
+        caches_->refusedAt.clear();
+        hazards_.clear();
     }
 
     bool MemeticToolkit::motionValid(const Vec2 &a, const Vec2 &b, double &fraction)

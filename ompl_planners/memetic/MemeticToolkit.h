@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -153,12 +154,7 @@ namespace mhplan
         /** \brief Forget every cached segment verdict (a new problem, clear()). The cache is keyed by the
             exact coordinates of the segment's two ends and holds valid and invalid verdicts (margin
             included), up to 2^20 entries, then starts over (docs/variants.md, "Checks"). */
-        void clearCache()
-        {
-            cache_.clear();
-            refusedAt_.clear();
-            hazards_.clear();
-        }
+        void clearCache();
 
         /** \brief Lazy roadmap (docs/variants.md, "First paths: a lazy roadmap"): forget every sample. */
         void roadmapClear();
@@ -252,6 +248,10 @@ namespace mhplan
             point and motions the validator accepts and whose new segments pass the fine check within s of
             it. False when none does. */
         bool mendBeside(MemeticPath &path, std::size_t i);
+        /** \brief The margin refused a -> b with obstacles on both sides at the smallest clearance, and one
+           of the segment's own points within 2 s of the refusal (every c) is inside an obstacle: its fraction
+            replaces the refusal's (refusedAt), for mendBeside. Looked at once per segment. */
+        bool crossesObstacle(const Vec2 &a, const Vec2 &b);
         /** \brief The fine check refused the segment (cached verdict). */
         bool fineRefused(const Vec2 &a, const Vec2 &b) const;
         /** \brief The fine check's samples of a -> b near the points where it once failed (hazards_);
@@ -291,6 +291,8 @@ namespace mhplan
         unsigned long motionChecks_{0};
         unsigned long cacheHits_{0};
 
+      public:
+        /** \brief A segment by the exact coordinates of its two ends (the caches' key). */
         struct SegmentKey
         {
             double ax, ay, bx, by;
@@ -299,14 +301,17 @@ namespace mhplan
                 return ax == o.ax && ay == o.ay && bx == o.bx && by == o.by;
             }
         };
-        struct SegmentHash
-        {
-            std::size_t operator()(const SegmentKey &k) const;
-        };
-        std::unordered_map<SegmentKey, char, SegmentHash> cache_; ///< MemeticMargin.cpp's verdict codes
-        /** \brief Per refused segment (the margin or the fine check), the fraction where: the fine check's
-            first failing sample, the middle of the margin's refusing window. */
-        std::unordered_map<SegmentKey, double, SegmentHash> refusedAt_;
+
+      private:
+        /** \brief The verdict cache and where refused segments were refused (detail/SegmentCaches.h). */
+        struct SegmentCaches;
+        std::unique_ptr<SegmentCaches> caches_;
+        /** \brief Cache a new verdict (the cache starts over at 2^20 entries); its code, to update at once.
+         */
+        char &remember(const SegmentKey &key, char code);
+        /** \brief The strict verdict code of a segment the validator accepts (the margin, the hazards' fine
+            check); records where it was refused. */
+        char strictCode(const Vec2 &a, const Vec2 &b, const SegmentKey &key);
 
         // The lazy roadmap: points (0 = start, 1 = goal), edges with a state (0 unknown, 1 valid, 2 invalid).
         struct RoadmapEdge
