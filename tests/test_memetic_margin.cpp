@@ -7,6 +7,7 @@
    most 1/2000 of the bounds' diagonal apart on every segment, the exact geometry; src/metrics/Metrics.h,
    defaultMetricStep). Budgets are generations, never wall-clock. */
 #include "ompl_planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/MemeticToolkit.h"
 #include "src/registry/Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
@@ -157,4 +158,61 @@ TEST(MemeticFineCheck, ACornerBesideTheFirstSegmentIsSeenByTheCopies)
              cuts(corner, {{"seed", "5"}, {"max_iterations", "8"}, {"validator_fine_step", step}}))
             EXPECT_EQ(cut, 0.0) << name << " (validator_fine_step " << step << "): the returned path runs "
                                 << cut << " m inside the corner";
+}
+
+TEST(MemeticMargin, ALoosePathAcrossATipIsMendedBesideIt)
+{
+    // A loose path (the search's, before the margin) runs across a tip whose width on it, 4.3 cm, lies between
+    // two of the validator's samples; the margin's copies see the tip on both sides of the segment down to the
+    // smallest clearance (both are inside it), so no sideways shift helps. makeStrict() looks at the
+    // segment's own points there, finds one inside the tip and puts a waypoint beside it (docs/variants.md,
+    // "The margin"): the strict path goes round the tip's apex, 8 cm above, and passes the dense check.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const double depth = 6.0, half = depth * std::tan(M_PI / 12.0);
+    // The second segment, (10, 10) to (19, 10): 160 samples 5.625 cm apart; the tip's crossing is centred
+    // between the third and the fourth.
+    const double apexX = 10.0 + 2.5 * 9.0 / 160.0, apexY = 10.08;
+    const Outline obstacle{{apexX - half, apexY - depth}, {apexX + half, apexY - depth}, {apexX, apexY}};
+    og::SimpleSetupPtr ss = test::planarAppProblem([&](double x, double y) { return !inside(obstacle, x, y); },
+                                                   0.002, {1.0, 10.0}, {19.0, 10.0});
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    og::PathGeometric loose(si);
+    for (const double x : {1.0, 10.0, 19.0})
+    {
+        ob::ScopedState<> s(si->getStateSpace());
+        s[0] = x;
+        s[1] = 10.0;
+        loose.append(s.get());
+    }
+    ASSERT_TRUE(loose.check()) << "the validator now sees the tip on the loose path";
+    ASSERT_GT(lengthInside(loose, obstacle, kDenseStep), 0.0) << "the loose path no longer crosses the tip";
+
+    // The planners' margin (validator_margin 0.5, validator_clearance 0.03, validator_min_clearance 0.001,
+    // validator_fine_step 0.25, all of the validator's spacing s).
+    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
+    ompl::RNG rng(3);
+    MemeticToolkit tk(si, rng);
+    tk.setBounds({0.0, 20.0, 0.0, 20.0});
+    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
+    tk.setFineCheck(s, 0.25 * s);
+    tk.setFixedPoints({1.0, 10.0}, {19.0, 10.0});
+    MemeticPath path{{1.0, 10.0}, {10.0, 10.0}, {19.0, 10.0}};
+    ASSERT_TRUE(tk.makeStrict(path, [] { return false; }));
+    EXPECT_TRUE(tk.pathValid(path));
+    og::PathGeometric strict(si);
+    for (const Vec2 &p : path)
+    {
+        ob::ScopedState<> st(si->getStateSpace());
+        st[0] = p.x;
+        st[1] = p.y;
+        strict.append(st.get());
+    }
+    EXPECT_EQ(lengthInside(strict, obstacle, kDenseStep), 0.0);
+    EXPECT_TRUE(strict.check());
+    // Round the apex, beside it: the mend adds one waypoint next to the tip (about 4 cm longer, a local
+    // detour the polish then shortens), not the metres of pushing the segment's ends outward.
+    EXPECT_LT(MemeticToolkit::length(path), 18.1);
+    std::cout << "[margin] strict length " << MemeticToolkit::length(path) << " with " << path.size()
+              << " points\n";
 }
