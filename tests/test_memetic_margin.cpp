@@ -162,19 +162,20 @@ TEST(MemeticFineCheck, ACornerBesideTheFirstSegmentIsSeenByTheCopies)
 
 TEST(MemeticMargin, ALoosePathAcrossATipIsMendedBesideIt)
 {
-    // A loose path (the search's, before the margin) runs across a tip whose width on it, 4.3 cm, lies between
-    // two of the validator's samples; the margin's copies see the tip on both sides of the segment down to the
-    // smallest clearance (both are inside it), so no sideways shift helps. makeStrict() looks at the
-    // segment's own points there, finds one inside the tip and puts a waypoint beside it (docs/variants.md,
-    // "The margin"): the strict path goes round the tip's apex, 8 cm above, and passes the dense check.
+    // A loose path (the search's, before the margin) runs across a tip whose width on it, 4.3 cm, lies
+    // between two of the validator's samples; the margin's copies see the tip on both sides of the segment
+    // down to the smallest clearance (both are inside it), so no sideways shift helps. makeStrict() looks at
+    // the segment's own points there, finds one inside the tip and puts a waypoint beside it
+    // (docs/variants.md, "The margin"): the strict path goes round the tip's apex, 8 cm above, and passes the
+    // dense check.
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     const double depth = 6.0, half = depth * std::tan(M_PI / 12.0);
     // The second segment, (10, 10) to (19, 10): 160 samples 5.625 cm apart; the tip's crossing is centred
     // between the third and the fourth.
     const double apexX = 10.0 + 2.5 * 9.0 / 160.0, apexY = 10.08;
     const Outline obstacle{{apexX - half, apexY - depth}, {apexX + half, apexY - depth}, {apexX, apexY}};
-    og::SimpleSetupPtr ss = test::planarAppProblem([&](double x, double y) { return !inside(obstacle, x, y); },
-                                                   0.002, {1.0, 10.0}, {19.0, 10.0});
+    og::SimpleSetupPtr ss = test::planarAppProblem(
+        [&](double x, double y) { return !inside(obstacle, x, y); }, 0.002, {1.0, 10.0}, {19.0, 10.0});
     ss->setup();
     const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
     og::PathGeometric loose(si);
