@@ -19,6 +19,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <typeinfo>
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -333,10 +334,16 @@ namespace mhplan
     double MemeticPlanner::informedBound() const
     {
         // Path length only: then no path through q is shorter than |start q| + |q goal| (docs/variants.md).
+        // The planar roadmap measures |start q| in the plane: only where the space's distance is the plane's
+        // (a RealVectorStateSpace itself; a user's subclass may count otherwise, e.g. cells of a map). The
+        // state mode measures with the space's own distance, the objective's.
         const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
         const bool length =
             !opt || dynamic_cast<const ob::PathLengthOptimizationObjective *>(opt.get()) != nullptr;
-        return length && haveSolution_ ? bestCostObj_.value() : std::numeric_limits<double>::infinity();
+        const ob::StateSpace &space = *si_->getStateSpace();
+        const bool euclidean = stateMode_ || typeid(space) == typeid(ob::RealVectorStateSpace);
+        return length && euclidean && haveSolution_ ? bestCostObj_.value()
+                                                    : std::numeric_limits<double>::infinity();
     }
 
     bool MemeticPlanner::roadmapIndividual(Individual &out)
