@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -193,6 +194,41 @@ namespace mhplan
         /** \brief The piece between arc positions: the ends' states and the segments they lie on. */
         bool pickPiece(const StatePath &path, double scale, StatePoint &p1, std::size_t &seg1, StatePoint &p2,
                        std::size_t &seg2);
+
+        /** \brief Two trees of a connection, one from each end (tree 0 from \e from, motions parent -> child;
+            tree 1 from \e to, child -> parent), the tree that extends next. Each tree state keeps its OMPL
+            state: the nearest-state scans compute the space's distance on them directly (converting the
+            coordinates of both states for every distance was about half of a connection's time on SE(3)). */
+        struct Connection
+        {
+            /** \brief A tree state: its coordinates, its parent (none for the root) and the state itself,
+               kept for the nearest-state distances (no conversion per distance). */
+            struct Node
+            {
+                StatePoint x;
+                std::size_t parent;
+                ompl::base::State *s;
+            };
+            explicit Connection(ompl::base::SpaceInformationPtr si);
+            ~Connection();
+            Connection(const Connection &) = delete;
+            Connection &operator=(const Connection &) = delete;
+
+            ompl::base::SpaceInformationPtr si;
+            StatePoint from, to;
+            std::vector<Node> trees[2];
+            int next{0};
+            ompl::base::State *query;
+
+            std::size_t size() const { return trees[0].size() + trees[1].size(); }
+        };
+        /** \brief Grow \e c until its trees join (Found, \e path from c.from to c.to), they hold \e maxNodes
+            states, or stop() holds. */
+        ConnectResult grow(Connection &c, StatePath &path, double range, std::size_t maxNodes,
+                           const Sampler &sample, const std::function<bool()> &stop, StatePath *closest,
+                           double *closestDistance);
+        /** \brief Append \e x to tree \e t of \e c (its state made by the parametrisation); its index. */
+        std::size_t addNode(Connection &c, int t, const StatePoint &x, std::size_t parent);
 
         struct KeyHash
         {
