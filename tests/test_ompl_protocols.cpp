@@ -29,6 +29,7 @@
 #include <ompl/util/Console.h>
 
 #include "RegistrySupport.h"
+#include "SpaceProblems.h"
 
 #include <gtest/gtest.h>
 
@@ -226,18 +227,10 @@ TEST_P(OmplProtocols, GridMapWithACellDistance)
 
 TEST_P(OmplProtocols, DiscsAnytimeWithTheDiscreteValidator)
 {
-    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-    space->setBounds(0.0, 20.0);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker(
-        [](const ob::State *s)
-        {
-            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-            return outsideDiscs(v[0], v[1]);
-        });
-    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
-    si->setStateValidityCheckingResolution(0.002);
-    si->setup();
+    // The user's set-up: R^2 [0, 20]^2, a point checker over the discs, OMPL's DiscreteMotionValidator at
+    // resolution 0.002 (SpaceProblems.h); the problem definitions below are the test's own.
+    const ob::SpaceInformationPtr si =
+        test::planarAppProblem(outsideDiscs, 0.002, {1.0, 1.0}, {19.0, 19.0})->getSpaceInformation();
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
     auto opt = std::make_shared<ob::PathLengthOptimizationObjective>(si);
     opt->setCostThreshold(opt->infiniteCost());
