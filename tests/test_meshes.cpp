@@ -69,28 +69,30 @@ namespace
 TEST(MeshIO, ColladaNestedTransformsInstancesAndUpAxis)
 {
     // nested_xup.dae (environments/omplapp/make_meshes.py): a unit cube placed twice under a translated
-    // node, once rotated 90 degrees about the file's z and scaled 2; the file is X_UP, so its x becomes +z
-    // and (a rotation) its y becomes -x and its z -y.
+    // node, once rotated 90 degrees about the file's z and scaled 2; the file is X_UP, turned as assimp and
+    // OMPL.app turn it (its x becomes +y): the file's point (x, y, z) lands at (-y, x, z).
     const TriangleMesh m = readMesh(kDir + "nested_xup.dae");
     EXPECT_EQ(m.triangles.size(), 24u);
     const Eigen::AlignedBox3d box = m.box();
-    EXPECT_TRUE(box.min().isApprox(Eigen::Vector3d(-6, -2, 8), 1e-5)) << box.min().transpose();
-    EXPECT_TRUE(box.max().isApprox(Eigen::Vector3d(0, 0, 11), 1e-5)) << box.max().transpose();
+    EXPECT_TRUE(box.min().isApprox(Eigen::Vector3d(-6, 8, 0), 1e-5)) << box.min().transpose();
+    EXPECT_TRUE(box.max().isApprox(Eigen::Vector3d(0, 11, 2), 1e-5)) << box.max().transpose();
     // The file's point (10, 2, 0) (corner (1, 0, 0) of the scaled, turned instance) and (11, 6, 1) (the
     // far corner of the other instance).
-    EXPECT_TRUE(hasVertex(m, {-2, 0, 10}));
-    EXPECT_TRUE(hasVertex(m, {-6, -1, 11}));
+    EXPECT_TRUE(hasVertex(m, {-2, 10, 0}));
+    EXPECT_TRUE(hasVertex(m, {-6, 11, 1}));
 }
 
-TEST(MeshIO, ColladaZUpKeepsItsCoordinatesAndYUpIsTurned)
+TEST(MeshIO, ColladaUpAxisTurnedAsOmplAppReadsItAndUnitsIgnored)
 {
-    // An asymmetric triangle under a node matrix; as Z_UP (SketchUp) the coordinates are kept, as Y_UP
-    // (COLLADA's default) the file's y becomes +z.
-    const auto dae = [](const std::string &up)
+    // An asymmetric triangle under a node matrix. As OMPL.app reads COLLADA (assimp's scene, the file's up
+    // axis turned to +y): Y_UP keeps its coordinates, Z_UP (SketchUp) turns (x, y, z) to (x, z, -y). A
+    // <unit> is not applied: OMPL.app's problem files mix a robot in inches with an environment without a
+    // unit, both in the same numbers.
+    const auto dae = [](const std::string &up, const std::string &unit)
     {
         return std::string(R"(<?xml version="1.0"?>
-<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset><up_axis>)") +
-               up + R"(</up_axis></asset>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset>)") +
+               unit + "<up_axis>" + up + R"(</up_axis></asset>
 <library_geometries><geometry id="g"><mesh><source id="p"><float_array id="a" count="9">0 0 0 1 0 0 0 2 3</float_array>
 <technique_common><accessor source="#a" count="3" stride="3"><param name="X" type="float"/><param name="Y" type="float"/>
 <param name="Z" type="float"/></accessor></technique_common></source><vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
@@ -99,10 +101,14 @@ TEST(MeshIO, ColladaZUpKeepsItsCoordinatesAndYUpIsTurned)
 <scene><instance_visual_scene url="#s"/></scene></COLLADA>
 )";
     };
-    const TriangleMesh z = readMesh(tempFile("zup.dae", dae("Z_UP")));
-    EXPECT_TRUE(hasVertex(z, {5, 0, 0}) && hasVertex(z, {6, 0, 0}) && hasVertex(z, {5, 2, 3}));
-    const TriangleMesh y = readMesh(tempFile("yup.dae", dae("Y_UP")));
-    EXPECT_TRUE(hasVertex(y, {5, 0, 0}) && hasVertex(y, {6, 0, 0}) && hasVertex(y, {5, -3, 2}));
+    const TriangleMesh y = readMesh(tempFile("yup.dae", dae("Y_UP", "")));
+    EXPECT_TRUE(hasVertex(y, {5, 0, 0}) && hasVertex(y, {6, 0, 0}) && hasVertex(y, {5, 2, 3}));
+    const TriangleMesh z = readMesh(tempFile("zup.dae", dae("Z_UP", "")));
+    EXPECT_TRUE(hasVertex(z, {5, 0, 0}) && hasVertex(z, {6, 0, 0}) && hasVertex(z, {5, 3, -2}));
+    const TriangleMesh inches =
+        readMesh(tempFile("inch.dae", dae("Z_UP", R"(<unit meter="0.0254" name="inch"/>)")));
+    EXPECT_TRUE(hasVertex(inches, {5, 0, 0}) && hasVertex(inches, {6, 0, 0}) && hasVertex(inches, {5, 3, -2}))
+        << "the unit was applied";
 }
 
 TEST(MeshIO, ObjStlPlyRead)

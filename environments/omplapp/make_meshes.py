@@ -90,7 +90,9 @@ def write_dae(name, up, geometries, scene):
 bugtrap = merge([box((-4, -4, -1), (-3, 4, 1)), box((3, -4, -1), (4, 4, 1)), box((-4, -4, -1), (4, -3, 1)),
                  box((-4, 3, -1), (-0.6, 4, 1)), box((0.6, 3, -1), (4, 4, 1))])
 write_obj("bugtrap_env.obj", bugtrap, "mhplan 2D bug trap: a pocket in [-4, 4]^2 open by 1.2 at the top")
-# Its robot: a 1.0 x 0.4 bar, written as COLLADA the way SketchUp writes it (Z_UP, a node with a matrix).
+# Its robot: a 1.0 x 0.4 bar, written as COLLADA the way SketchUp writes it (Z_UP, a node with a matrix). Read
+# as OMPL.app reads COLLADA (docs/meshes.md), Z_UP turns (x, y, z) to (x, z, -y): the bar's cross-section is
+# 0.4 x 0.4 about the axis, so it is the same bar either way.
 bar = box((0, 0, -0.2), (1.0, 0.4, 0.2))
 write_dae("bar_robot.dae", "Z_UP", [("bar", bar)],
           '<node name="SketchUp"><node name="instance_0"><matrix>1 0 0 -0.5 0 1 0 -0.2 0 0 1 0 0 0 0 1</matrix>'
@@ -104,7 +106,8 @@ write_stl("passage_env.stl", wall)
 write_ply("rod_robot.ply", box((-0.8, -0.25, -0.25), (0.8, 0.25, 0.25)))
 
 # COLLADA with nested transforms, two instances of one geometry and a non-default up axis (X_UP): the unit
-# cube placed (after turning X_UP to +z) at two known places; tests/test_meshes.cpp checks the vertices.
+# cube placed (after turning X_UP to +y, as assimp and OMPL.app do) at two known places; tests/test_meshes.cpp
+# checks the vertices.
 cube = box((0, 0, 0), (1, 1, 1))
 write_dae("nested_xup.dae", "X_UP", [("cube", cube)],
           '<node name="outer"><translate>10 0 0</translate>'

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -117,13 +118,21 @@ namespace mhplan
             throw InputError(path + ": the mesh file holds no complete scene");
         TriangleMesh mesh;
         mesh.source = path;
-        // assimp turns a COLLADA scene's up axis into +y (its root transform); mhplan's frame has +z up, so
-        // +y is turned back to +z: a Z_UP file keeps its own coordinates exactly (the two rotations cancel,
-        // their entries being 0 and +-1), docs/meshes.md.
+        // COLLADA as OMPL.app reads it (docs/meshes.md, "Up axis and units"): assimp's scene as it stands,
+        // the root turned so that the file's up axis is +y (OMPL.app composes every node's transform from
+        // the root), but without the scale of COLLADA's <unit meter=...>, which assimp multiplies into the
+        // root and OMPL.app's problem files do not expect (a robot file in inches beside an environment
+        // file without a unit). The root is that uniform scale times a rotation: its determinant's cube
+        // root is the scale.
         Eigen::Matrix4d root = Eigen::Matrix4d::Identity();
         const std::string ext = extensionOf(path);
         if (ext == ".dae" || ext == ".zae")
-            root.topLeftCorner<3, 3>() << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+        {
+            const Eigen::Matrix3d turn = toEigen(scene->mRootNode->mTransformation).topLeftCorner<3, 3>();
+            const double unit = std::cbrt(std::abs(turn.determinant()));
+            if (std::isfinite(unit) && unit > 0.0)
+                root.topLeftCorner<3, 3>() /= unit;
+        }
         Collector{scene, limits, path, mesh}.visit(scene->mRootNode, root, 0);
         checkAndCleanMesh(mesh);
         return mesh;

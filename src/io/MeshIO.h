@@ -12,11 +12,11 @@ namespace mhplan
 {
     /** \brief Read a mesh file through assimp: every mesh of every node, placed by the node's transform
         composed with its ancestors' (so instances and nested transforms count), polygons triangulated,
-        points and lines dropped, and, for COLLADA, the file's up axis turned to +z (a Z_UP file, as SketchUp
-        writes it, keeps its coordinates; Y_UP, COLLADA's default, and X_UP are rotated so that their up axis
-        becomes +z). Refuses (InputError naming the file) a missing or unreadable file, one larger than
-        limits.maxFileBytes, a scene with more triangles or vertices than the limits, a mesh without
-        triangles of positive area, and non-finite coordinates. */
+        points and lines dropped, and, for COLLADA, read as OMPL.app reads it (docs/meshes.md, "Up axis and
+        units"): the file's up axis turned to +y as assimp turns it (Z_UP: (x, y, z) at (x, z, -y); X_UP at
+        (-y, x, z); Y_UP kept), COLLADA's unit not applied. Refuses (InputError naming the file) a missing or
+       unreadable file, one larger than limits.maxFileBytes, a scene with more triangles or vertices than the
+       limits, a mesh without triangles of positive area, and non-finite coordinates. */
     TriangleMesh readMesh(const std::string &path, const MeshLimits &limits = {});
 } // namespace mhplan
 
