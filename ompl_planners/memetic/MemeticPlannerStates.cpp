@@ -116,8 +116,15 @@ namespace mhplan
     {
         MemeticStateToolkit &tk = *stateToolkit_;
         StatePath p = ind.states;
-        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path).
-        tk.tighten(p, coarseTurn_, 1e-3, 10, stop_);
+        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path). Anytime: a pass
+        // that makes the path cheaper than the best is reported at once (docs/spaces.md: with a mesh checker
+        // on OMPL.app's problems one coarse search of a long first path takes many seconds).
+        const MemeticStateToolkit::PassReport report = [&](const StatePath &q)
+        {
+            if (improvesOn(tk.cost(q)))
+                evaluate(q);
+        };
+        tk.tighten(p, coarseTurn_, 1e-3, 10, stop_, 2000, false, report);
         if (stopRequested())
             return false;
         ind.states.swap(p);

@@ -149,10 +149,13 @@ namespace mhplan
     }
 
     bool MemeticStateToolkit::tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                                      const std::function<bool()> &stop, unsigned int maxPoints, bool precise)
+                                      const std::function<bool()> &stop, unsigned int maxPoints, bool precise,
+                                      const PassReport &afterPass)
     {
         dedupe(path);
         shortcut(path, stop);
+        if (afterPass && !stop())
+            afterPass(path);
         std::vector<char> dirty(path.size(), 1), held;
         double len = cost(path);
         for (unsigned int pass = 0; pass < maxPasses; ++pass)
@@ -162,6 +165,8 @@ namespace mhplan
             // Only waypoints the previous pass could not move are subdivided around.
             const bool split = subdivide(path, dirty, held, maxTurn, maxPoints);
             const bool changed = pullPass(path, dirty, held, stop, precise);
+            if (afterPass && changed && !stop())
+                afterPass(path);
             const double now = cost(path);
             if (!changed && !split)
                 break;

@@ -129,10 +129,14 @@ namespace mhplan
         double extent() const;
 
         void shortcut(StatePath &path, const std::function<bool()> &stop);
+        /** \brief Called with the path after the shortcut and after every pass of tighten() (valid, no
+            costlier than before). */
+        using PassReport = std::function<void(const StatePath &)>;
         /** \brief Local search (class doc); false when \e stop() interrupted it (the path stays valid and no
-            costlier). */
+            costlier). \e afterPass, when given, sees the path after the shortcut and after every pass. */
         bool tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                     const std::function<bool()> &stop, unsigned int maxPoints = 2000, bool precise = false);
+                     const std::function<bool()> &stop, unsigned int maxPoints = 2000, bool precise = false,
+                     const PassReport &afterPass = nullptr);
 
         /** \brief Random local search of the waypoints (a (1+1) evolution strategy per waypoint,
            docs/spaces.md): \e tries candidates per interior waypoint drawn with every coordinate within \e
