@@ -9,6 +9,7 @@
 #include "src/io/MeshIO.h"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/goals/GoalState.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 #include <ompl/util/RandomNumbers.h>
@@ -350,4 +351,26 @@ TEST(MeshSetup, RefusesInvalidStartAndUnknownSettings)
     EXPECT_NEAR(ss->getSpaceInformation()->getStateValidityCheckingResolution(), 0.02, 1e-12);
     EXPECT_FALSE(std::dynamic_pointer_cast<MeshCertifiedMotionValidator>(
         ss->getSpaceInformation()->getMotionValidator()));
+}
+
+TEST(MeshSetup, AHeadingOfPiIsTheHeadingOfMinusPi)
+{
+    // OMPL.app's problem files write a reversed heading as theta = 3.141592653589793; OMPL's SO(2) holds
+    // [-pi, pi), so the pose is stored at -pi (the same heading) instead of being refused as outside the
+    // volume.
+    MeshProblemSpec spec;
+    spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
+                                                  readMesh(kDir + "bar_robot.dae"), true);
+    spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
+    spec.start.position = {0, 0, 0};
+    spec.goal.position = {0, 6, 0};
+    spec.goal.orientation =
+        Eigen::Quaterniond(Eigen::AngleAxisd(3.141592653589793, Eigen::Vector3d::UnitZ()));
+    ompl::geometric::SimpleSetupPtr ss;
+    ASSERT_NO_THROW(ss = makeMeshSetup(spec));
+    const auto *goal = ss->getProblemDefinition()->getGoal()->as<ob::GoalState>()->getState();
+    const double yaw = goal->as<ob::SE2StateSpace::StateType>()->getYaw();
+    EXPECT_NEAR(std::abs(yaw), M_PI, 1e-12);
+    EXPECT_LT(yaw, M_PI);
+    EXPECT_TRUE(ss->getSpaceInformation()->satisfiesBounds(goal));
 }

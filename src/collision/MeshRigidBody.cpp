@@ -379,7 +379,12 @@ namespace mhplan
             auto *s = state->as<ob::SE2StateSpace::StateType>();
             s->setXY(pose.position.x(), pose.position.y());
             const Eigen::Vector3d x = pose.orientation * Eigen::Vector3d::UnitX();
-            s->setYaw(std::atan2(x.y(), x.x()));
+            // atan2 answers in [-pi, pi], OMPL's SO(2) holds [-pi, pi): a heading of pi (a goal.theta of
+            // 3.141592653589793, as OMPL.app's problem files write it) is the same heading as -pi.
+            double yaw = std::atan2(x.y(), x.x());
+            if (yaw >= M_PI)
+                yaw -= 2.0 * M_PI;
+            s->setYaw(yaw);
         }
         else
         {
