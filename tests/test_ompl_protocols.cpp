@@ -23,7 +23,9 @@
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/util/Console.h>
@@ -33,6 +35,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -141,6 +145,8 @@ namespace
         ob::ScopedState<> g(si);
         g[0] = x;
         g[1] = y;
+        if (si->getStateSpace()->getDimension() > 2)
+            g[2] = 0.0; // SE(2): heading 0
         auto goal = std::make_shared<ob::GoalState>(si);
         goal->setState(g);
         goal->setThreshold(1e-3);
@@ -153,6 +159,8 @@ namespace
         ob::ScopedState<> s(si);
         s[0] = sx;
         s[1] = sy;
+        if (si->getStateSpace()->getDimension() > 2)
+            s[2] = 0.0;
         pdef.clearStartStates();
         pdef.addStartState(s);
         pdef.clearGoal();
@@ -225,76 +233,144 @@ TEST_P(OmplProtocols, GridMapWithACellDistance)
     }
 }
 
+namespace
+{
+    /** \brief The position (x, y) of a state of R^2 or of SE(2) (and its car spaces). */
+    std::array<double, 2> position(const ob::State *s, bool planar)
+    {
+        if (planar)
+        {
+            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+            return {v[0], v[1]};
+        }
+        const auto *se2 = s->as<ob::SE2StateSpace::StateType>();
+        return {se2->getX(), se2->getY()};
+    }
+
+    /** \brief The path followed along the space's interpolation every \e step of the space's distance
+        clear of the discs. */
+    bool interpolatedFree(const og::PathGeometric &path, double step, bool planar)
+    {
+        og::PathGeometric fine(path);
+        fine.interpolate(
+            std::max<unsigned int>(fine.getStateCount(), unsigned(std::ceil(fine.length() / step))));
+        for (std::size_t i = 0; i < fine.getStateCount(); ++i)
+        {
+            const auto p = position(fine.getState(i), planar);
+            if (!outsideDiscs(p[0], p[1]))
+                return false;
+        }
+        return true;
+    }
+
+    /** \brief OMPL's anytime protocol (the file's comment) for planner \e name on \e si (R^2 or SE(2)). */
+    void anytimeProtocol(const std::string &name, const ob::SpaceInformationPtr &si, bool planar)
+    {
+        auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+        auto opt = std::make_shared<ob::PathLengthOptimizationObjective>(si);
+        opt->setCostThreshold(opt->infiniteCost());
+        pdef->setOptimizationObjective(opt);
+        ob::PlannerPtr planner = allocate(name, si);
+        planner->setProblemDefinition(pdef);
+        planner->setup();
+
+        // Solve and clear, as OMPL's basic planner test calls them.
+        setQuery(si, *pdef, 1.0, 1.0, 19.0, 19.0);
+        const auto timed = [](double s) { return ob::timedPlannerTerminationCondition(s); };
+        planner->clear();
+        EXPECT_TRUE(planner->solve(timed(1.0)));
+        planner->clear();
+        EXPECT_TRUE(planner->solve(timed(1.0)));
+        EXPECT_TRUE(planner->solve(timed(1.0)));
+        planner->clear();
+        planner->solve(ob::plannerAlwaysTerminatingCondition());
+        planner->solve(0.001);
+        planner->solve(0.01);
+        bool solved = planner->solve(0.1);
+        if (!solved)
+            solved = planner->solve(timed(1.0));
+        EXPECT_TRUE(solved);
+        planner->clear();
+        planner->clear();
+
+        const struct
+        {
+            double sx, sy, gx, gy;
+        } queries[] = {{1.0, 1.0, 19.0, 19.0}, {19.0, 2.0, 1.5, 17.0}};
+        for (const auto &q : queries)
+        {
+            setQuery(si, *pdef, q.sx, q.sy, q.gx, q.gy);
+            const double straight = std::hypot(q.gx - q.sx, q.gy - q.sy);
+            planner->clear();
+            pdef->clearSolutionPaths();
+            opt->setCostThreshold(opt->infiniteCost());
+            ASSERT_EQ(planner->solve(1.0), ob::PlannerStatus::EXACT_SOLUTION) << name;
+            const double first = solutionOf(*pdef).cost(opt).value();
+            // A threshold no path reaches: every slice runs to its end.
+            opt->setCostThreshold(ob::Cost(std::numeric_limits<double>::epsilon()));
+            double previous = first;
+            for (int slice = 0; slice < 6; ++slice)
+            {
+                pdef->clearSolutionPaths();
+                const ob::PlannerStatus status = planner->solve(0.1);
+                ASSERT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION) << name << ", slice " << slice;
+                const double cost = solutionOf(*pdef).cost(opt).value();
+                EXPECT_LE(cost, previous) << name << ", slice " << slice << ": the cost went up";
+                EXPECT_FALSE(pdef->hasOptimizedSolution());
+                EXPECT_FALSE(pdef->hasApproximateSolution());
+                previous = cost;
+            }
+            EXPECT_LE(previous, first);
+            // The threshold met by the first solution: the next solve() reports an optimized solution.
+            pdef->clearSolutionPaths();
+            opt->setCostThreshold(ob::Cost(first));
+            ASSERT_TRUE(planner->solve(0.1));
+            const double last = solutionOf(*pdef).cost(opt).value();
+            EXPECT_TRUE(pdef->hasOptimizedSolution() || std::abs(last - first) <= 1e-9 * first) << name;
+            EXPECT_GE(last, straight - 1e-9) << name << ": shorter than the straight line";
+            if (planar)
+                EXPECT_TRUE(denseFree(solutionOf(*pdef), 1e-3, outsideDiscs))
+                    << name << ": the returned path enters a disc";
+            else
+                EXPECT_TRUE(interpolatedFree(solutionOf(*pdef), 1e-3, false))
+                    << name << ": the returned path enters a disc";
+        }
+    }
+} // namespace
+
 TEST_P(OmplProtocols, DiscsAnytimeWithTheDiscreteValidator)
 {
     // The user's set-up: R^2 [0, 20]^2, a point checker over the discs, OMPL's DiscreteMotionValidator at
-    // resolution 0.002 (SpaceProblems.h); the problem definitions below are the test's own.
-    const ob::SpaceInformationPtr si =
-        test::planarAppProblem(outsideDiscs, 0.002, {1.0, 1.0}, {19.0, 19.0})->getSpaceInformation();
-    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
-    auto opt = std::make_shared<ob::PathLengthOptimizationObjective>(si);
-    opt->setCostThreshold(opt->infiniteCost());
-    pdef->setOptimizationObjective(opt);
-    ob::PlannerPtr planner = allocate(GetParam(), si);
-    planner->setProblemDefinition(pdef);
-    planner->setup();
+    // resolution 0.002 (SpaceProblems.h); the problem definitions are the protocol's own.
+    anytimeProtocol(
+        GetParam(),
+        test::planarAppProblem(outsideDiscs, 0.002, {1.0, 1.0}, {19.0, 19.0})->getSpaceInformation(), true);
+}
 
-    // Solve and clear, as OMPL's basic planner test calls them.
-    setQuery(si, *pdef, 1.0, 1.0, 19.0, 19.0);
-    const auto timed = [](double s) { return ob::timedPlannerTerminationCondition(s); };
-    planner->clear();
-    EXPECT_TRUE(planner->solve(timed(1.0)));
-    planner->clear();
-    EXPECT_TRUE(planner->solve(timed(1.0)));
-    EXPECT_TRUE(planner->solve(timed(1.0)));
-    planner->clear();
-    planner->solve(ob::plannerAlwaysTerminatingCondition());
-    planner->solve(0.001);
-    planner->solve(0.01);
-    bool solved = planner->solve(0.1);
-    if (!solved)
-        solved = planner->solve(timed(1.0));
-    EXPECT_TRUE(solved);
-    planner->clear();
-    planner->clear();
-
-    const struct
+TEST_P(OmplProtocols, DiscsAnytimeOnSE2AndDubins)
+{
+    // The same protocol off the plane (the state mode): SE(2) and a Dubins car (turning radius 1) over
+    // [0, 20]^2, the point checker on the position, OMPL's DiscreteMotionValidator at resolution 0.002.
+    for (const bool dubins : {false, true})
     {
-        double sx, sy, gx, gy;
-    } queries[] = {{1.0, 1.0, 19.0, 19.0}, {19.0, 2.0, 1.5, 17.0}};
-    for (const auto &q : queries)
-    {
-        setQuery(si, *pdef, q.sx, q.sy, q.gx, q.gy);
-        const double straight = std::hypot(q.gx - q.sx, q.gy - q.sy);
-        planner->clear();
-        pdef->clearSolutionPaths();
-        opt->setCostThreshold(opt->infiniteCost());
-        ASSERT_EQ(planner->solve(1.0), ob::PlannerStatus::EXACT_SOLUTION) << GetParam();
-        const double first = solutionOf(*pdef).cost(opt).value();
-        // A threshold no path reaches: every slice runs to its end.
-        opt->setCostThreshold(ob::Cost(std::numeric_limits<double>::epsilon()));
-        double previous = first;
-        for (int slice = 0; slice < 6; ++slice)
-        {
-            pdef->clearSolutionPaths();
-            const ob::PlannerStatus status = planner->solve(0.1);
-            ASSERT_EQ(status, ob::PlannerStatus::EXACT_SOLUTION) << GetParam() << ", slice " << slice;
-            const double cost = solutionOf(*pdef).cost(opt).value();
-            EXPECT_LE(cost, previous) << GetParam() << ", slice " << slice << ": the cost went up";
-            EXPECT_FALSE(pdef->hasOptimizedSolution());
-            EXPECT_FALSE(pdef->hasApproximateSolution());
-            previous = cost;
-        }
-        EXPECT_LE(previous, first);
-        // The threshold met by the first solution: the next solve() reports an optimized solution.
-        pdef->clearSolutionPaths();
-        opt->setCostThreshold(ob::Cost(first));
-        ASSERT_TRUE(planner->solve(0.1));
-        const double last = solutionOf(*pdef).cost(opt).value();
-        EXPECT_TRUE(pdef->hasOptimizedSolution() || std::abs(last - first) <= 1e-9 * first) << GetParam();
-        EXPECT_GE(last, straight) << GetParam() << ": shorter than the straight line";
-        EXPECT_TRUE(denseFree(solutionOf(*pdef), 1e-3, outsideDiscs))
-            << GetParam() << ": the returned path enters a disc";
+        ob::StateSpacePtr space =
+            dubins ? std::make_shared<ob::DubinsStateSpace>(1.0) : std::make_shared<ob::SE2StateSpace>();
+        ob::RealVectorBounds bounds(2);
+        bounds.setLow(0.0);
+        bounds.setHigh(20.0);
+        space->as<ob::SE2StateSpace>()->setBounds(bounds);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker(
+            [](const ob::State *s)
+            {
+                const auto p = position(s, false);
+                return outsideDiscs(p[0], p[1]);
+            });
+        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+        si->setStateValidityCheckingResolution(0.002);
+        si->setup();
+        SCOPED_TRACE(dubins ? "Dubins" : "SE(2)");
+        anytimeProtocol(GetParam(), si, false);
     }
 }
 

@@ -205,7 +205,17 @@ namespace mhplan
         for (std::size_t i = 0; i < m; ++i)
         {
             if ((i & 15u) == 0 && stop())
+            {
+                // Interrupted: the roadmap is left as it was (its samples; the next call rebuilds its
+                // edges). Keeping the new samples made every interrupted call add more, so that under short
+                // budgets (OMPL's planner tests solve for 1 ms, 10 ms, 0.1 s) the roadmap outgrew what a
+                // call could finish and the planner stopped checking anything (tests/test_ompl_protocols).
+                rmPoints_.swap(points);
+                rmEdges_.clear();
+                rmOut_.clear();
+                rmPenalty_.clear();
                 return false;
+            }
             bounds.pivotBounds(i, lbOut, lbIn);
             // Each direction scans the candidates in the order of their bound (pivots, the basic car bound)
             // and stops at the first one that cannot beat its k-th distance: no later candidate can. The
