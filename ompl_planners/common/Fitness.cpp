@@ -174,6 +174,10 @@ namespace mhplan
     {
         if (model_)
             return model_->clearance(Vec2(p[0], p[1]));
+        // A user's checker is never asked about a state outside the space's bounds (OMPL's planners keep
+        // their states inside; a checker indexing a map would read outside it): no clearance there.
+        if (!inBounds(p))
+            return 0.0;
         toState(s1_, p);
         return si_->getStateValidityChecker()->clearance(s1_);
     }
@@ -263,7 +267,9 @@ namespace mhplan
         case PenaltyMode::ValidityOnly:
             for (std::size_t i = 0; i < samples.size(); ++i)
             {
-                if (!checkerValid(samples[i])) // the bounds are outOfBounds()'s
+                // Outside the bounds a state is invalid without asking the checker (a user's checker may read
+                // a map there); mhplan's own checkers say the same of a point outside their world's box.
+                if (!inBounds(samples[i]) || !checkerValid(samples[i]))
                     sum += 1.0;
                 sum += outOfBounds(samples[i]);
             }

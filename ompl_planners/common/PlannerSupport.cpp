@@ -65,8 +65,10 @@ namespace mhplan
             // solution's difference.
             std::vector<ob::State *> &states = path->getStates();
             const ob::GoalPtr &goal = pdef->getGoal();
-            std::size_t valid = si->isValid(states[0]) ? 1 : 0;
-            while (valid > 0 && valid < states.size() && si->isValid(states[valid]) &&
+            // The bounds before the checker: a user's checker is never asked about a state outside them.
+            const auto valid1 = [&](const ob::State *s) { return si->satisfiesBounds(s) && si->isValid(s); };
+            std::size_t valid = valid1(states[0]) ? 1 : 0;
+            while (valid > 0 && valid < states.size() && valid1(states[valid]) &&
                    si->checkMotion(states[valid - 1], states[valid]))
                 ++valid;
             std::size_t best = 0;

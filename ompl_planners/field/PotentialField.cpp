@@ -194,7 +194,8 @@ namespace mhplan
     {
         setStatePosition(state_, p);
         double d = 0.0;
-        if (!si_->getStateValidityChecker()->isValid(state_, d) || !si_->satisfiesBounds(state_))
+        // The bounds first: a user's checker is never asked about a state outside them.
+        if (!si_->satisfiesBounds(state_) || !si_->getStateValidityChecker()->isValid(state_, d))
             return std::numeric_limits<double>::infinity();
         return attraction(p) + repulsionTerm(d);
     }
