@@ -267,9 +267,9 @@ namespace mhplan
         case PenaltyMode::ValidityOnly:
             for (std::size_t i = 0; i < samples.size(); ++i)
             {
-                // Outside the bounds a state is invalid without asking the checker (a user's checker may read
-                // a map there); mhplan's own checkers say the same of a point outside their world's box.
-                if (!inBounds(samples[i]) || !checkerValid(samples[i]))
+                // Outside the bounds the penalty is outOfBounds()'s depth alone, and the checker is not asked
+                // (a user's checker may read a map there).
+                if (inBounds(samples[i]) && !checkerValid(samples[i]))
                     sum += 1.0;
                 sum += outOfBounds(samples[i]);
             }
