@@ -95,6 +95,29 @@ namespace
         return map.at(static_cast<std::size_t>(int(y))).at(static_cast<std::size_t>(int(x))) == '.';
     }
 
+    /** \brief The user's set-up of the map: bounds [0, w) x [0, h) (just under), resolution 0.016, the
+        array checker. */
+    ob::SpaceInformationPtr gridMapSpace()
+    {
+        const std::vector<std::string> &map = gridMap();
+        auto space = std::make_shared<CellSpace>();
+        ob::RealVectorBounds bounds(2);
+        bounds.setLow(0.0);
+        bounds.high[0] = double(map.front().size()) - 1e-9;
+        bounds.high[1] = double(map.size()) - 1e-9;
+        space->setBounds(bounds);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityCheckingResolution(0.016);
+        si->setStateValidityChecker(
+            [](const ob::State *s)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                return cellFree(v[0], v[1]);
+            });
+        si->setup();
+        return si;
+    }
+
     struct Disc
     {
         double x, y, r;
@@ -183,23 +206,7 @@ class OmplProtocols : public ::testing::TestWithParam<std::string>
 
 TEST_P(OmplProtocols, GridMapWithACellDistance)
 {
-    const std::vector<std::string> &map = gridMap();
-    const double w = double(map.front().size()), h = double(map.size());
-    auto space = std::make_shared<CellSpace>();
-    ob::RealVectorBounds bounds(2);
-    bounds.setLow(0.0);
-    bounds.high[0] = w - 1e-9;
-    bounds.high[1] = h - 1e-9;
-    space->setBounds(bounds);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityCheckingResolution(0.016);
-    si->setStateValidityChecker(
-        [](const ob::State *s)
-        {
-            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-            return cellFree(v[0], v[1]);
-        });
-    si->setup();
+    const ob::SpaceInformationPtr si = gridMapSpace();
     auto pdef = std::make_shared<ob::ProblemDefinition>(si);
     auto opt = std::make_shared<ob::PathLengthOptimizationObjective>(si);
     opt->setCostThreshold(opt->infiniteCost()); // stop at the first solution
@@ -385,25 +392,10 @@ TEST(OmplProtocolsEveryPlanner, NoStateOutsideTheBoundsReachesTheUsersChecker)
     // spline-decoded population planners (SMA, LRSMA, LRSMA-OPS, PSO, GWO, WOA) asked the checker about
     // curve samples outside the bounds.
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    const std::vector<std::string> &map = gridMap();
     for (const std::string &name :
          test::mhplanPlanners([](const PlannerEntry &) { return true; }, "registered"))
     {
-        auto space = std::make_shared<CellSpace>();
-        ob::RealVectorBounds bounds(2);
-        bounds.setLow(0.0);
-        bounds.high[0] = double(map.front().size()) - 1e-9;
-        bounds.high[1] = double(map.size()) - 1e-9;
-        space->setBounds(bounds);
-        auto si = std::make_shared<ob::SpaceInformation>(space);
-        si->setStateValidityCheckingResolution(0.016);
-        si->setStateValidityChecker(
-            [](const ob::State *s)
-            {
-                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
-                return cellFree(v[0], v[1]);
-            });
-        si->setup();
+        const ob::SpaceInformationPtr si = gridMapSpace();
         auto pdef = std::make_shared<ob::ProblemDefinition>(si);
         setQuery(si, *pdef, 1.0, 1.0, 22.0, 14.0);
         ob::PlannerPtr planner = allocate(name, si);
