@@ -270,14 +270,22 @@ namespace
         EXPECT_GT(denseContacts, motions / 10);
         EXPECT_GE(refused, denseContacts);
     }
+
+    /** \brief The bar robot in the 2D bug trap (environments/omplapp), volume [-7, 7]^2, start and goal
+     * unset. */
+    MeshProblemSpec bugTrapSpec()
+    {
+        MeshProblemSpec spec;
+        spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
+                                                      readMesh(kDir + "bar_robot.dae"), true);
+        spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
+        return spec;
+    }
 } // namespace
 
 TEST(MeshCertifiedValidator, SE2BugTrapAgainstDenseChecks)
 {
-    MeshProblemSpec spec;
-    spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
-                                                  readMesh(kDir + "bar_robot.dae"), true);
-    spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
+    MeshProblemSpec spec = bugTrapSpec();
     spec.goal.position = {0, 6, 0};
     certifiedAgainstDense(makeMeshSetup(spec), *spec.model, 4.0);
 }
@@ -328,10 +336,7 @@ TEST(MeshCertifiedValidator, ThreeDWorldsAgainstDenseChecks)
 
 TEST(MeshSetup, RefusesInvalidStartAndUnknownSettings)
 {
-    MeshProblemSpec spec;
-    spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
-                                                  readMesh(kDir + "bar_robot.dae"), true);
-    spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
+    MeshProblemSpec spec = bugTrapSpec();
     spec.start.position = {-3.5, 0, 0}; // inside the left wall
     spec.goal.position = {0, 6, 0};
     std::string e = errorOf([&] { makeMeshSetup(spec); });
@@ -358,10 +363,7 @@ TEST(MeshSetup, AHeadingOfPiIsTheHeadingOfMinusPi)
     // OMPL.app's problem files write a reversed heading as theta = 3.141592653589793; OMPL's SO(2) holds
     // [-pi, pi), so the pose is stored at -pi (the same heading) instead of being refused as outside the
     // volume.
-    MeshProblemSpec spec;
-    spec.model = std::make_shared<MeshRigidModel>(readMesh(kDir + "bugtrap_env.obj"),
-                                                  readMesh(kDir + "bar_robot.dae"), true);
-    spec.volume = Eigen::AlignedBox3d(Eigen::Vector3d(-7, -7, 0), Eigen::Vector3d(7, 7, 0));
+    MeshProblemSpec spec = bugTrapSpec();
     spec.start.position = {0, 0, 0};
     spec.goal.position = {0, 6, 0};
     spec.goal.orientation =
