@@ -21,6 +21,7 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
+#include <ompl/base/goals/GoalRegion.h>
 #include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/DubinsStateSpace.h>
@@ -412,6 +413,44 @@ TEST(OmplProtocolsEveryPlanner, NoStateOutsideTheBoundsReachesTheUsersChecker)
         catch (const std::exception &e)
         {
             ADD_FAILURE() << name << ": " << e.what();
+        }
+    }
+}
+
+TEST(OmplProtocolsEveryPlanner, AGoalThatCannotBeSampledIsAnInvalidGoal)
+{
+    // A user's goal region that only tests states (OMPL's GoalRegion, not sampleable): every planner needs a
+    // goal state, and answers INVALID_GOAL (not INVALID_START), or refuses the problem with ompl::Exception.
+    class NearCorner : public ob::GoalRegion
+    {
+      public:
+        explicit NearCorner(const ob::SpaceInformationPtr &si) : ob::GoalRegion(si) { setThreshold(0.5); }
+        double distanceGoal(const ob::State *s) const override
+        {
+            const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+            return std::hypot(v[0] - 19.0, v[1] - 19.0);
+        }
+    };
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    for (const std::string &name :
+         test::mhplanPlanners([](const PlannerEntry &) { return true; }, "registered"))
+    {
+        const ob::SpaceInformationPtr si =
+            test::planarAppProblem(outsideDiscs, 0.002, {1.0, 1.0}, {19.0, 19.0})->getSpaceInformation();
+        auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+        setQuery(si, *pdef, 1.0, 1.0, 19.0, 19.0);
+        pdef->clearGoal();
+        pdef->setGoal(std::make_shared<NearCorner>(si));
+        ob::PlannerPtr planner = allocate(name, si);
+        planner->setProblemDefinition(pdef);
+        try
+        {
+            planner->setup();
+            EXPECT_EQ(planner->solve(0.1), ob::PlannerStatus::INVALID_GOAL) << name;
+        }
+        catch (const ompl::Exception &)
+        {
+            // refused: the planner's documented answer to a set-up it cannot use
         }
     }
 }

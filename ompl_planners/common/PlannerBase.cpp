@@ -113,6 +113,7 @@ namespace mhplan
         if (start == nullptr)
         {
             OMPL_ERROR("%s: no valid start state", getName().c_str());
+            inputFailure_ = ob::PlannerStatus::INVALID_START;
             if (status != nullptr)
                 *status = ob::PlannerStatus::INVALID_START;
             return false;
@@ -121,6 +122,7 @@ namespace mhplan
         if (goal == nullptr)
         {
             OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
+            inputFailure_ = ob::PlannerStatus::INVALID_GOAL;
             if (status != nullptr)
                 *status = ob::PlannerStatus::INVALID_GOAL;
             return false;

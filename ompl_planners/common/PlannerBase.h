@@ -92,6 +92,9 @@ namespace mhplan
             planner and \e status (when given) INVALID_START or INVALID_GOAL, when there is none. */
         bool startAndGoal(const ompl::base::State *&start, const ompl::base::State *&goal,
                           ompl::base::PlannerStatus *status = nullptr);
+        /** \brief Why the last startAndGoal() failed: INVALID_START, or INVALID_GOAL (no goal state to be
+           had, e.g. a GoalRegion that only tests states). */
+        ompl::base::PlannerStatus::StatusType inputFailure() const { return inputFailure_; }
 
         /** \brief Writes point i of a path into a state. */
         using PathFill = std::function<void(ompl::base::State *, std::size_t)>;
@@ -121,6 +124,7 @@ namespace mhplan
         ompl::base::State *scratch_[2]{nullptr, nullptr};
         /** \brief States handed to PlannerData (it keeps the pointers): owned here until clear(). */
         mutable std::vector<ompl::base::State *> plannerDataStates_;
+        ompl::base::PlannerStatus::StatusType inputFailure_{ompl::base::PlannerStatus::INVALID_START};
     };
 } // namespace mhplan
 

@@ -252,7 +252,7 @@ namespace mhplan
     {
         checkValidity();
         if (!problemReady_ && !prepareProblem())
-            return ob::PlannerStatus::INVALID_START;
+            return inputFailure(); // INVALID_START or INVALID_GOAL
 
         ptc_ = &ptc;
         if (!initialised_ && !ptc())

@@ -571,7 +571,7 @@ namespace mhplan
     {
         checkValidity();
         if (!problemReady_ && !prepareProblem())
-            return ob::PlannerStatus::INVALID_START;
+            return inputFailure(); // INVALID_START or INVALID_GOAL
         ptc_ = &ptc;
         unsigned int done = 0;
         const ob::OptimizationObjectivePtr &opt = pdef_->getOptimizationObjective();
