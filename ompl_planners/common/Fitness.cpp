@@ -269,9 +269,8 @@ namespace mhplan
             {
                 // Outside the bounds the penalty is outOfBounds()'s depth alone, and the checker is not asked
                 // (a user's checker may read a map there).
-                if (inBounds(samples[i]) && !checkerValid(samples[i]))
-                    sum += 1.0;
-                sum += outOfBounds(samples[i]);
+                const double out = outOfBounds(samples[i]);
+                sum += out == 0.0 && !checkerValid(samples[i]) ? 1.0 : out;
             }
             break;
         }

@@ -119,9 +119,9 @@ namespace mhplan
         // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path). Anytime: a pass
         // that makes the path cheaper than the best is reported at once (docs/spaces.md: with a mesh checker
         // on OMPL.app's problems one coarse search of a long first path takes many seconds).
-        const MemeticStateToolkit::PassReport report = [&](const StatePath &q)
+        const MemeticStateToolkit::PassReport report = [&](const StatePath &q, double cost)
         {
-            if (improvesOn(tk.cost(q)))
+            if (improvesOn(cost))
                 evaluate(q);
         };
         tk.tighten(p, coarseTurn_, 1e-3, 10, stop_, 2000, false, report);

@@ -49,8 +49,6 @@ namespace mhplan
             return ConnectResult::Found;
         }
         Connection c(si_);
-        c.from = from;
-        c.to = to;
         addNode(c, 0, from, kNoParent);
         addNode(c, 1, to, kNoParent);
         return grow(c, path, range, maxNodes, sample, stop, closest, closestDistance);
@@ -125,7 +123,7 @@ namespace mhplan
             }
             return best;
         };
-        const StatePoint &to = c.to;
+        const StatePoint to = c.trees[1][0].x; // the goal tree's root
         // 0: blocked, 1: advanced, 2: reached the target. From the nearest tree state, or from \e from (a
         // state just added: a connection goes on from where it got).
         auto extend = [&](int t, const StatePoint &target, std::size_t &added,
@@ -167,9 +165,8 @@ namespace mhplan
         const ob::StateSpacePtr &space = si_->getStateSpace();
         const bool bidirectional = space->hasSymmetricDistance() && space->hasSymmetricInterpolate();
         unsigned long attempts = 0;
-        const std::size_t startSize = c.size();
         StatePoint r;
-        while (c.size() < maxNodes && attempts < 20ul * (maxNodes - startSize + 2))
+        while (c.size() < maxNodes && attempts < 20ul * maxNodes)
         {
             ++attempts;
             if (stop())

@@ -154,10 +154,10 @@ namespace mhplan
     {
         dedupe(path);
         shortcut(path, stop);
-        if (afterPass && !stop())
-            afterPass(path);
         std::vector<char> dirty(path.size(), 1), held;
         double len = cost(path);
+        if (afterPass && !stop())
+            afterPass(path, len);
         for (unsigned int pass = 0; pass < maxPasses; ++pass)
         {
             if (stop())
@@ -165,9 +165,9 @@ namespace mhplan
             // Only waypoints the previous pass could not move are subdivided around.
             const bool split = subdivide(path, dirty, held, maxTurn, maxPoints);
             const bool changed = pullPass(path, dirty, held, stop, precise);
-            if (afterPass && changed && !stop())
-                afterPass(path);
             const double now = cost(path);
+            if (afterPass && changed && !stop())
+                afterPass(path, now);
             if (!changed && !split)
                 break;
             if (len - now < relTol * len && pass > 0)

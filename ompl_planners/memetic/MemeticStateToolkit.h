@@ -129,9 +129,9 @@ namespace mhplan
         double extent() const;
 
         void shortcut(StatePath &path, const std::function<bool()> &stop);
-        /** \brief Called with the path after the shortcut and after every pass of tighten() (valid, no
-            costlier than before). */
-        using PassReport = std::function<void(const StatePath &)>;
+        /** \brief Called with the path after the shortcut and after every pass of tighten() that changed it
+            (valid, no costlier than before), and its cost (tighten() computes it anyway). */
+        using PassReport = std::function<void(const StatePath &, double)>;
         /** \brief Local search (class doc); false when \e stop() interrupted it (the path stays valid and no
             costlier). \e afterPass, when given, sees the path after the shortcut and after every pass. */
         bool tighten(StatePath &path, double maxTurn, double relTol, unsigned int maxPasses,
@@ -219,15 +219,14 @@ namespace mhplan
             Connection &operator=(const Connection &) = delete;
 
             ompl::base::SpaceInformationPtr si;
-            StatePoint from, to;
             std::vector<Node> trees[2];
             int next{0};
             ompl::base::State *query;
 
             std::size_t size() const { return trees[0].size() + trees[1].size(); }
         };
-        /** \brief Grow \e c until its trees join (Found, \e path from c.from to c.to), they hold \e maxNodes
-            states, or stop() holds. */
+        /** \brief Grow \e c until its trees join (Found, \e path from tree 0's root to tree 1's), they hold
+            \e maxNodes states, or stop() holds. */
         ConnectResult grow(Connection &c, StatePath &path, double range, std::size_t maxNodes,
                            const Sampler &sample, const std::function<bool()> &stop, StatePath *closest,
                            double *closestDistance);
