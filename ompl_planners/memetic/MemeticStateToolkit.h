@@ -201,8 +201,7 @@ namespace mhplan
 
         /** \brief Two trees of a connection, one from each end (tree 0 from \e from, motions parent -> child;
             tree 1 from \e to, child -> parent), the tree that extends next. Each tree state keeps its OMPL
-            state: the nearest-state scans compute the space's distance on them directly (converting the
-            coordinates of both states for every distance was about half of a connection's time on SE(3)). */
+            state: the nearest-state scans compute the space's distance on them directly (docs/spaces.md). */
         struct Connection
         {
             /** \brief A tree state: its coordinates, its parent (none for the root) and the state itself,
