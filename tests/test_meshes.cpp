@@ -283,6 +283,34 @@ namespace
     }
 } // namespace
 
+TEST(MeshDenseCheck, AMotionEndingAtAHeadingOfMinusPiStaysInTheVolume)
+{
+    // OMPL's SO(2) holds [-pi, pi); its interpolation toward a heading of -pi (OMPL.app's reversed goals)
+    // can end at +pi, the same heading. The dense check tests positions against the volume: a free motion
+    // to such a goal is free (before, every path ending there failed it at its own goal).
+    MeshProblemSpec spec = bugTrapSpec();
+    spec.goal.position = {0, 6, 0};
+    const auto ss = makeMeshSetup(spec);
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    ob::ScopedState<ob::SE2StateSpace> a(si), b(si), end(si);
+    a->setXY(-5.0, 6.0);
+    a->setYaw(1.6505869973918708);
+    b->setXY(-3.0, 6.0);
+    b->setYaw(-M_PI);
+    ASSERT_TRUE(si->isValid(a.get()) && si->isValid(b.get()));
+    si->getStateSpace()->interpolate(a.get(), b.get(), 1.0, end.get());
+    ASSERT_FALSE(si->satisfiesBounds(end.get())) << "OMPL's interpolation ends at " << end->getYaw();
+    ompl::geometric::PathGeometric path(si, a.get(), b.get());
+    long contact = 0;
+    EXPECT_GT(denseMeshPathCheck(*spec.model, *si, path, 0.01, contact), 100u);
+    EXPECT_EQ(contact, -1);
+    // A position outside the volume is still refused.
+    b->setXY(-3.0, 7.5);
+    ompl::geometric::PathGeometric out(si, a.get(), b.get());
+    denseMeshPathCheck(*spec.model, *si, out, 0.01, contact);
+    EXPECT_EQ(contact, 0);
+}
+
 TEST(MeshCertifiedValidator, SE2BugTrapAgainstDenseChecks)
 {
     MeshProblemSpec spec = bugTrapSpec();

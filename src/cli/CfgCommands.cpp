@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -227,6 +228,8 @@ namespace mhplan::cli
         if (args.has("path"))
         {
             std::ofstream out(args.get("path"));
+            // Every digit: the saved path is the path checked above, not a rounded neighbour of it.
+            out << std::setprecision(std::numeric_limits<double>::max_digits10);
             path.printAsMatrix(out);
             if (!out)
                 throw InputError("mhplan plan: cannot write " + args.get("path"));

@@ -538,6 +538,15 @@ namespace mhplan
         firstContact = -1;
         std::size_t checked = 0;
         ob::State *pose = si.allocState();
+        // The volume holds positions: OMPL's SO(2) holds [-pi, pi), but its interpolation toward a heading
+        // of -pi can end at +pi, the same heading; the test sees the heading folded into the range.
+        const auto *se2 = dynamic_cast<const ob::SE2StateSpace *>(si.getStateSpace().get());
+        const auto inVolume = [&](ob::State *s)
+        {
+            if (se2 != nullptr)
+                se2->getSubspace(1)->enforceBounds(s->as<ob::SE2StateSpace::StateType>()->components[1]);
+            return si.satisfiesBounds(s);
+        };
         const std::size_t n = path.getStateCount();
         for (std::size_t i = 0; i < n && firstContact < 0; ++i)
         {
@@ -550,7 +559,7 @@ namespace mhplan
             {
                 si.getStateSpace()->interpolate(a, b, pieces == 0 ? 0.0 : double(k) / double(pieces), pose);
                 ++checked;
-                if (!si.satisfiesBounds(pose) || model.collides(model.placement(pose)))
+                if (!inVolume(pose) || model.collides(model.placement(pose)))
                 {
                     firstContact = static_cast<long>(i);
                     break;
