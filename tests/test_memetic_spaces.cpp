@@ -23,11 +23,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -271,6 +273,88 @@ TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)
                           << improvements << " improvements\n";
         }
         EXPECT_EQ(paths[0], paths[1]) << name;
+    }
+}
+
+namespace
+{
+    /** \brief The slot's stick as a user's checker that computes clearance (OMPL.app's FCL checker does):
+        exact geometry (no margin), the clearance the distance from the stick to the walls and the box's
+        sides; counts its clearance() calls. */
+    class CountingStickChecker : public ob::StateValidityChecker
+    {
+      public:
+        explicit CountingStickChecker(const ob::SpaceInformationPtr &si) : ob::StateValidityChecker(si)
+        {
+            specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::EXACT;
+        }
+        bool isValid(const ob::State *s) const override
+        {
+            return test::stickValid(s, test::slotWalls(), test::kStickHalf, 0.0);
+        }
+        double clearance(const ob::State *s) const override
+        {
+            ++clearanceCalls;
+            if (!isValid(s))
+                return 0.0;
+            const auto *q = s->as<ob::SE2StateSpace::StateType>();
+            const double c = std::cos(q->getYaw()), n = std::sin(q->getYaw());
+            const double a[2] = {q->getX() - test::kStickHalf * c, q->getY() - test::kStickHalf * n};
+            const double b[2] = {q->getX() + test::kStickHalf * c, q->getY() + test::kStickHalf * n};
+            // Two disjoint convex shapes are nearest at a corner of one: the stick's ends against each
+            // wall, each wall's corners against the stick; the ends against the box's sides.
+            const auto toSegment = [&](double x, double y)
+            {
+                const double dx = b[0] - a[0], dy = b[1] - a[1];
+                const double t =
+                    std::clamp(((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+                return std::hypot(x - a[0] - t * dx, y - a[1] - t * dy);
+            };
+            double d = std::numeric_limits<double>::infinity();
+            for (const double *e : {a, b})
+                d = std::min({d, e[0], e[1], 10.0 - e[0], 10.0 - e[1]});
+            for (const test::Rect &r : test::slotWalls())
+            {
+                for (const double *e : {a, b})
+                    d = std::min(d, std::hypot(std::max({r.xmin - e[0], 0.0, e[0] - r.xmax}),
+                                               std::max({r.ymin - e[1], 0.0, e[1] - r.ymax})));
+                for (const double x : {r.xmin, r.xmax})
+                    for (const double y : {r.ymin, r.ymax})
+                        d = std::min(d, toSegment(x, y));
+            }
+            return d;
+        }
+        mutable unsigned long clearanceCalls{0};
+    };
+} // namespace
+
+TEST(MemeticStateMode, AUsersClearanceIsNotAskedAndPathsPassTheDenseCheck)
+{
+    // The slot with exact geometry, the user's checker computing clearance, OMPL's discrete validator at 1 %
+    // of the extent (a sample every 0.17 in the SE(2) metric, which turns the stick's tips by up to 0.14 m).
+    // The search asks the motion validator alone and reported paths pass the fine check (isValid every
+    // validator_clearance samples, docs/spaces.md): no clearance query, however expensive the user's is
+    // (before, every motion verdict asked it at every sample), and no path cuts a wall between the samples.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        og::SimpleSetupPtr ss = test::slotProblem();
+        const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+        const auto checker = std::make_shared<CountingStickChecker>(si);
+        si->setStateValidityChecker(checker);
+        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+        si->setStateValidityCheckingResolution(0.01);
+        ob::PlannerPtr p = builtinPlanners().create(name, si, {{"seed", "5"}, {"max_iterations", "6"}});
+        ss->setPlanner(p);
+        ss->setup();
+        ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION) << name;
+        EXPECT_EQ(checker->clearanceCalls, 0u) << name;
+        EXPECT_TRUE(
+            test::denseValid(ss->getSolutionPath(), [](const ob::State *q)
+                             { return test::stickValid(q, test::slotWalls(), test::kStickHalf, 0.0); }))
+            << name;
+        std::cout << "[state mode] " << name << " slot, user's clearance checker: cost "
+                  << ss->getSolutionPath().length() << "\n";
     }
 }
 

@@ -57,7 +57,7 @@ namespace mhplan
         stateToolkit_->setBisections(bisections_);
         const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
         stateToolkit_->setMargin(margin);
-        stateToolkit_->setClearance(validatorClearance_ * spacing, spacing);
+        stateToolkit_->setFineSpacing(validatorClearance_ * spacing);
         stateToolkit_->resetCounts();
         stateToolkit_->fromState(start, startState_);
         stateToolkit_->fromState(goal, goalState_);
@@ -87,8 +87,8 @@ namespace mhplan
         StatePath strict;
         if (stateToolkit_->strictNeeded())
         {
-            // A sampling validator and no clearance: a path is reported only when it passes the fine check
-            // (mended where it does not); one that cannot be mended counts as invalid (docs/spaces.md).
+            // A sampling validator: a path is reported only when it passes the fine check (mended where it
+            // does not); one that cannot be mended counts as invalid (docs/spaces.md).
             strict = path;
             if (!stateToolkit_->makeStrict(strict, stop_))
                 return stopRequested() ? c : std::numeric_limits<double>::infinity();

@@ -86,20 +86,7 @@ namespace mhplan
         ++motionChecks_;
         toState(a, a_);
         toState(b, b_);
-        bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
-        if (ok && clearance_ > 0.0)
-        {
-            // The clearance kept between the validator's samples (docs/spaces.md): a tight motion that
-            // touches an obstacle between two samples has a sample nearer than the clearance.
-            const double d = si_->distance(a_, b_);
-            const auto n = static_cast<unsigned long>(std::ceil(d / clearanceSpacing_));
-            const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
-            for (unsigned long k = 1; k < n && ok; ++k)
-            {
-                si_->getStateSpace()->interpolate(a_, b_, double(k) / double(n), c_);
-                ok = checker->clearance(c_) >= clearance_;
-            }
-        }
+        const bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
         if (cache_.size() >= kCacheLimit)
             cache_.clear();
         cache_.emplace(key_, ok);
@@ -114,15 +101,9 @@ namespace mhplan
         return true;
     }
 
-    void MemeticStateToolkit::setClearance(double c, double spacing)
+    void MemeticStateToolkit::setFineSpacing(double spacing)
     {
-        const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
-        const bool computes =
-            checker && checker->getSpecs().clearanceComputationType != ob::StateValidityCheckerSpecs::NONE;
-        clearance_ = computes && spacing > 0.0 ? c : 0.0;
-        clearanceSpacing_ = spacing;
-        // No clearance to keep: reported paths are followed at the spacing c instead (makeStrict).
-        strictSpacing_ = !computes && spacing > 0.0 ? c : 0.0;
+        strictSpacing_ = spacing > 0.0 ? spacing : 0.0;
         strictCache_.clear();
     }
 

@@ -67,15 +67,14 @@ namespace mhplan
         /** \brief The validator margin (space distance, 0: none): a pull move the motion validator blocks
             stops this far short of the blocked position (docs/spaces.md). */
         void setMargin(double m) { margin_ = m; }
-        /** \brief With a sampling motion validator whose validity checker computes clearance: a motion is
-            valid only when, besides the validator's verdict, the states every \e spacing along it (its ends
-            excepted) keep clearance \e c (0: off; docs/spaces.md). */
-        void setClearance(double c, double spacing);
-        /** \brief Whether reported paths must pass strictValid() (a sampling validator whose checker computes
-            no clearance). */
+        /** \brief With a sampling motion validator: reported paths must pass the fine check, their motions
+            followed at \e spacing (space distance) with the validity checker (0: off; docs/spaces.md). The
+            search itself asks the motion validator alone. */
+        void setFineSpacing(double spacing);
+        /** \brief Whether reported paths must pass the fine check (a sampling validator). */
         bool strictNeeded() const { return strictSpacing_ > 0.0; }
         /** \brief Make \e path pass the fine check (docs/spaces.md): each motion is followed at the fine
-            spacing (the clearance the planner would keep, validator_clearance sample spacings) with the
+            spacing (validator_clearance x the validator's sample spacing) with the
             validity checker; a motion that fails there gets a valid state drawn near its first failing state
             (every coordinate within 1, 2, 4, 8 margins), kept when both new motions pass the validator and
             the fine check. False when a motion could not be mended (or when stopped). Verdicts cached. */
@@ -246,12 +245,10 @@ namespace mhplan
         ompl::base::OptimizationObjectivePtr opt_;
         unsigned int bisections_{10};
         double margin_{0.0};
-        double clearance_{0.0};
         double strictSpacing_{0.0};
         /** \brief The fine check of a -> b: -1 when every state passes, else the first failing fraction. */
         double strictFailure(const StatePoint &a, const StatePoint &b);
         std::unordered_map<std::vector<double>, double, KeyHash> strictCache_;
-        double clearanceSpacing_{0.0};
         ompl::base::State *a_{nullptr};
         ompl::base::State *b_{nullptr};
         ompl::base::State *c_{nullptr};
