@@ -46,9 +46,14 @@ namespace mhplan
         }
         if (lo < 1.0 && margin_ > 0.0)
         {
-            // Blocked: stay the margin (in the space's distance) short of the contact (docs/spaces.md).
+            // Blocked: stay the margin (in the space's distance) short of the contact (docs/spaces.md). The
+            // position stepped back to is checked too (the motions from a state between v and the
+            // bisection's may meet what neither of theirs meets: free space need not be convex); when they
+            // do, v stays.
             const double d = distance(v, target);
             lo = d > 0.0 ? lo - margin_ / d : 0.0;
+            if (lo > 0.0 && !valid(lo))
+                return false;
         }
         if (lo <= 0.0)
             return false;
