@@ -219,6 +219,15 @@ TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)
     EXPECT_LE(tk.cost(path), before);
 }
 
+TEST(MemeticStateMode, ConnectionBudgetsFollowLubysSequence)
+{
+    const std::vector<unsigned int> expected{1, 1, 2, 1, 1, 2, 4, 1, 1, 2, 1, 1, 2, 4, 8, 1};
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        EXPECT_EQ(lubyTerm(i + 1), expected[i]) << "term " << i + 1;
+    EXPECT_EQ(lubyTerm(1023), 512u);
+    EXPECT_EQ(lubyTerm(1024), 1u);
+}
+
 TEST(MemeticCarBounds, NeverAboveTheSpacesDistanceAndTighterThanThePositionsOnDubins)
 {
     // docs/spaces.md, "The roadmap's nearest states": the lower bounds that prune the nearest-state scans of

@@ -65,6 +65,7 @@ namespace mhplan
         noPath_ = false;
         fillCut_ = false;
         walks_ = 0;
+        connectFailures_ = 0;
         sinceImprovement_ = 0;
         generationInEpoch_ = 0;
         restarts_ = 0;

@@ -78,6 +78,11 @@ namespace mhplan
           the walked path that came closest to the goal is reported as an approximate solution.
         - Randomness only from the member ompl::RNG (seeded from OMPL's global seed, or from \c seed when
           it is not 0): the same seed gives the same run under an iteration budget. */
+    /** \brief Term \e i >= 1 of Luby's universal restart sequence 1, 1, 2, 1, 1, 2, 4, 1, 1, 2, 1, 1, 2, 4,
+       8,
+        ... (the state mode's connection budgets, docs/spaces.md). */
+    unsigned int lubyTerm(unsigned long i);
+
     class MemeticPlanner : public PlannerBase
     {
       public:
@@ -319,6 +324,9 @@ namespace mhplan
         bool noPath_{false};
         bool fillCut_{false};
         unsigned long walks_{0};
+        /** \brief State mode: connections that ran out of states (their budgets follow Luby's sequence,
+            lubyTerm). */
+        unsigned int connectFailures_{0};
         unsigned long sinceImprovement_{0};
         unsigned long generationInEpoch_{0};
         unsigned long restarts_{0};

@@ -28,6 +28,21 @@ namespace mhplan
         constexpr unsigned int kStateRoadmapMax = 2000;
     } // namespace
 
+    unsigned int lubyTerm(unsigned long i)
+    {
+        // Term i >= 1 of 1, 1, 2, 1, 1, 2, 4, 1, 1, 2, 1, 1, 2, 4, 8, ...: 2^(k-1) where i = 2^k - 1, else
+        // the term at i - 2^(k-1) + 1 for the k with 2^(k-1) <= i < 2^k - 1.
+        for (;;)
+        {
+            unsigned int k = 1;
+            while ((1ul << k) - 1 < i)
+                ++k;
+            if (i == (1ul << k) - 1)
+                return 1u << (k - 1);
+            i -= (1ul << (k - 1)) - 1;
+        }
+    }
+
     void MemeticPlanner::setupStateMode()
     {
         std::string why;
@@ -186,22 +201,29 @@ namespace mhplan
             for (int k = 0; k < 20 && !viaWalk; ++k)
                 viaWalk = tk.sampleUniform(via) && tk.pointValid(via);
         }
+        // The budgets of connections that run out of states follow Luby's universal restart sequence (1, 1,
+        // 2, 1, 1, 2, 4, ... times 5,000 states, at most 16 times): restarts suit a wall with a small hole,
+        // large trees a long narrow passage (docs/spaces.md), and the sequence stays within a logarithmic
+        // factor of the best fixed budget for either without knowing which it faces.
+        const unsigned int nodes = kConnectNodes * std::min(lubyTerm(connectFailures_ + 1), 16u);
         MemeticStateToolkit::ConnectResult r;
         if (viaWalk)
         {
             StatePath second;
-            r = tk.connect(out.states, startState_, via, range, kConnectNodes / 2, uniform, stop_);
+            r = tk.connect(out.states, startState_, via, range, nodes / 2, uniform, stop_);
             if (r == MemeticStateToolkit::ConnectResult::Found)
             {
-                r = tk.connect(second, via, goalState_, range, kConnectNodes / 2, uniform, stop_,
-                               &closestStates_, &closestDistance_);
+                r = tk.connect(second, via, goalState_, range, nodes / 2, uniform, stop_, &closestStates_,
+                               &closestDistance_);
                 if (r == MemeticStateToolkit::ConnectResult::Found)
                     out.states.insert(out.states.end(), second.begin() + 1, second.end());
             }
         }
         else
-            r = tk.connect(out.states, startState_, goalState_, range, kConnectNodes, uniform, stop_,
-                           &closestStates_, &closestDistance_);
+            r = tk.connect(out.states, startState_, goalState_, range, nodes, uniform, stop_, &closestStates_,
+                           &closestDistance_);
+        if (r == MemeticStateToolkit::ConnectResult::Budget)
+            ++connectFailures_;
         return r == MemeticStateToolkit::ConnectResult::Found;
     }
 

@@ -5,6 +5,8 @@
    converting coordinates. */
 #include "ompl_planners/memetic/MemeticStateToolkit.h"
 
+#include <ompl/datastructures/NearestNeighborsGNATNoThreadSafety.h>
+
 #include <algorithm>
 #include <limits>
 #include <memory>
@@ -16,6 +18,8 @@ namespace mhplan
     namespace
     {
         constexpr std::size_t kNoParent = std::numeric_limits<std::size_t>::max();
+        /** \brief The index that stands for the connection's query state in its GNAT. */
+        constexpr std::size_t kQuery = std::numeric_limits<std::size_t>::max() - 1;
     } // namespace
 
     MemeticStateToolkit::Connection::Connection(ob::SpaceInformationPtr space)
@@ -36,6 +40,8 @@ namespace mhplan
         ob::State *s = si_->allocState();
         toState(x, s);
         c.trees[t].push_back({x, parent, s});
+        if (c.nn[t])
+            c.nn[t]->add(c.trees[t].size() - 1);
         return c.trees[t].size() - 1;
     }
 
@@ -49,6 +55,21 @@ namespace mhplan
             return ConnectResult::Found;
         }
         Connection c(si_);
+        const ob::StateSpacePtr &space = si_->getStateSpace();
+        if (!car_.active() && space->hasSymmetricDistance() && space->hasSymmetricInterpolate())
+            for (int t = 0; t < 2; ++t)
+            {
+                // Exact nearest states in O(log n) per query on large trees (the budget doubles after every
+                // connection that runs out, docs/spaces.md); a linear scan would be quadratic in the tree.
+                c.nn[t] = std::make_unique<ompl::NearestNeighborsGNATNoThreadSafety<std::size_t>>();
+                const std::vector<Connection::Node> &tree = c.trees[t];
+                const ob::State *query = c.query;
+                c.nn[t]->setDistanceFunction(
+                    [this, &tree, query](const std::size_t &i, const std::size_t &j) {
+                        return si_->distance(i == kQuery ? query : tree[i].s,
+                                             j == kQuery ? query : tree[j].s);
+                    });
+            }
         addNode(c, 0, from, kNoParent);
         addNode(c, 1, to, kNoParent);
         return grow(c, path, range, maxNodes, sample, stop, closest, closestDistance);
@@ -62,8 +83,9 @@ namespace mhplan
 
         // The nearest state of tree t to c.query: tree 0 grows from the start (motions parent -> child),
         // tree 1 from the goal (child -> parent), so the distance runs from the tree state in tree 0 and to
-        // it in tree 1. An exact scan (the first of equal nearest states, as OMPL's linear structure returns;
-        // GNAT draws its pivots from a generator of its own, not reproducible from the planner's seed, and is
+        // it in tree 1. With a symmetric distance and no car bounds: OMPL's GNAT (exact; its pivots come from
+        // a generator of its own, which changes which of equal nearest states it returns, not the distance).
+        // Else an exact scan (the first of equal nearest states, as OMPL's linear structure returns; GNAT is
         // not exact under an asymmetric distance). On the car spaces CarBounds bound the path length from
         // below (docs/spaces.md): states whose bound exceeds the best distance so far are skipped, which
         // saves most of the Dubins or Reeds-Shepp distances of a scan.
@@ -73,6 +95,8 @@ namespace mhplan
             const std::vector<Connection::Node> &tree = c.trees[t];
             const auto dist = [&](std::size_t i)
             { return t == 0 ? si_->distance(tree[i].s, c.query) : si_->distance(c.query, tree[i].s); };
+            if (c.nn[t])
+                return c.nn[t]->nearest(kQuery);
             std::size_t best = 0;
             double bestD = dist(0);
             if (!car_.active())

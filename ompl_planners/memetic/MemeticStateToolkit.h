@@ -10,6 +10,7 @@
 #include "ompl_planners/memetic/CarBounds.h"
 
 #include <ompl/base/OptimizationObjective.h>
+#include <ompl/datastructures/NearestNeighbors.h>
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -218,6 +219,9 @@ namespace mhplan
 
             ompl::base::SpaceInformationPtr si;
             std::vector<Node> trees[2];
+            /** \brief On a space with a symmetric distance and no car bounds: OMPL's GNAT over each tree's
+                indices (exact nearest states; kQuery stands for \e query), else none (a linear scan). */
+            std::unique_ptr<ompl::NearestNeighbors<std::size_t>> nn[2];
             int next{0};
             ompl::base::State *query;
 
