@@ -219,6 +219,32 @@ TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)
     EXPECT_LE(tk.cost(path), before);
 }
 
+TEST(MemeticStateMode, AnApproximatePathPassesTheFineCheckToo)
+{
+    // The slot closed (no exact path), exact geometry, OMPL's discrete validator at 5 % of the extent (a
+    // sample every 0.86 in the SE(2) metric). The approximate path, the connections' tree path toward the
+    // goal, passed the validator only; it is reported as far as it passes the fine check as well, so it
+    // cuts no wall between the validator's samples (before, three or four of the planners' did).
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const std::vector<test::Rect> wall{{4.8, 5.2, -1.0, 11.0}};
+    const auto valid = [wall](const ob::State *s)
+    { return test::stickValid(s, wall, test::kStickHalf, 0.0); };
+    for (const std::string &name : test::ofFamily("memetic"))
+    {
+        og::SimpleSetupPtr ss = test::se2Problem(std::make_shared<ob::SE2StateSpace>(), valid,
+                                                 {2.0, 2.0, M_PI / 2}, {8.0, 8.0, M_PI / 2}, 0.05);
+        const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+        si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+        ob::PlannerPtr p = builtinPlanners().create(name, si, {{"seed", "2"}});
+        ss->setPlanner(p);
+        ss->setup();
+        ASSERT_EQ(p->solve(ob::timedPlannerTerminationCondition(0.5)),
+                  ob::PlannerStatus::APPROXIMATE_SOLUTION)
+            << name;
+        EXPECT_TRUE(test::denseValid(ss->getSolutionPath(), valid)) << name;
+    }
+}
+
 TEST(MemeticStateMode, ConnectionBudgetsFollowLubysSequence)
 {
     const std::vector<unsigned int> expected{1, 1, 2, 1, 1, 2, 4, 1, 1, 2, 1, 1, 2, 4, 8, 1};

@@ -273,8 +273,20 @@ namespace mhplan
     void MemeticPlanner::reportStateSolution(bool &exact, bool &approximate)
     {
         const StatePath *states = haveSolution_ ? &bestStates_ : nullptr;
+        StatePath cut;
         if (states == nullptr && !closestStates_.empty() && std::isfinite(closestDistance_))
+        {
             states = &closestStates_;
+            if (stateToolkit_->strictNeeded())
+            {
+                // The connections' tree path passed the validator only: it is reported as far as it passes
+                // the fine check too (docs/spaces.md, "Margin").
+                cut = closestStates_;
+                // (addSolutionPath then cuts it at its state nearest the goal.)
+                cut.resize(stateToolkit_->strictPrefix(cut));
+                states = &cut;
+            }
+        }
         if (states == nullptr)
             return;
         exact = haveSolution_;

@@ -132,6 +132,16 @@ namespace mhplan
         return failure;
     }
 
+    std::size_t MemeticStateToolkit::strictPrefix(const StatePath &path)
+    {
+        if (!strictNeeded())
+            return path.size();
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (strictFailure(path[i - 1], path[i]) >= 0.0)
+                return i;
+        return path.size();
+    }
+
     bool MemeticStateToolkit::makeStrict(StatePath &path, const std::function<bool()> &stop)
     {
         if (!strictNeeded())

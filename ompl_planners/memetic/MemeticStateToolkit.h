@@ -80,6 +80,9 @@ namespace mhplan
             (every coordinate within 1, 2, 4, 8 margins), kept when both new motions pass the validator and
             the fine check. False when a motion could not be mended (or when stopped). Verdicts cached. */
         bool makeStrict(StatePath &path, const std::function<bool()> &stop);
+        /** \brief The number of leading states of \e path whose motions pass the fine check (all of them
+            when none is needed). */
+        std::size_t strictPrefix(const StatePath &path);
 
         unsigned int dimension() const { return param_.dimension(); }
         const StateParametrisation &parametrisation() const { return param_; }
