@@ -287,9 +287,22 @@ int main(int argc, char **argv)
     unsigned int seeds = 3;
     std::string environments = MHPLAN_ENVIRONMENTS_DIR;
     std::vector<std::string> plannerList, problemList;
-    for (int i = 1; i + 1 < argc; i += 2)
+    const char *usage =
+        "usage: mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...] "
+        "[--problems r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w]\n";
+    for (int i = 1; i < argc; i += 2)
     {
         const std::string key = argv[i];
+        if (key == "--help" || key == "-h")
+        {
+            std::cout << usage;
+            return 0;
+        }
+        if (i + 1 >= argc)
+        {
+            std::cerr << "mhplan_space_table: option '" << key << "' needs a value\n" << usage;
+            return 1;
+        }
         if (key == "--time")
             timeLimit = std::atof(argv[i + 1]);
         else if (key == "--seeds")
