@@ -39,9 +39,11 @@ namespace mhplan
           by checkMotion() (toward the goal tree's root for the goal tree); after each extension the other
           tree is extended toward the new state until it reaches it (joined) or is blocked. On a space whose
           distance or interpolation is not symmetric (Dubins) only the start tree grows, and after each step
-          it is extended toward the goal until it reaches it or is blocked. Nearest neighbours by a linear
-       scan (OMPL's NearestNeighborsLinear: exact under an asymmetric distance, and reproducible). A fresh
-       random draw per call gives paths in different homotopy classes.
+          it is extended toward the goal until it reaches it or is blocked. Nearest neighbours by OMPL's GNAT
+          on a space with a symmetric distance and no car bounds, else by a linear scan (exact under an
+          asymmetric distance, pruned by the car bounds). A fresh random draw per call gives paths in
+          different homotopy classes; the caller chooses the budget (the planner: Luby's sequence,
+          docs/spaces.md).
         - tighten(): passes of greedy shortcut (the farthest later waypoint visible), pull moves (waypoint i
           moved toward the interpolation midpoint of its neighbours and toward each neighbour, the largest
           fraction found by bisection that keeps both adjacent motions valid and lowers the cost) and
