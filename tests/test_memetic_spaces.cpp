@@ -184,9 +184,7 @@ TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)
     // A waypoint v = (1, 1) between a = (0, 0) and b = (2, 0), pulled toward their midpoint (1, 0): a disc
     // below y = 0.08 at x = 1 stops it at about y = 0.08, and the margin (0.5) steps it back to about y =
     // 0.58, where the motion from a crosses a small disc at (0.5, 0.3) that the positions around it do not
-    // meet. The stepped-back position is checked (when its motions fail, v stays): the tightened path is
-    // valid. (Later pulls of the same pass happen to move v out of the trap here even without that check,
-    // so this guards the behaviour rather than that line.)
+    // meet. The stepped-back position is checked: when its motions fail, v stays.
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     auto space = std::make_shared<ob::RealVectorStateSpace>(2);
     space->setBounds(-1.0, 3.0);
@@ -210,13 +208,19 @@ TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)
     ompl::RNG rng(1);
     MemeticStateToolkit tk(si, *param, rng);
     tk.setMargin(0.5);
-    StatePath path{{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}};
-    ASSERT_TRUE(tk.pathValid(path));
-    ASSERT_FALSE(tk.motionValid({0.0, 0.0}, {1.0, 0.58})); // the trap the step back would fall into
-    const double before = tk.cost(path);
-    tk.tighten(path, 0.35, 1e-3, 1, [] { return false; });
-    EXPECT_TRUE(tk.pathValid(path));
-    EXPECT_LE(tk.cost(path), before);
+    const StatePoint a{0.0, 0.0}, b{2.0, 0.0};
+    StatePoint v{1.0, 1.0};
+    ASSERT_TRUE(tk.motionValid(a, v) && tk.motionValid(v, b));
+    ASSERT_FALSE(tk.motionValid(a, {1.0, 0.58})); // the trap the step back would fall into
+    const double before = tk.segmentCost(a, v) + tk.segmentCost(v, b);
+    const bool moved = tk.pullToward(a, v, b, {1.0, 0.0}, 6);
+    // Wherever v is now (or still), both of its motions are valid; a move lowered the cost.
+    EXPECT_TRUE(tk.motionValid(a, v)) << v[0] << " " << v[1];
+    EXPECT_TRUE(tk.motionValid(v, b)) << v[0] << " " << v[1];
+    if (moved)
+    {
+        EXPECT_LT(tk.segmentCost(a, v) + tk.segmentCost(v, b), before);
+    }
 }
 
 TEST(MemeticStateMode, AnApproximatePathPassesTheFineCheckToo)

@@ -107,15 +107,13 @@ namespace mhplan
         throw ompl::Exception(text);
     }
 
-    bool PlannerBase::startAndGoal(const ob::State *&start, const ob::State *&goal, ob::PlannerStatus *status)
+    bool PlannerBase::startAndGoal(const ob::State *&start, const ob::State *&goal)
     {
         start = pis_.nextStart();
         if (start == nullptr)
         {
             OMPL_ERROR("%s: no valid start state", getName().c_str());
             inputFailure_ = ob::PlannerStatus::INVALID_START;
-            if (status != nullptr)
-                *status = ob::PlannerStatus::INVALID_START;
             return false;
         }
         goal = pis_.nextGoal();
@@ -123,8 +121,6 @@ namespace mhplan
         {
             OMPL_ERROR("%s: no goal state could be sampled", getName().c_str());
             inputFailure_ = ob::PlannerStatus::INVALID_GOAL;
-            if (status != nullptr)
-                *status = ob::PlannerStatus::INVALID_GOAL;
             return false;
         }
         return true;

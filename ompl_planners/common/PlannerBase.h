@@ -89,9 +89,8 @@ namespace mhplan
         [[noreturn]] void refuseSetup(const std::string &message);
 
         /** \brief The first start state and one goal sample of the problem; false, with OMPL_ERROR naming the
-            planner and \e status (when given) INVALID_START or INVALID_GOAL, when there is none. */
-        bool startAndGoal(const ompl::base::State *&start, const ompl::base::State *&goal,
-                          ompl::base::PlannerStatus *status = nullptr);
+            planner, when there is none (inputFailure() then says which). */
+        bool startAndGoal(const ompl::base::State *&start, const ompl::base::State *&goal);
         /** \brief Why the last startAndGoal() failed: INVALID_START, or INVALID_GOAL (no goal state to be
            had, e.g. a GoalRegion that only tests states). */
         ompl::base::PlannerStatus::StatusType inputFailure() const { return inputFailure_; }

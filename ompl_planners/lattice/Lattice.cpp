@@ -300,8 +300,11 @@ namespace mhplan
                 return false;
             }
             const ob::State *start = nullptr, *goal = nullptr;
-            if (!startAndGoal(start, goal, &status))
+            if (!startAndGoal(start, goal))
+            {
+                status = inputFailure();
                 return false;
+            }
             startPos_ = statePosition(start);
             goalPos_ = statePosition(goal);
             try

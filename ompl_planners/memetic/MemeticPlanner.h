@@ -19,6 +19,10 @@
 
 namespace mhplan
 {
+    /** \brief Term \e i >= 1 of Luby's universal restart sequence (1, 1, 2, 1, 1, 2, 4, 1, ...): the state
+        mode's connection budgets (docs/spaces.md). */
+    unsigned int lubyTerm(unsigned long i);
+
     /** \brief Base class of the memetic improved variants GA-MEM, SMA-MEM, MGO-MEM and LRSMA-MEM (not in
         any paper: mhplan's scalable, anytime versions of the update rules).
 
@@ -78,11 +82,6 @@ namespace mhplan
           the walked path that came closest to the goal is reported as an approximate solution.
         - Randomness only from the member ompl::RNG (seeded from OMPL's global seed, or from \c seed when
           it is not 0): the same seed gives the same run under an iteration budget. */
-    /** \brief Term \e i >= 1 of Luby's universal restart sequence 1, 1, 2, 1, 1, 2, 4, 1, 1, 2, 1, 1, 2, 4,
-       8,
-        ... (the state mode's connection budgets, docs/spaces.md). */
-    unsigned int lubyTerm(unsigned long i);
-
     class MemeticPlanner : public PlannerBase
     {
       public:

@@ -273,26 +273,21 @@ namespace mhplan
     void MemeticPlanner::reportStateSolution(bool &exact, bool &approximate)
     {
         const StatePath *states = haveSolution_ ? &bestStates_ : nullptr;
-        StatePath cut;
+        std::size_t count = haveSolution_ ? bestStates_.size() : 0;
         if (states == nullptr && !closestStates_.empty() && std::isfinite(closestDistance_))
         {
+            // The connections' tree path passed the validator only: it is reported as far as it passes the
+            // fine check too (docs/spaces.md, "Margin"); addSolutionPath then cuts it at its state nearest
+            // the goal.
             states = &closestStates_;
-            if (stateToolkit_->strictNeeded())
-            {
-                // The connections' tree path passed the validator only: it is reported as far as it passes
-                // the fine check too (docs/spaces.md, "Margin").
-                cut = closestStates_;
-                // (addSolutionPath then cuts it at its state nearest the goal.)
-                cut.resize(stateToolkit_->strictPrefix(cut));
-                states = &cut;
-            }
+            count = stateToolkit_->strictPrefix(closestStates_);
         }
         if (states == nullptr)
             return;
         exact = haveSolution_;
         approximate = !exact;
         addSolutionPath(
-            states->size(), [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact,
-            bestCostObj_, closestDistance_);
+            count, [&](ob::State *s, std::size_t i) { fillState(s, (*states)[i]); }, exact, bestCostObj_,
+            closestDistance_);
     }
 } // namespace mhplan

@@ -45,6 +45,12 @@ namespace mhplan
         return c.trees[t].size() - 1;
     }
 
+    bool MemeticStateToolkit::symmetricMotions() const
+    {
+        const ob::StateSpacePtr &space = si_->getStateSpace();
+        return space->hasSymmetricDistance() && space->hasSymmetricInterpolate();
+    }
+
     MemeticStateToolkit::ConnectResult MemeticStateToolkit::connect(
         StatePath &path, const StatePoint &from, const StatePoint &to, double range, unsigned int maxNodes,
         const Sampler &sample, const std::function<bool()> &stop, StatePath *closest, double *closestDistance)
@@ -55,12 +61,11 @@ namespace mhplan
             return ConnectResult::Found;
         }
         Connection c(si_);
-        const ob::StateSpacePtr &space = si_->getStateSpace();
-        if (!car_.active() && space->hasSymmetricDistance() && space->hasSymmetricInterpolate())
+        if (!car_.active() && symmetricMotions())
             for (int t = 0; t < 2; ++t)
             {
-                // Exact nearest states in O(log n) per query on large trees (the budget doubles after every
-                // connection that runs out, docs/spaces.md); a linear scan would be quadratic in the tree.
+                // Exact nearest states in O(log n) per query on large trees (the planner's budgets reach
+                // 80,000 states, docs/spaces.md); a linear scan would be quadratic in the tree.
                 c.nn[t] = std::make_unique<ompl::NearestNeighborsGNATNoThreadSafety<std::size_t>>();
                 const std::vector<Connection::Node> &tree = c.trees[t];
                 const ob::State *query = c.query;
@@ -92,11 +97,11 @@ namespace mhplan
         std::vector<double> bound;
         auto nearest = [&](int t, const StatePoint &target) -> std::size_t
         {
+            if (c.nn[t])
+                return c.nn[t]->nearest(kQuery);
             const std::vector<Connection::Node> &tree = c.trees[t];
             const auto dist = [&](std::size_t i)
             { return t == 0 ? si_->distance(tree[i].s, c.query) : si_->distance(c.query, tree[i].s); };
-            if (c.nn[t])
-                return c.nn[t]->nearest(kQuery);
             std::size_t best = 0;
             double bestD = dist(0);
             if (!car_.active())
@@ -186,8 +191,7 @@ namespace mhplan
         // On a space whose motions are not reversible (Dubins) a tree grown from the goal would hold states
         // the goal is not reachable from: there only the start tree grows, and after each step it is extended
         // toward the goal itself until it reaches it or is blocked.
-        const ob::StateSpacePtr &space = si_->getStateSpace();
-        const bool bidirectional = space->hasSymmetricDistance() && space->hasSymmetricInterpolate();
+        const bool bidirectional = symmetricMotions();
         unsigned long attempts = 0;
         StatePoint r;
         while (c.size() < maxNodes && attempts < 20ul * maxNodes)

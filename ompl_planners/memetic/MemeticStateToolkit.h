@@ -10,8 +10,8 @@
 #include "ompl_planners/memetic/CarBounds.h"
 
 #include <ompl/base/OptimizationObjective.h>
-#include <ompl/datastructures/NearestNeighbors.h>
 #include <ompl/base/SpaceInformation.h>
+#include <ompl/datastructures/NearestNeighbors.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include <cstdint>
@@ -143,6 +143,12 @@ namespace mhplan
                      const std::function<bool()> &stop, unsigned int maxPoints = 2000, bool precise = false,
                      const PassReport &afterPass = nullptr);
 
+        /** \brief The best move of \e v toward \e target (bisection on the fraction) between \e a and \e b,
+            stopped the margin short when blocked (both motions from the position it steps back to checked);
+            true when one lowered the cost (\e v then moved, both its motions valid). tighten()'s pull move.
+         */
+        bool pullToward(const StatePoint &a, StatePoint &v, const StatePoint &b, const StatePoint &target,
+                        unsigned int steps);
         /** \brief Random local search of the waypoints (a (1+1) evolution strategy per waypoint,
            docs/spaces.md): \e tries candidates per interior waypoint drawn with every coordinate within \e
            step x its parametrisation range of the waypoint's; a candidate's cost through its neighbours is
@@ -196,10 +202,6 @@ namespace mhplan
                       const std::function<bool()> &stop, bool precise);
         bool subdivide(StatePath &path, std::vector<char> &dirty, const std::vector<char> &held,
                        double maxTurn, unsigned int maxPoints);
-        /** \brief The best move of \e v toward \e target (bisection on the fraction) between \e a and \e b;
-            true when one lowered the cost (\e v then moved). */
-        bool pullToward(const StatePoint &a, StatePoint &v, const StatePoint &b, const StatePoint &target,
-                        unsigned int steps);
         /** \brief The piece between arc positions: the ends' states and the segments they lie on. */
         bool pickPiece(const StatePath &path, double scale, StatePoint &p1, std::size_t &seg1, StatePoint &p2,
                        std::size_t &seg2);
@@ -237,6 +239,9 @@ namespace mhplan
         ConnectResult grow(Connection &c, StatePath &path, double range, std::size_t maxNodes,
                            const Sampler &sample, const std::function<bool()> &stop, StatePath *closest,
                            double *closestDistance);
+        /** \brief Whether the space's distance and interpolation are symmetric (both trees of a connection
+            grow; else only the start tree, docs/spaces.md). */
+        bool symmetricMotions() const;
         /** \brief Append \e x to tree \e t of \e c (its state made by the parametrisation); its index. */
         std::size_t addNode(Connection &c, int t, const StatePoint &x, std::size_t parent);
 

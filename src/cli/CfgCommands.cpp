@@ -16,8 +16,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <set>
 
