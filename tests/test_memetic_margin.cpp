@@ -217,3 +217,51 @@ TEST(MemeticMargin, ALoosePathAcrossATipIsMendedBesideIt)
     std::cout << "[margin] strict length " << MemeticToolkit::length(path) << " with " << path.size()
               << " points\n";
 }
+
+TEST(MemeticMargin, AContactInsideASegmentWhoseBendCannotMoveGetsAWaypoint)
+{
+    // A loose path's bend v = (10, 10) between two discs that graze its segments 1e-5 m away: the upper one
+    // touches (1, 10) -> v 0.2 m before v, the lower one v -> (19, 10) halfway. The margin refuses v -> goal
+    // for the lower disc, on one side; shifting v away from it (up) runs the first segment into the upper
+    // disc, and the goal cannot move, so shifting the segment's ends cannot clear the contact (before: the
+    // margin's rounds ran out and makeStrict() refused the path, which then counted as invalid). A waypoint
+    // where the margin met the disc, shifted away from it, clears it (docs/variants.md, "No corner the
+    // validator cannot see").
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const double r = 3.0, gap = 1e-5;
+    const std::array<double, 2> upper{9.8, 10.0 + r + gap}, lower{14.5, 10.0 - r - gap};
+    const auto clearance = [&](double x, double y)
+    { return std::min(std::hypot(x - upper[0], y - upper[1]), std::hypot(x - lower[0], y - lower[1])) - r; };
+    og::SimpleSetupPtr ss = test::planarAppProblem([&](double x, double y) { return clearance(x, y) >= 0.0; },
+                                                   0.002, {1.0, 10.0}, {19.0, 10.0});
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
+    ompl::RNG rng(3);
+    MemeticToolkit tk(si, rng);
+    tk.setBounds({0.0, 20.0, 0.0, 20.0});
+    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
+    tk.setFineCheck(s, 0.25 * s);
+    tk.setFixedPoints({1.0, 10.0}, {19.0, 10.0});
+    MemeticPath path{{1.0, 10.0}, {10.0, 10.0}, {19.0, 10.0}};
+    ASSERT_TRUE(tk.pathValid(path)) << "the validator refuses the loose path";
+    ASSERT_TRUE(tk.makeStrict(path, [] { return false; }));
+    EXPECT_TRUE(tk.pathValid(path));
+    // Every point of the strict path (every 0.1 mm) keeps a clearance: not touching either disc.
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 1; i < path.size(); ++i)
+    {
+        const double l = distance(path[i - 1], path[i]);
+        const auto n = static_cast<std::size_t>(std::ceil(l / 1e-4));
+        for (std::size_t k = 0; k <= n; ++k)
+        {
+            const Vec2 p = path[i - 1] + (path[i] - path[i - 1]) * (double(k) / double(n));
+            least = std::min(least, clearance(p.x, p.y));
+        }
+    }
+    EXPECT_GT(least, 0.0);
+    // A local change: the clearance's detours, not a way round a disc.
+    EXPECT_LT(MemeticToolkit::length(path), 18.01);
+    std::cout << "[margin] strict length " << MemeticToolkit::length(path) << " with " << path.size()
+              << " points, least clearance " << least << " m (c = " << 0.03 * s << " m)\n";
+}

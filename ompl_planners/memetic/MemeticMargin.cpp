@@ -205,23 +205,32 @@ namespace mhplan
                 const auto fine =
                     std::max(1u, static_cast<unsigned int>(std::ceil((w.second - w.first) * l / (2.0 * c))));
                 bool hit[2] = {false, false};
+                // The first and the last sample inside an obstacle on each side: where a one-sided contact
+                // is.
+                double first[2] = {0.0, 0.0}, last[2] = {0.0, 0.0};
                 for (unsigned int k = 0; k <= fine && !(hit[0] && hit[1]); ++k)
                 {
                     const double t = w.first + (w.second - w.first) * double(k) / double(fine);
                     for (int side = 0; side < 2; ++side)
                     {
-                        if (hit[side])
-                            continue;
                         const Vec2 p = shifted(t, side == 0 ? c : -c);
-                        hit[side] = inBounds(p) && !checkPoint(p);
+                        if (!inBounds(p) || checkPoint(p))
+                            continue;
+                        if (!hit[side])
+                            first[side] = t;
+                        last[side] = t;
+                        hit[side] = true;
                     }
                 }
                 if (!hit[0] && !hit[1])
                     break; // this window passes
                 if (!(hit[0] && hit[1]) || minClearance_ <= 0.0 || 0.5 * c < minClearance_ * (1.0 - 1e-9))
                 {
-                    hitAt_ = 0.5 * (w.first + w.second);
                     hitSide_ = hit[0] == hit[1] ? 0 : hit[0] ? 1 : -1;
+                    // One side: the middle of the samples inside the obstacle (where makeStrict may put a
+                    // waypoint); both sides: the window's middle (where crossesObstacle looks).
+                    const int side = hit[0] ? 0 : 1;
+                    hitAt_ = hitSide_ != 0 ? 0.5 * (first[side] + last[side]) : 0.5 * (w.first + w.second);
                     return false;
                 }
             }
@@ -281,6 +290,11 @@ namespace mhplan
                 const int side = refusedSide(path[i - 1], path[i], by);
                 const Vec2 d = path[i] - path[i - 1];
                 const double l = norm(d);
+                if (side != 0 && l > 0.0 && insertAway(path, i, Vec2(d.y / l, -d.x / l) * double(side), by))
+                {
+                    ++i; // the new segment i -> i + 1 is checked in the next round
+                    continue;
+                }
                 for (const std::size_t j : {i - 1, i})
                 {
                     if (j == 0 || j + 1 >= path.size())
@@ -298,9 +312,7 @@ namespace mhplan
         }
         for (std::size_t i = 1; i < path.size(); ++i)
             if (!reportableSegment(path[i - 1], path[i]))
-            {
                 return false;
-            }
         return true;
     }
 
@@ -461,6 +473,34 @@ namespace mhplan
             }
         }
         return false;
+    }
+
+    bool MemeticToolkit::insertAway(MemeticPath &path, std::size_t i, const Vec2 &dir, double step)
+    {
+        // A one-sided contact well inside a segment (farther than s from both ends): a loose path crosses a
+        // corner between two of its bends, which shifting the bends would only swing round their own
+        // obstacles. A waypoint goes where the margin met the obstacle, shifted away from it by the clearance
+        // (halved, as shiftAway, where that point is not valid).
+        const Vec2 a = path[i - 1], b = path[i];
+        const auto at = caches_->refusedAt.find(SegmentKey{a.x, a.y, b.x, b.y});
+        const double l = distance(a, b);
+        if (at == caches_->refusedAt.end() || !(spacing_ > 0.0) || at->second * l <= spacing_ ||
+            (1.0 - at->second) * l <= spacing_)
+            return false;
+        const Vec2 p = a + (b - a) * at->second;
+        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
+        const StrictScope loose(*this, false); // the new segments face the margin in the next round
+        for (double h = step;; h *= 0.5)
+        {
+            const Vec2 q = p + dir * h;
+            if (pointValid(q) && motionValid(a, q) && motionValid(q, b))
+            {
+                path.insert(path.begin() + static_cast<std::ptrdiff_t>(i), q);
+                return true;
+            }
+            if (0.5 * h < least * (1.0 - 1e-9))
+                return false;
+        }
     }
 
     void MemeticToolkit::shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step)

@@ -213,7 +213,12 @@ namespace mhplan
         path.push_back(loose.front());
         for (std::size_t i = 1; i < loose.size(); ++i)
         {
-            path.push_back((loose[i - 1] + loose[i]) * 0.5);
+            // A midpoint inside an obstacle (the loose segment crosses a corner between the validator's
+            // samples) would make both halves motions the validator refuses: that segment stays whole, and
+            // the margin's rounds mend it beside the crossing.
+            const Vec2 mid = (loose[i - 1] + loose[i]) * 0.5;
+            if (toolkit_->pointValid(mid))
+                path.push_back(mid);
             path.push_back(loose[i]);
         }
         return toolkit_->makeStrict(path, stop_);

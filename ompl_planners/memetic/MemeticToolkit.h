@@ -263,6 +263,10 @@ namespace mhplan
         void pushOut(MemeticPath &path, std::size_t j, double step);
         /** \brief Shift waypoint j by \e step along the unit \e dir (halved while the result is invalid). */
         void shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step);
+        /** \brief Insert a waypoint before i where the margin met a one-sided obstacle on path[i - 1] ->
+            path[i], shifted by \e step along the unit \e dir; false (nothing inserted) when that place is
+            within s of an end or no shifted point is valid with both motions. */
+        bool insertAway(MemeticPath &path, std::size_t i, const Vec2 &dir, double step);
         /** \brief The side (+1 left of a -> b, -1 right, 0 unknown) of the obstacle for which the margin
             refused the segment (cached verdict), and in \e clearance the clearance it was refused at. */
         int refusedSide(const Vec2 &a, const Vec2 &b, double &clearance) const;
