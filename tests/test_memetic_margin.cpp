@@ -265,3 +265,37 @@ TEST(MemeticMargin, AContactInsideASegmentWhoseBendCannotMoveGetsAWaypoint)
     std::cout << "[margin] strict length " << MemeticToolkit::length(path) << " with " << path.size()
               << " points, least clearance " << least << " m (c = " << 0.03 * s << " m)\n";
 }
+
+TEST(MemeticMargin, TheSearchsVerdictSeesAWallNextToASegmentsEnd)
+{
+    // With the margin on (an OMPL app's DiscreteMotionValidator), the search's own motion verdict also runs
+    // the fine check within s of both ends: a wall 2 cm thick across the segment 1.8-3.8 cm from its start
+    // lies between the validator's first two states (5.6 cm apart), so the validator alone accepts the
+    // motion; the fine check's samples (every 1.4 cm) see it. Without the margin the verdict is the
+    // validator's.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const double x0 = 1.0, near = x0 + 0.0182, far = x0 + 0.0382;
+    og::SimpleSetupPtr ss = test::planarAppProblem([&](double x, double y)
+                                                   { return !(x > near && x < far && y > 9.0 && y < 11.0); },
+                                                   0.002, {1.0, 10.0}, {19.0, 10.0});
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
+    const Vec2 a{x0, 10.0}, b{19.0, 10.0};
+    {
+        ompl::RNG rng(3);
+        MemeticToolkit plain(si, rng);
+        plain.setBounds({0.0, 20.0, 0.0, 20.0});
+        ASSERT_TRUE(plain.motionValid(a, b))
+            << "the validator sees the wall: the test no longer probes anything";
+    }
+    ompl::RNG rng(3);
+    MemeticToolkit tk(si, rng);
+    tk.setBounds({0.0, 20.0, 0.0, 20.0});
+    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
+    tk.setFineCheck(s, 0.25 * s);
+    EXPECT_FALSE(tk.motionValid(a, b));
+    EXPECT_FALSE(tk.motionValid(b, a)); // the wall is next to the other end of the reversed motion
+    // A motion clear of the wall's ends is still the validator's business alone beyond s from its ends.
+    EXPECT_TRUE(tk.motionValid(Vec2{x0, 12.0}, Vec2{19.0, 12.0}));
+}

@@ -50,7 +50,18 @@ namespace mhplan
             ++motionChecks_;
             setStatePosition(a_, a);
             setStatePosition(b_, b);
-            const bool valid = si_->checkMotion(a_, b_);
+            bool valid = si_->checkMotion(a_, b_);
+            if (valid && margin_ > 0.0 && fineStep_ > 0.0 && spacing_ > 0.0)
+            {
+                // The search's own verdict looks closer next to both ends too: the fine check's samples
+                // within s of each end (docs/variants.md, "The fine check"). A pull puts a bend against the
+                // corner it wraps; the validator then tests the bend and the next state s away, so the search
+                // pulled bends across corners (through the diagonal pinches of a maze's walls) that no push
+                // of the margin could undo, and the path counted as invalid.
+                const double l = distance(a, b);
+                double t = 0.0;
+                valid = fineCheck(a, b, t, 0.0, spacing_) && fineCheck(a, b, t, l - spacing_, l);
+            }
             code = &remember(key, valid ? kValid : kInvalid);
         }
         else if (*code == kInvalid || !strict || *code != kValid)
