@@ -230,7 +230,13 @@ namespace mhplan
         if (!strictCopy(out))
             return false;
         const MemeticToolkit::StrictScope strict(*toolkit_);
+        // Coarse pull steps (kRetryBisections halvings of each move instead of bisections): this retry has
+        // only to bring the path near its class's tight path under the margin, which the elite polish then
+        // tightens precisely; every strict verdict of a move costs the margin's close checks
+        // (docs/variants.md).
+        toolkit_->setBisections(std::min(bisections_, kRetryBisections));
         toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
+        toolkit_->setBisections(bisections_);
         // The margin and the fine check, as every reported path (docs/variants.md, "The fine check").
         return !stopRequested() && toolkit_->makeStrict(out, stop_);
     }

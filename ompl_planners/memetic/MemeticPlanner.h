@@ -232,6 +232,8 @@ namespace mhplan
         /** \brief The population is complete, or cut short by the fill budget, or all the lattice offers. */
         bool readyToStart() const;
         static constexpr unsigned long kFillBudget = 3000000;
+        /** \brief Halvings of each pull move in the raw path's strict tightening (strictTighten). */
+        static constexpr unsigned int kRetryBisections = 3;
         /** \brief Samples of the first roadmap, and the most a roadmap draws per epoch. */
         static constexpr unsigned int kRoadmapSamples = 1500;
         static constexpr unsigned int kRoadmapFirst = 200;
