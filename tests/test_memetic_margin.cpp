@@ -116,6 +116,17 @@ namespace
         const double apexX = 10.113, apexY = 10.05, depth = 6.0, half = depth * std::tan(M_PI / 12.0);
         return {{apexX - half, apexY - depth}, {apexX + half, apexY - depth}, {apexX, apexY}};
     }
+    /** \brief The planners' margin on \e tk (validator_margin 0.5, validator_clearance 0.03,
+        validator_min_clearance 0.001, validator_fine_step 0.25, all of the validator's spacing s) in the 20 m
+        square; returns s. */
+    double setPlannersMargin(MemeticToolkit &tk, const ob::SpaceInformationPtr &si)
+    {
+        const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
+        tk.setBounds({0.0, 20.0, 0.0, 20.0});
+        tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
+        tk.setFineCheck(s, 0.25 * s);
+        return s;
+    }
 } // namespace
 
 TEST(MemeticFineCheck, AnAcuteTipBetweenTheSamplesIsNotCut)
@@ -189,14 +200,9 @@ TEST(MemeticMargin, ALoosePathAcrossATipIsMendedBesideIt)
     ASSERT_TRUE(loose.check()) << "the validator now sees the tip on the loose path";
     ASSERT_GT(lengthInside(loose, obstacle, kDenseStep), 0.0) << "the loose path no longer crosses the tip";
 
-    // The planners' margin (validator_margin 0.5, validator_clearance 0.03, validator_min_clearance 0.001,
-    // validator_fine_step 0.25, all of the validator's spacing s).
-    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
     ompl::RNG rng(3);
     MemeticToolkit tk(si, rng);
-    tk.setBounds({0.0, 20.0, 0.0, 20.0});
-    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
-    tk.setFineCheck(s, 0.25 * s);
+    setPlannersMargin(tk, si);
     tk.setFixedPoints({1.0, 10.0}, {19.0, 10.0});
     MemeticPath path{{1.0, 10.0}, {10.0, 10.0}, {19.0, 10.0}};
     ASSERT_TRUE(tk.makeStrict(path, [] { return false; }));
@@ -236,12 +242,9 @@ TEST(MemeticMargin, AContactInsideASegmentWhoseBendCannotMoveGetsAWaypoint)
                                                    0.002, {1.0, 10.0}, {19.0, 10.0});
     ss->setup();
     const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
     ompl::RNG rng(3);
     MemeticToolkit tk(si, rng);
-    tk.setBounds({0.0, 20.0, 0.0, 20.0});
-    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
-    tk.setFineCheck(s, 0.25 * s);
+    const double s = setPlannersMargin(tk, si);
     tk.setFixedPoints({1.0, 10.0}, {19.0, 10.0});
     MemeticPath path{{1.0, 10.0}, {10.0, 10.0}, {19.0, 10.0}};
     ASSERT_TRUE(tk.pathValid(path)) << "the validator refuses the loose path";
@@ -280,7 +283,6 @@ TEST(MemeticMargin, TheSearchsVerdictSeesAWallNextToASegmentsEnd)
                                                    0.002, {1.0, 10.0}, {19.0, 10.0});
     ss->setup();
     const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
-    const double s = si->getStateValidityCheckingResolution() * si->getMaximumExtent();
     const Vec2 a{x0, 10.0}, b{19.0, 10.0};
     {
         ompl::RNG rng(3);
@@ -291,9 +293,7 @@ TEST(MemeticMargin, TheSearchsVerdictSeesAWallNextToASegmentsEnd)
     }
     ompl::RNG rng(3);
     MemeticToolkit tk(si, rng);
-    tk.setBounds({0.0, 20.0, 0.0, 20.0});
-    tk.setMargin(0.5 * s, 0.03 * s, 0.001 * s);
-    tk.setFineCheck(s, 0.25 * s);
+    setPlannersMargin(tk, si);
     EXPECT_FALSE(tk.motionValid(a, b));
     EXPECT_FALSE(tk.motionValid(b, a)); // the wall is next to the other end of the reversed motion
     // A motion clear of the wall's ends is still the validator's business alone beyond s from its ends.
