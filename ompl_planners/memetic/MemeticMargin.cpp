@@ -60,7 +60,9 @@ namespace mhplan
                 // of the margin could undo, and the path counted as invalid.
                 const double l = distance(a, b);
                 double t = 0.0;
-                valid = fineCheck(a, b, t, 0.0, spacing_) && fineCheck(a, b, t, l - spacing_, l);
+                valid = l <= 2.0 * spacing_
+                            ? fineCheck(a, b, t) // the two ends' stretches cover it
+                            : fineCheck(a, b, t, 0.0, spacing_) && fineCheck(a, b, t, l - spacing_, l);
             }
             code = &remember(key, valid ? kValid : kInvalid);
         }
