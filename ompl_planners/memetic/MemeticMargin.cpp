@@ -488,49 +488,53 @@ namespace mhplan
         return false;
     }
 
+    double MemeticToolkit::smallestShift() const
+    {
+        // Twice the smallest clearance the margin accepts (docs/variants.md, "validator_min_clearance").
+        return 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
+    }
+
+    bool MemeticToolkit::validShift(const Vec2 &base, const Vec2 &dir, double step, const Vec2 &a,
+                                    const Vec2 &b, Vec2 &q)
+    {
+        // In a passage narrower than the shift the shifted point lands in the obstacle across it: halve the
+        // shift down to smallestShift().
+        const double least = smallestShift();
+        const StrictScope loose(*this, false); // the new motions face the margin in the next round
+        for (double h = step;; h *= 0.5)
+        {
+            q = base + dir * h;
+            if (pointValid(q) && motionValid(a, q) && motionValid(q, b))
+                return true;
+            if (0.5 * h < least * (1.0 - 1e-9))
+                return false;
+        }
+    }
+
     bool MemeticToolkit::insertAway(MemeticPath &path, std::size_t i, const Vec2 &dir, double step)
     {
         // A one-sided contact well inside a segment (farther than s from both ends): a loose path crosses a
         // corner between two of its bends, which shifting the bends would only swing round their own
-        // obstacles. A waypoint goes where the margin met the obstacle, shifted away from it by the clearance
-        // (halved, as shiftAway, where that point is not valid).
+        // obstacles. A waypoint goes where the margin met the obstacle, shifted away from it by the
+        // clearance.
         const Vec2 a = path[i - 1], b = path[i];
         const auto at = caches_->refusedAt.find(SegmentKey{a.x, a.y, b.x, b.y});
         const double l = distance(a, b);
         if (at == caches_->refusedAt.end() || !(spacing_ > 0.0) || at->second * l <= spacing_ ||
             (1.0 - at->second) * l <= spacing_)
             return false;
-        const Vec2 p = a + (b - a) * at->second;
-        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
-        const StrictScope loose(*this, false); // the new segments face the margin in the next round
-        for (double h = step;; h *= 0.5)
-        {
-            const Vec2 q = p + dir * h;
-            if (pointValid(q) && motionValid(a, q) && motionValid(q, b))
-            {
-                path.insert(path.begin() + static_cast<std::ptrdiff_t>(i), q);
-                return true;
-            }
-            if (0.5 * h < least * (1.0 - 1e-9))
-                return false;
-        }
+        Vec2 q;
+        if (!validShift(a + (b - a) * at->second, dir, step, a, b, q))
+            return false;
+        path.insert(path.begin() + static_cast<std::ptrdiff_t>(i), q);
+        return true;
     }
 
     void MemeticToolkit::shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step)
     {
-        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
-        const StrictScope loose(*this, false);
-        for (double h = step;; h *= 0.5)
-        {
-            const Vec2 q = path[j] + dir * h;
-            if (pointValid(q) && motionValid(path[j - 1], q) && motionValid(q, path[j + 1]))
-            {
-                path[j] = q;
-                return;
-            }
-            if (0.5 * h < least * (1.0 - 1e-9))
-                return;
-        }
+        Vec2 q;
+        if (validShift(path[j], dir, step, path[j - 1], path[j + 1], q))
+            path[j] = q;
     }
 
     void MemeticToolkit::pushOut(MemeticPath &path, std::size_t j, double step)
@@ -550,8 +554,8 @@ namespace mhplan
             l = std::sqrt(cc);
         }
         // In a passage narrower than the push, the pushed point lands in the obstacle across it: halve the
-        // push down to twice the smallest clearance the margin accepts there.
-        const double least = 2.0 * (minClearance_ > 0.0 ? std::min(minClearance_, clearance_) : clearance_);
+        // push down to smallestShift().
+        const double least = smallestShift();
         const StrictScope loose(*this, false); // a pushed waypoint need only be valid; the margin is asked of
                                                // the next round
         for (const double side : {1.0, -1.0})

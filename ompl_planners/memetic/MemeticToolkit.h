@@ -261,6 +261,12 @@ namespace mhplan
         MemeticPath hazards_;
         bool checkPoint(const Vec2 &p);
         void pushOut(MemeticPath &path, std::size_t j, double step);
+        /** \brief Twice the smallest clearance the margin accepts: the least a shift is halved to. */
+        double smallestShift() const;
+        /** \brief \e base + \e dir x h for h = \e step, halved down to smallestShift(), the first that is
+           valid with both motions from \e a and to \e b (the validator's verdicts); false when none is. */
+        bool validShift(const Vec2 &base, const Vec2 &dir, double step, const Vec2 &a, const Vec2 &b,
+                        Vec2 &q);
         /** \brief Shift waypoint j by \e step along the unit \e dir (halved while the result is invalid). */
         void shiftAway(MemeticPath &path, std::size_t j, const Vec2 &dir, double step);
         /** \brief Insert a waypoint before i where the margin met a one-sided obstacle on path[i - 1] ->
