@@ -218,17 +218,23 @@ namespace mhplan
                 const auto fine =
                     std::max(1u, static_cast<unsigned int>(std::ceil((w.second - w.first) * l / (2.0 * c))));
                 bool hit[2] = {false, false};
-                // The first and the last sample inside an obstacle on each side: where a one-sided contact
-                // is.
+                // The first run of samples inside an obstacle on each side (its first and last sample): where
+                // a one-sided contact is. A side is no longer sampled once its run has ended.
                 double first[2] = {0.0, 0.0}, last[2] = {0.0, 0.0};
+                bool ended[2] = {false, false};
                 for (unsigned int k = 0; k <= fine && !(hit[0] && hit[1]); ++k)
                 {
                     const double t = w.first + (w.second - w.first) * double(k) / double(fine);
                     for (int side = 0; side < 2; ++side)
                     {
+                        if (ended[side])
+                            continue;
                         const Vec2 p = shifted(t, side == 0 ? c : -c);
                         if (!inBounds(p) || checkPoint(p))
+                        {
+                            ended[side] = hit[side];
                             continue;
+                        }
                         if (!hit[side])
                             first[side] = t;
                         last[side] = t;
