@@ -10,6 +10,7 @@
    mhplan_space_table [--time S] [--seeds N] [--environments DIR] [--planners A,B,...]
                       [--problems r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w] */
 #include "src/metrics/Metrics.h"
+#include "src/base/Parameters.h"
 #include "src/collision/Problem.h"
 #include "src/collision/RigidValidity.h"
 #include "src/collision/MeshRigidBody.h"
@@ -35,6 +36,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -303,10 +305,30 @@ int main(int argc, char **argv)
             std::cerr << "mhplan_space_table: option '" << key << "' needs a value\n" << usage;
             return 1;
         }
-        if (key == "--time")
-            timeLimit = std::atof(argv[i + 1]);
-        else if (key == "--seeds")
-            seeds = static_cast<unsigned int>(std::atoi(argv[i + 1]));
+        if (key == "--time" || key == "--seeds")
+        {
+            // The whole value is the number, within its range ("1s" or "2.5" seeds are refused, not read as 1
+            // and 2; src/base/Parameters.h).
+            const ParamRange range = key == "--time" ? ParamRange{"--time", 1e-3, 0.0, 1e6}
+                                                     : ParamRange{"--seeds", 1.0, 1.0, 1000.0};
+            try
+            {
+                const double v = parseParameter(range, argv[i + 1]);
+                checkParameterRange(range.name, v, range.lo, range.hi);
+                if (range.step == 1.0 && v != std::floor(v))
+                    throw std::invalid_argument("parameter '--seeds' must be a whole number; got '" +
+                                                std::string(argv[i + 1]) + "'");
+                if (key == "--time")
+                    timeLimit = v;
+                else
+                    seeds = static_cast<unsigned int>(v);
+            }
+            catch (const std::invalid_argument &e)
+            {
+                std::cerr << "mhplan_space_table: " << e.what() << "\n" << usage;
+                return 1;
+            }
+        }
         else if (key == "--environments")
             environments = argv[i + 1];
         else if (key == "--planners")
@@ -320,11 +342,6 @@ int main(int argc, char **argv)
                          "--problems r2,r4,r6,se2,dubins,reeds_shepp,se3,se3w\n";
             return 1;
         }
-    }
-    if (!(timeLimit > 0.0) || seeds == 0 || seeds > 1000)
-    {
-        std::cerr << "mhplan_space_table: --time must be > 0 and --seeds in [1, 1000]\n";
-        return 1;
     }
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
     ompl::RNG::setSeed(1);
