@@ -6,6 +6,7 @@
    returned paths clear of what the validator's samples miss (an independent dense check). Budgets are
    generations, never wall-clock. */
 #include "benchmarks/Campaign.h"
+#include "ompl_planners/common/StatePathFitness.h"
 #include "ompl_planners/memetic/CarBounds.h"
 #include "ompl_planners/memetic/MemeticPlanner.h"
 #include "ompl_planners/memetic/MemeticStateToolkit.h"
@@ -221,6 +222,71 @@ TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)
     {
         EXPECT_LT(tk.segmentCost(a, v) + tk.segmentCost(v, b), before);
     }
+}
+
+TEST(MemeticStateToolkit, APairOmplsDubinsCodeWouldAbortOnIsRefusedAndMeasuredWithoutIt)
+{
+    // OMPL's own Dubins space (radius 1) over [-20, 20]^2, everything valid, OMPL's discrete validator. From
+    // (0, 0, 0) straight ahead to (10, 0, -0.0025) OMPL 1.5.2's dubins() fails an assertion and the process
+    // aborts (tests/test_rigid_body.cpp shows it in a child process); every distance, interpolation and
+    // motion check of the pair calls it. Before the guard the toolkit's motion check aborted here
+    // (docs/spaces.md, "OMPL's Dubins assertions").
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    auto space = std::make_shared<ob::DubinsStateSpace>(1.0);
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(-20.0);
+    bounds.setHigh(20.0);
+    space->setBounds(bounds);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ob::State *) { return true; });
+    si->setup();
+    std::string why;
+    auto param = StateParametrisation::create(space, why);
+    ASSERT_TRUE(param) << why;
+    ob::ScopedState<ob::SE2StateSpace> a(space), b(space), c(space);
+    a->setXY(0.0, 0.0);
+    a->setYaw(0.0);
+    b->setXY(10.0, 0.0);
+    b->setYaw(-0.0025);
+    c->setXY(10.0, 0.0);
+    c->setYaw(-0.5);
+    ASSERT_TRUE(omplDubinsMayFail(a.get(), b.get(), 1.0));
+    ASSERT_FALSE(omplDubinsMayFail(a.get(), c.get(), 1.0) || omplDubinsMayFail(c.get(), a.get(), 1.0));
+    param->setReference(a.get());
+    ompl::RNG rng(5);
+    MemeticStateToolkit tk(si, *param, rng);
+    tk.setObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+    StatePoint pa, pb, pc, mid;
+    tk.fromState(a.get(), pa);
+    tk.fromState(b.get(), pb);
+    tk.fromState(c.get(), pc);
+    EXPECT_FALSE(tk.motionValid(pa, pb));
+    EXPECT_TRUE(std::isinf(tk.segmentCost(pa, pb)));
+    const SafeDubinsStateSpace safe(1.0);
+    EXPECT_DOUBLE_EQ(tk.distance(pa, pb), safe.distance(a.get(), b.get()));
+    tk.interpolate(pa, pb, 0.5, mid);
+    ob::ScopedState<ob::SE2StateSpace> m(space);
+    tk.toState(mid, m.get());
+    EXPECT_NEAR(m->getX(), 5.0, 0.1);
+    EXPECT_NEAR(m->getY(), 0.0, 0.1);
+    // A pair OMPL can evaluate is OMPL's own: checked and measured by it.
+    EXPECT_TRUE(tk.motionValid(pa, pc));
+    EXPECT_DOUBLE_EQ(tk.segmentCost(pa, pc), si->distance(a.get(), c.get()));
+    EXPECT_DOUBLE_EQ(tk.distance(pa, pc), si->distance(a.get(), c.get()));
+
+    // The faithful planners' fitness in the state mode: a waypoint making the pair is an infeasible path.
+    StatePathFitness fitness(si, *param);
+    fitness.configure(a.get(), c.get(), 1, 50, FitnessWeights{});
+    std::vector<double> x(param->dimension());
+    param->toVector(b.get(), x.data());
+    const FitnessResult bad = fitness.evaluate(x.data());
+    EXPECT_FALSE(bad.feasible);
+    EXPECT_TRUE(std::isfinite(bad.length));
+    ob::ScopedState<ob::SE2StateSpace> w(space);
+    w->setXY(5.0, 3.0);
+    w->setYaw(0.0);
+    param->toVector(w.get(), x.data());
+    EXPECT_TRUE(fitness.evaluate(x.data()).feasible);
 }
 
 TEST(MemeticStateMode, AnApproximatePathPassesTheFineCheckToo)

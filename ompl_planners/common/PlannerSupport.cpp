@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ompl_planners/common/PlannerSupport.h"
 
+#include "ompl_planners/common/DubinsGuard.h"
+
 #include <ompl/base/OptimizationObjective.h>
 #include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/PathGeometric.h>
 
 #include <algorithm>
@@ -67,16 +70,22 @@ namespace mhplan
             const ob::GoalPtr &goal = pdef->getGoal();
             // The bounds before the checker: a user's checker is never asked about a state outside them.
             const auto valid1 = [&](const ob::State *s) { return si->satisfiesBounds(s) && si->isValid(s); };
+            // Pairs OMPL 1.5.2's Dubins code would abort on are refused, and measured without it
+            // (docs/spaces.md, "OMPL's Dubins assertions").
+            const DubinsGuard dubins(si->getStateSpace().get());
+            const auto *goalState = dynamic_cast<const ob::GoalState *>(goal.get());
             std::size_t valid = valid1(states[0]) ? 1 : 0;
             while (valid > 0 && valid < states.size() && valid1(states[valid]) &&
-                   si->checkMotion(states[valid - 1], states[valid]))
+                   dubins.checkMotion(*si, states[valid - 1], states[valid]))
                 ++valid;
             std::size_t best = 0;
             double bestDistance = std::numeric_limits<double>::infinity();
             for (std::size_t i = 0; i < valid; ++i)
             {
                 double d = std::numeric_limits<double>::infinity();
-                if (goal)
+                if (goalState != nullptr && dubins.active())
+                    d = dubins.distance(*si, states[i], goalState->getState());
+                else if (goal)
                     goal->isSatisfied(states[i], &d);
                 if (d < bestDistance)
                 {

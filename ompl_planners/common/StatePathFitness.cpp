@@ -17,7 +17,7 @@ namespace mhplan
     } // namespace
 
     StatePathFitness::StatePathFitness(ob::SpaceInformationPtr si, const StateParametrisation &param)
-        : si_(std::move(si)), param_(param)
+        : si_(std::move(si)), param_(param), guard_(si_->getStateSpace().get())
     {
     }
 
@@ -68,8 +68,12 @@ namespace mhplan
         decode(x);
         FitnessResult r;
         const std::size_t segments = path_.size() - 1;
+        safe_.assign(segments, 1);
         for (std::size_t i = 0; i < segments; ++i)
-            r.length += si_->distance(path_[i], path_[i + 1]);
+        {
+            safe_[i] = guard_.safe(path_[i], path_[i + 1]) ? 1 : 0;
+            r.length += guard_.distance(*si_, path_[i], path_[i + 1]);
+        }
 
         const ob::StateSpacePtr &space = si_->getStateSpace();
         const ob::StateValidityCheckerPtr &checker = si_->getStateValidityChecker();
@@ -87,7 +91,9 @@ namespace mhplan
                 current = i;
                 firstTime = true; // a new segment: its curve is computed at its first inner sample
             }
-            if (dubins_ != nullptr)
+            if (safe_[i] == 0)
+                guard_.interpolate(*si_, path_[i], path_[i + 1], u, sample_);
+            else if (dubins_ != nullptr)
                 dubins_->interpolate(path_[i], path_[i + 1], u, firstTime, dubinsPath_, sample_);
             else if (reedsShepp_ != nullptr)
                 reedsShepp_->interpolate(path_[i], path_[i + 1], u, firstTime, reedsSheppPath_, sample_);
@@ -107,7 +113,7 @@ namespace mhplan
         r.violation = sum / samples_;
         r.feasible = r.violation == 0.0;
         for (std::size_t i = 0; r.feasible && i < segments; ++i)
-            r.feasible = si_->checkMotion(path_[i], path_[i + 1]);
+            r.feasible = safe_[i] != 0 && si_->checkMotion(path_[i], path_[i + 1]);
         if (!r.feasible && r.violation == 0.0)
             r.violation = kHiddenCollisionViolation;
         r.fitness = weights_.lengthWeight * r.length + weights_.penaltyWeight * r.violation;

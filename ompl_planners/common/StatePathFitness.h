@@ -4,6 +4,7 @@
 #ifndef MHPLAN_STATE_PATH_FITNESS_H
 #define MHPLAN_STATE_PATH_FITNESS_H
 
+#include "ompl_planners/common/DubinsGuard.h"
 #include "ompl_planners/common/Fitness.h"
 #include "ompl_planners/common/StateParametrisation.h"
 
@@ -68,6 +69,10 @@ namespace mhplan
         const ompl::base::ReedsSheppStateSpace *reedsShepp_{nullptr};
         ompl::base::DubinsStateSpace::DubinsPath dubinsPath_;
         ompl::base::ReedsSheppStateSpace::ReedsSheppPath reedsSheppPath_;
+        /** \brief Pairs OMPL 1.5.2's Dubins code would abort on (docs/spaces.md, "OMPL's Dubins assertions"):
+            such a segment is infeasible, measured and sampled by SafeDubinsStateSpace. */
+        DubinsGuard guard_;
+        std::vector<char> safe_;
     };
 } // namespace mhplan
 

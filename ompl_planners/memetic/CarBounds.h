@@ -4,6 +4,8 @@
 #ifndef MHPLAN_OMPL_PLANNERS_MEMETIC_CAR_BOUNDS_H
 #define MHPLAN_OMPL_PLANNERS_MEMETIC_CAR_BOUNDS_H
 
+#include "src/collision/CarSpaces.h"
+
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
@@ -13,23 +15,6 @@
 
 namespace mhplan
 {
-    namespace detail
-    {
-        /** \brief The turning radius of OMPL's car spaces (a protected member, read through a derived
-            class). */
-        struct DubinsRadius : ompl::base::DubinsStateSpace
-        {
-            static double of(const ompl::base::DubinsStateSpace &s) { return s.*(&DubinsRadius::rho_); }
-        };
-        struct ReedsSheppRadius : ompl::base::ReedsSheppStateSpace
-        {
-            static double of(const ompl::base::ReedsSheppStateSpace &s)
-            {
-                return s.*(&ReedsSheppRadius::rho_);
-            }
-        };
-    } // namespace detail
-
     /** \brief A car state (x, y, yaw) with the yaw's cosine and sine. */
     struct CarPose
     {

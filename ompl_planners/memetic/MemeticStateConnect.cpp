@@ -71,8 +71,8 @@ namespace mhplan
                 const ob::State *query = c.query;
                 c.nn[t]->setDistanceFunction(
                     [this, &tree, query](const std::size_t &i, const std::size_t &j) {
-                        return si_->distance(i == kQuery ? query : tree[i].s,
-                                             j == kQuery ? query : tree[j].s);
+                        return dubins_.distance(*si_, i == kQuery ? query : tree[i].s,
+                                                j == kQuery ? query : tree[j].s);
                     });
             }
         addNode(c, 0, from, kNoParent);
@@ -100,8 +100,10 @@ namespace mhplan
             if (c.nn[t])
                 return c.nn[t]->nearest(kQuery);
             const std::vector<Connection::Node> &tree = c.trees[t];
-            const auto dist = [&](std::size_t i)
-            { return t == 0 ? si_->distance(tree[i].s, c.query) : si_->distance(c.query, tree[i].s); };
+            const auto dist = [&](std::size_t i) {
+                return t == 0 ? dubins_.distance(*si_, tree[i].s, c.query)
+                              : dubins_.distance(*si_, c.query, tree[i].s);
+            };
             std::size_t best = 0;
             double bestD = dist(0);
             if (!car_.active())
@@ -161,8 +163,8 @@ namespace mhplan
             toState(target, c.query);
             const std::size_t n = from != kNoParent ? from : nearest(t, target);
             const StatePoint from0 = c.trees[t][n].x;
-            const double d =
-                t == 0 ? si_->distance(c.trees[t][n].s, c.query) : si_->distance(c.query, c.trees[t][n].s);
+            const double d = t == 0 ? dubins_.distance(*si_, c.trees[t][n].s, c.query)
+                                    : dubins_.distance(*si_, c.query, c.trees[t][n].s);
             const bool reach = d <= range;
             StatePoint q;
             if (reach)
@@ -176,7 +178,7 @@ namespace mhplan
             added = addNode(c, t, q, n);
             if (t == 0 && closest != nullptr && closestDistance != nullptr)
             {
-                const double dg = si_->distance(c.trees[0][added].s, c.trees[1][0].s);
+                const double dg = dubins_.distance(*si_, c.trees[0][added].s, c.trees[1][0].s);
                 if (dg < *closestDistance)
                 {
                     *closestDistance = dg;

@@ -31,8 +31,9 @@ namespace mhplan
     {
       public:
         RoadmapBounds(const ob::SpaceInformationPtr &si, const StateParametrisation &param,
-                      const StatePath &points, bool symmetric)
-            : si_(si), m_(points.size()), symmetric_(symmetric), car_(si->getStateSpace().get())
+                      const StatePath &points, bool symmetric, const DubinsGuard &dubins)
+            : si_(si), m_(points.size()), symmetric_(symmetric), car_(si->getStateSpace().get()),
+              dubins_(dubins)
         {
             states_.reserve(m_);
             for (const StatePoint &p : points)
@@ -79,7 +80,7 @@ namespace mhplan
         double distance(std::size_t i, std::size_t j)
         {
             ++evaluations_;
-            return si_->distance(states_[i], states_[j]);
+            return dubins_.distance(*si_, states_[i], states_[j]);
         }
 
         /** \brief The pivots' lower bounds of distance(i, j) into \e out[j] and of distance(j, i) into
@@ -132,6 +133,7 @@ namespace mhplan
         std::size_t m_;
         bool symmetric_;
         CarBounds car_;
+        const DubinsGuard &dubins_;
         std::vector<ob::State *> states_;
         std::vector<CarPose> poses_;
         std::vector<double> to_, from_;
@@ -182,7 +184,7 @@ namespace mhplan
         // Path length: an edge's cost is the distance the neighbour search computed.
         const bool length =
             !opt_ || dynamic_cast<const ob::PathLengthOptimizationObjective *>(opt_.get()) != nullptr;
-        RoadmapBounds bounds(si_, param_, rmPoints_, symmetric);
+        RoadmapBounds bounds(si_, param_, rmPoints_, symmetric, dubins_);
         std::vector<double> lbOut(m), lbIn(m);
         std::vector<std::pair<double, std::uint32_t>> order, outs, ins;
         order.reserve(m);

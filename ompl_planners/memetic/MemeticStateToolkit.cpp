@@ -33,7 +33,8 @@ namespace mhplan
 
     MemeticStateToolkit::MemeticStateToolkit(ob::SpaceInformationPtr si, const StateParametrisation &param,
                                              ompl::RNG &rng)
-        : si_(std::move(si)), param_(param), car_(si_->getStateSpace().get()), rng_(rng)
+        : si_(std::move(si)), param_(param), car_(si_->getStateSpace().get()),
+          dubins_(si_->getStateSpace().get()), rng_(rng)
     {
         a_ = si_->allocState();
         b_ = si_->allocState();
@@ -86,7 +87,7 @@ namespace mhplan
         ++motionChecks_;
         toState(a, a_);
         toState(b, b_);
-        const bool ok = si_->satisfiesBounds(b_) && si_->checkMotion(a_, b_);
+        const bool ok = si_->satisfiesBounds(b_) && dubins_.checkMotion(*si_, a_, b_);
         if (cache_.size() >= kCacheLimit)
             cache_.clear();
         cache_.emplace(key_, ok);
@@ -116,12 +117,12 @@ namespace mhplan
             return it->second;
         toState(a, a_);
         toState(b, b_);
-        const auto n = static_cast<unsigned long>(std::ceil(si_->distance(a_, b_) / strictSpacing_));
+        const auto n = static_cast<unsigned long>(std::ceil(dubins_.distance(*si_, a_, b_) / strictSpacing_));
         double failure = -1.0;
         for (unsigned long k = 1; k < n && failure < 0.0; ++k)
         {
             const double t = double(k) / double(n);
-            si_->getStateSpace()->interpolate(a_, b_, t, c_);
+            dubins_.interpolate(*si_, a_, b_, t, c_);
             ++stateChecks_;
             if (!si_->isValid(c_))
                 failure = t;
@@ -178,6 +179,9 @@ namespace mhplan
     {
         toState(a, a_);
         toState(b, b_);
+        // A pair OMPL's Dubins code would abort on is never a motion (motionValid), so never a path's.
+        if (!dubins_.safe(a_, b_))
+            return std::numeric_limits<double>::infinity();
         return opt_ ? opt_->motionCost(a_, b_).value() : si_->distance(a_, b_);
     }
 
@@ -195,6 +199,8 @@ namespace mhplan
         {
             toState(path[i - 1], a_);
             toState(path[i], b_);
+            if (!dubins_.safe(a_, b_))
+                return std::numeric_limits<double>::infinity();
             c = opt_->combineCosts(c, opt_->motionCost(a_, b_));
         }
         return c.value();
@@ -204,14 +210,14 @@ namespace mhplan
     {
         toState(a, a_);
         toState(b, b_);
-        return si_->distance(a_, b_);
+        return dubins_.distance(*si_, a_, b_);
     }
 
     void MemeticStateToolkit::interpolate(const StatePoint &a, const StatePoint &b, double t, StatePoint &out)
     {
         toState(a, a_);
         toState(b, b_);
-        si_->getStateSpace()->interpolate(a_, b_, t, c_);
+        dubins_.interpolate(*si_, a_, b_, t, c_);
         fromState(c_, out);
     }
 

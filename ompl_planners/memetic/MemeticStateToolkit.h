@@ -6,6 +6,7 @@
 #ifndef MHPLAN_MEMETIC_STATE_TOOLKIT_H
 #define MHPLAN_MEMETIC_STATE_TOOLKIT_H
 
+#include "ompl_planners/common/DubinsGuard.h"
 #include "ompl_planners/common/StateParametrisation.h"
 #include "ompl_planners/memetic/CarBounds.h"
 
@@ -255,6 +256,9 @@ namespace mhplan
         /** \brief Lower bounds of the Dubins and Reeds-Shepp distances (inactive on other spaces), used to
             prune nearest-state scans. */
         CarBounds car_;
+        /** \brief Pairs OMPL 1.5.2's Dubins code would abort on (docs/spaces.md, "OMPL's Dubins assertions").
+         */
+        DubinsGuard dubins_;
         ompl::RNG &rng_;
         ompl::base::OptimizationObjectivePtr opt_;
         unsigned int bisections_{10};

@@ -3,6 +3,7 @@
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -164,7 +165,8 @@ namespace mhplan
 
     double SafeDubinsStateSpace::distance(const ob::State *state1, const ob::State *state2) const
     {
-        return rho_ * shortestPath(state1, state2).length();
+        const double forward = shortestPath(state1, state2).length();
+        return rho_ * (isSymmetric_ ? std::min(forward, shortestPath(state2, state1).length()) : forward);
     }
 
     void SafeDubinsStateSpace::interpolate(const ob::State *from, const ob::State *to, double t,
@@ -193,8 +195,189 @@ namespace mhplan
                 return;
             }
             path = shortestPath(from, to);
+            if (isSymmetric_)
+            {
+                // OMPL's rule: the path from \e to back, followed backwards, where it is shorter.
+                DubinsPath back = shortestPath(to, from);
+                if (back.length() < path.length())
+                {
+                    back.reverse_ = true;
+                    path = back;
+                }
+            }
             firstTime = false;
         }
         ob::DubinsStateSpace::interpolate(from, path, t, state);
+    }
+
+    namespace
+    {
+        /** OMPL 1.5.2's wrap of the start's and goal's angles into [0, 2 pi): a value in (-1e-7, 0), or
+           within 5e-7 below a whole turn, is 0 (docs/spaces.md, "OMPL's Dubins assertions"). */
+        double omplWrap(double x)
+        {
+            if (x < 0.0 && x > -1e-7)
+                return 0.0;
+            const double y = x - kTwoPi * std::floor(x / kTwoPi);
+            return kTwoPi - y < 5e-7 ? 0.0 : y;
+        }
+
+        /** How far below a whole turn (a multiple of 2 pi) the turn angle \e x lies where OMPL 1.5.2 rounds
+           it to 0 (within 5e-7 below, or in (-1e-7, 0); the window widened by 1 % for rounding); else 0. */
+        double roundedAway(double x)
+        {
+            const double y = x - kTwoPi * std::floor(x / kTwoPi);
+            const double gap = kTwoPi - y;
+            return gap > 0.0 && gap < 5.05e-7 ? gap : 0.0;
+        }
+
+        /** Whether the angle with sine \e sx and cosine \e cx lies between 1e-10 and 1e-6 below a whole turn.
+         */
+        bool justBelowTurn(double sx, double cx)
+        {
+            return cx > 0.0 && sx < -1e-10 && sx > -1e-6;
+        }
+
+        /** The quick test before omplDubinsMayFail()'s exact one: false when no word's first turn (before
+            OMPL's wrap) lies just below a whole turn, found from each word's direction vector by products and
+            square roots instead of OMPL's atan2 and acos; true also where a word is degenerate (its vector
+            near zero, or its middle arc near a whole or half turn), where only the exact test can tell. */
+        bool nearRounding(double d, double ca, double sa, double cb, double sb)
+        {
+            const double cab = ca * cb + sa * sb;
+            // The angle theta of (vx, vy) less the angle whose cosine and sine are (cp, sp), as (cos, sin).
+            double ct = 0.0, st = 0.0;
+            const auto direction = [&](double vx, double vy, double cp, double sp)
+            {
+                const double n = std::sqrt(vx * vx + vy * vy);
+                if (n < 1e-7)
+                    return false;
+                ct = (vx * cp + vy * sp) / n;
+                st = (vy * cp - vx * sp) / n;
+                return true;
+            };
+            // First turns a - theta (right first) and theta - a (left first), plus h for the three-arc words.
+            const auto right = [&](double ch, double sh)
+            {
+                const double sy = sa * ct - ca * st, cy = ca * ct + sa * st;
+                return justBelowTurn(sy * ch + cy * sh, cy * ch - sy * sh);
+            };
+            const auto left = [&](double ch, double sh)
+            {
+                const double sy = st * ca - ct * sa, cy = ct * ca + st * sa;
+                return justBelowTurn(sy * ch + cy * sh, cy * ch - sy * sh);
+            };
+            const double lslX = d + sa - sb, lslY = cb - ca, rsrX = d - sa + sb, rsrY = ca - cb;
+            if (!direction(lslX, lslY, 1.0, 0.0) || left(1.0, 0.0)) // LSL
+                return true;
+            if (!direction(rsrX, rsrY, 1.0, 0.0) || right(1.0, 0.0)) // RSR
+                return true;
+            double tmp = d * d - 2.0 + 2.0 * (cab - d * (sa + sb)); // RSL: theta less atan2(2, p)
+            if (tmp >= -1e-7)
+            {
+                const double p = std::sqrt(std::max(tmp, 0.0)), n = std::sqrt(p * p + 4.0);
+                if (!direction(d - sa - sb, ca + cb, p / n, 2.0 / n) || right(1.0, 0.0))
+                    return true;
+            }
+            tmp = d * d - 2.0 + 2.0 * (cab + d * (sa + sb)); // LSR: theta less atan2(-2, p)
+            if (tmp >= -1e-7)
+            {
+                const double p = std::sqrt(std::max(tmp, 0.0)), n = std::sqrt(p * p + 4.0);
+                if (!direction(d + sa + sb, -ca - cb, p / n, -2.0 / n) || left(1.0, 0.0))
+                    return true;
+            }
+            // The three-arc words: p = 2 pi - acos(k), their first turn adds h = p / 2 = pi - acos(k) / 2.
+            tmp = 0.125 * (6.0 - d * d + 2.0 * (cab + d * (sa - sb))); // RLR
+            if (std::fabs(tmp) <= 1.0)
+            {
+                if (std::fabs(tmp) > 1.0 - 1e-9 || !direction(rsrX, rsrY, 1.0, 0.0) ||
+                    right(-std::sqrt(0.5 * (1.0 + tmp)), std::sqrt(0.5 * (1.0 - tmp))))
+                    return true;
+            }
+            tmp = 0.125 * (6.0 - d * d + 2.0 * (cab - d * (sa - sb))); // LRL
+            if (std::fabs(tmp) <= 1.0)
+            {
+                if (std::fabs(tmp) > 1.0 - 1e-9 || !direction(lslX, lslY, 1.0, 0.0) ||
+                    left(-std::sqrt(0.5 * (1.0 + tmp)), std::sqrt(0.5 * (1.0 - tmp))))
+                    return true;
+            }
+            return false;
+        }
+    } // namespace
+
+    bool omplDubinsMayFail(const ob::State *state1, const ob::State *state2, double rho)
+    {
+        const auto *s1 = state1->as<ob::SE2StateSpace::StateType>();
+        const auto *s2 = state2->as<ob::SE2StateSpace::StateType>();
+        const double dx = s2->getX() - s1->getX();
+        const double dy = s2->getY() - s1->getY();
+        // d, the angle of the line and the start's and goal's angles to it, as OMPL computes them.
+        const double d = std::sqrt(dx * dx + dy * dy) / rho;
+        const double th = std::atan2(dy, dx);
+        const double a = omplWrap(s1->getYaw() - th);
+        const double b = omplWrap(s2->getYaw() - th);
+        if (!std::isfinite(d) || !std::isfinite(a) || !std::isfinite(b))
+            return true; // not a pose OMPL can measure at all
+        if (d < 1e-6 && std::fabs(a - b) < 1e-6)
+            return false; // OMPL returns the empty word without computing any
+        const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
+        if (d < 1e3 && !nearRounding(d, ca, sa, cb, sb))
+            return false;
+        const double cab = ca * cb + sa * sb;
+        // Each word OMPL computes: its first turn's angle t before the wrap and its last turn's q. Where OMPL
+        // rounds t up to a whole turn by g, the rest of the word turns about the first turning circle's
+        // centre by g; OMPL asserts that the centre of the last circle (a turning radius from the goal) still
+        // lies where it should to 2e-6 in each coordinate, and it has moved by g times its distance from the
+        // first centre, at most r + 1 for r the first centre's distance from the goal: flagged from 1.8e-6.
+        // Rounding t and q together also turns the end's heading by their sum (OMPL's tolerance about 1e-6).
+        bool fails = false;
+        const double rLeft = std::hypot(d + sa, -ca), rRight = std::hypot(d - sa, ca);
+        const auto word = [&fails](double t, double q, double r)
+        {
+            const double gt = roundedAway(t), gq = roundedAway(q);
+            if (gt * (r + 1.0) > 1.8e-6 || gt + gq > 0.9e-6)
+                fails = true;
+        };
+        double tmp = 2.0 + d * d - 2.0 * (cab - d * (sa - sb)); // LSL
+        if (tmp >= -1e-7)
+        {
+            const double theta = std::atan2(cb - ca, d + sa - sb);
+            word(theta - a, b - theta, rLeft);
+        }
+        tmp = 2.0 + d * d - 2.0 * (cab - d * (sb - sa)); // RSR
+        if (tmp >= -1e-7)
+        {
+            const double theta = std::atan2(ca - cb, d - sa + sb);
+            word(a - theta, theta - b, rRight);
+        }
+        tmp = d * d - 2.0 + 2.0 * (cab - d * (sa + sb)); // RSL
+        if (tmp >= -1e-7)
+        {
+            const double p = std::sqrt(std::max(tmp, 0.0));
+            const double theta = std::atan2(ca + cb, d - sa - sb) - std::atan2(2.0, p);
+            word(a - theta, b - theta, rRight);
+        }
+        tmp = d * d - 2.0 + 2.0 * (cab + d * (sa + sb)); // LSR
+        if (tmp >= -1e-7)
+        {
+            const double p = std::sqrt(std::max(tmp, 0.0));
+            const double theta = std::atan2(-ca - cb, d + sa + sb) - std::atan2(-2.0, p);
+            word(theta - a, theta - b, rLeft);
+        }
+        tmp = 0.125 * (6.0 - d * d + 2.0 * (cab + d * (sa - sb))); // RLR
+        if (std::fabs(tmp) <= 1.0)
+        {
+            const double p = kTwoPi - std::acos(tmp);
+            const double t = a - std::atan2(ca - cb, d - sa + sb) + 0.5 * p;
+            word(t, a - b - omplWrap(t) + p, rRight);
+        }
+        tmp = 0.125 * (6.0 - d * d + 2.0 * (cab - d * (sa - sb))); // LRL
+        if (std::fabs(tmp) <= 1.0)
+        {
+            const double p = kTwoPi - std::acos(tmp);
+            const double t = std::atan2(cb - ca, d + sa - sb) - a + 0.5 * p;
+            word(t, b - a - omplWrap(t) + p, rLeft);
+        }
+        return fails;
     }
 } // namespace mhplan

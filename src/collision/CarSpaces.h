@@ -4,9 +4,27 @@
 #define MHPLAN_CAR_SPACES_H
 
 #include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 namespace mhplan
 {
+    namespace detail
+    {
+        /** \brief The turning radius of OMPL's car spaces (a protected member, read through a derived
+            class). */
+        struct DubinsRadius : ompl::base::DubinsStateSpace
+        {
+            static double of(const ompl::base::DubinsStateSpace &s) { return s.*(&DubinsRadius::rho_); }
+        };
+        struct ReedsSheppRadius : ompl::base::ReedsSheppStateSpace
+        {
+            static double of(const ompl::base::ReedsSheppStateSpace &s)
+            {
+                return s.*(&ReedsSheppRadius::rho_);
+            }
+        };
+    } // namespace detail
+
     /** \brief OMPL's DubinsStateSpace (forward only, asymmetric distance) with mhplan's own shortest-path
         word selection. OMPL 1.5.2's dubins() asserts (and Debian's build keeps assertions, so the process
         aborts) when the goal lies almost on one of the start's turning circles: it takes p = 0 for a
@@ -18,8 +36,10 @@ namespace mhplan
     class SafeDubinsStateSpace : public ompl::base::DubinsStateSpace
     {
       public:
-        explicit SafeDubinsStateSpace(double turningRadius)
-            : ompl::base::DubinsStateSpace(turningRadius, false)
+        /** \brief \e isSymmetric as OMPL's: the distance is the shorter of the two directions' paths, and
+            interpolation follows that path. */
+        explicit SafeDubinsStateSpace(double turningRadius, bool isSymmetric = false)
+            : ompl::base::DubinsStateSpace(turningRadius, isSymmetric)
         {
         }
 
@@ -35,6 +55,17 @@ namespace mhplan
 
         double turningRadius() const { return rho_; }
     };
+
+    /** \brief Whether OMPL 1.5.2's DubinsStateSpace::dubins(\e state1, \e state2) (turning radius \e rho)
+        may fail one of its assertions, which Debian's build keeps, so that the process aborts
+        (docs/spaces.md, "OMPL's Dubins assertions"). OMPL wraps each word's turn angles into [0, 2 pi) but
+        takes a turn within 5e-7 of a whole turn short as 0; the word then misses the goal by about the
+        dropped angle times its lever (the straight part's length and more), and the assertions compare the
+        end with the goal to 2e-6 turning radii. This finds every word whose first turn, or whose two turns
+        together, would be so rounded within twice OMPL's window (1e-6) and whose error could then exceed half
+        of OMPL's tolerance: conservative. Distance and interpolation of OMPL's space evaluate both
+        directions only when symmetric; DubinsGuard (ompl_planners/common) asks both. */
+    bool omplDubinsMayFail(const ompl::base::State *state1, const ompl::base::State *state2, double rho);
 } // namespace mhplan
 
 #endif
