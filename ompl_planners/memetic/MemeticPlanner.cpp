@@ -234,9 +234,15 @@ namespace mhplan
         // only to bring the path near its class's tight path under the margin, which the elite polish then
         // tightens precisely; every strict verdict of a move costs the margin's close checks
         // (docs/variants.md).
+        // Restored however tighten() ends (a user's checker may throw out of it).
+        struct BisectionsRestore
+        {
+            MemeticToolkit &toolkit;
+            unsigned int bisections;
+            ~BisectionsRestore() { toolkit.setBisections(bisections); }
+        } restore{*toolkit_, bisections_};
         toolkit_->setBisections(std::min(bisections_, kRetryBisections));
         toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
-        toolkit_->setBisections(bisections_);
         // The margin and the fine check, as every reported path (docs/variants.md, "The fine check").
         return !stopRequested() && toolkit_->makeStrict(out, stop_);
     }

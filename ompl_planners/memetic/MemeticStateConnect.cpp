@@ -8,6 +8,7 @@
 #include <ompl/datastructures/NearestNeighborsGNATNoThreadSafety.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 
@@ -95,8 +96,11 @@ namespace mhplan
         // below (docs/spaces.md): states whose bound exceeds the best distance so far are skipped, which
         // saves most of the Dubins or Reeds-Shepp distances of a scan.
         std::vector<double> bound;
+        // The scans also leave the nearest state's distance in \e nearestD (GNAT does not: NaN).
+        double nearestD = 0.0;
         auto nearest = [&](int t, const StatePoint &target) -> std::size_t
         {
+            nearestD = std::numeric_limits<double>::quiet_NaN();
             if (c.nn[t])
                 return c.nn[t]->nearest(kQuery);
             const std::vector<Connection::Node> &tree = c.trees[t];
@@ -117,6 +121,7 @@ namespace mhplan
                         best = i;
                     }
                 }
+                nearestD = bestD;
                 return best;
             }
             bound.resize(tree.size());
@@ -152,6 +157,7 @@ namespace mhplan
                     best = i;
                 }
             }
+            nearestD = bestD;
             return best;
         };
         const StatePoint to = c.trees[1][0].x; // the goal tree's root
@@ -163,8 +169,10 @@ namespace mhplan
             toState(target, c.query);
             const std::size_t n = from != kNoParent ? from : nearest(t, target);
             const StatePoint from0 = c.trees[t][n].x;
-            const double d = t == 0 ? dubins_.distance(*si_, c.trees[t][n].s, c.query)
-                                    : dubins_.distance(*si_, c.query, c.trees[t][n].s);
+            // The scan's distance where it found n (one distance less per extension).
+            const double d = from == kNoParent && !std::isnan(nearestD) ? nearestD
+                             : t == 0 ? dubins_.distance(*si_, c.trees[t][n].s, c.query)
+                                      : dubins_.distance(*si_, c.query, c.trees[t][n].s);
             const bool reach = d <= range;
             StatePoint q;
             if (reach)
