@@ -190,9 +190,10 @@ namespace mhplan
         MemeticStateToolkit &tk = *stateToolkit_;
         const double range = 0.2 * tk.extent();
         const MemeticStateToolkit::Sampler uniform = [&tk](StatePoint &x) { return tk.sampleUniform(x); };
-        // Every other connection after the first passes a valid state drawn uniformly: another homotopy
-        // class by construction.
-        bool viaWalk = walks_ > 0 && rng_.uniform01() < 0.5;
+        // Once a path is known, every other connection passes a valid state drawn uniformly: another
+        // homotopy class by construction. Not before: the two connections of such a walk have half the
+        // budget each, and one of them must still find the passage (docs/spaces.md, "Budgets").
+        bool viaWalk = haveSolution_ && rng_.uniform01() < 0.5;
         ++walks_;
         StatePoint via;
         if (viaWalk)
