@@ -279,6 +279,24 @@ TEST(RigidBody, SafeDubinsAgreesWithOmplAndSurvivesItsAssertion)
         const Pose2 goal = statePose(b);
         EXPECT_NEAR(std::hypot(end.x - goal.x, end.y - goal.y), 0.0, 1e-6) << i;
     }
+    // The symmetric variant (the shorter of the two directions), as OMPL's: distance and interpolation.
+    auto safeSym = std::make_shared<SafeDubinsStateSpace>(rho, true);
+    auto omplSym = std::make_shared<ob::DubinsStateSpace>(rho, true);
+    ob::State *t = omplSym->allocState();
+    for (int i = 0; i < 1000; ++i)
+    {
+        setStatePose(a, {rng.uniformReal(-5, 5), rng.uniformReal(-5, 5), rng.uniformReal(-kPi, kPi)});
+        setStatePose(b, {rng.uniformReal(-5, 5), rng.uniformReal(-5, 5), rng.uniformReal(-kPi, kPi)});
+        if (omplDubinsMayFail(a, b, rho) || omplDubinsMayFail(b, a, rho))
+            continue;
+        ASSERT_NEAR(safeSym->distance(a, b), omplSym->distance(a, b), 1e-9) << i;
+        ASSERT_NEAR(safeSym->distance(a, b), safeSym->distance(b, a), 1e-9) << i;
+        safeSym->interpolate(a, b, 0.3, s);
+        omplSym->interpolate(a, b, 0.3, t);
+        const Pose2 p = statePose(s), q = statePose(t);
+        EXPECT_NEAR(std::hypot(p.x - q.x, p.y - q.y), 0.0, 1e-6) << i;
+    }
+    omplSym->freeState(t);
     // A goal on the start's right turning circle: OMPL 1.5.2's dubins() aborts on an assertion near here.
     for (double phi : {0.5, 1.0, 2.0, 3.0})
     {

@@ -197,9 +197,10 @@ namespace mhplan
             path = shortestPath(from, to);
             if (isSymmetric_)
             {
-                // OMPL's rule: the path from \e to back, followed backwards, where it is shorter.
+                // OMPL's rule: the path from \e to back, followed backwards, unless the forward one is
+                // shorter (ties go backwards, as in OMPL).
                 DubinsPath back = shortestPath(to, from);
-                if (back.length() < path.length())
+                if (!(path.length() < back.length()))
                 {
                     back.reverse_ = true;
                     path = back;
