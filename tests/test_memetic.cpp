@@ -6,6 +6,7 @@
    iteration budget. Budgets are generations (never wall-clock), so the results are deterministic. */
 #include "src/collision/Collision.h"
 #include "src/io/Generators.h"
+#include "ompl_planners/memetic/MemeticGenetic.h"
 #include "ompl_planners/memetic/MemeticToolkit.h"
 #include "src/optimum/Optimum.h"
 #include "ompl_planners/common/PopulationPlanner.h"
@@ -14,6 +15,9 @@
 #include "src/collision/Validity.h"
 
 #include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/objectives/StateCostIntegralObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
@@ -406,4 +410,76 @@ TEST(GridSegments, NearlyOnAGridLineBetweenTwoBlockedCellsIsInvalid)
     EXPECT_FALSE(model->isValid(Vec2(18.0, 8.5)));
     EXPECT_FALSE(model->segmentValid(a, b));
     EXPECT_FALSE(model->segmentValid(Vec2(18.0, 8.0), Vec2(18.0, 9.0))); // exactly on the line
+}
+
+namespace
+{
+    /** A user's plane whose distance is half the Euclidean one (a map in other units). */
+    class HalvedPlane : public ob::RealVectorStateSpace
+    {
+      public:
+        HalvedPlane() : ob::RealVectorStateSpace(2) {}
+        double distance(const ob::State *a, const ob::State *b) const override
+        {
+            return 0.5 * ob::RealVectorStateSpace::distance(a, b);
+        }
+    };
+
+    struct BoundProbe : MemeticGenetic
+    {
+        using MemeticGenetic::MemeticGenetic;
+        using MemeticPlanner::informedBound;
+    };
+} // namespace
+
+TEST(MemeticInformedSet, BoundsTheRoadmapOnlyWhereTheSpaceMeasuresThePlane)
+{
+    // The planar roadmap prunes samples q with |start q| + |q goal| (in the plane) not below the incumbent's
+    // cost. That bound holds only when the cost is path length in the plane's metric: on a user's subclass of
+    // RealVectorStateSpace with another distance (here half the plane's, so the incumbent's cost is half its
+    // plane length) it would prune every sample; with another objective it bounds nothing.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    struct Case
+    {
+        bool halved, length;
+    };
+    for (const Case c : {Case{false, true}, Case{true, true}, Case{false, false}})
+    {
+        std::shared_ptr<ob::RealVectorStateSpace> space =
+            c.halved ? std::make_shared<HalvedPlane>() : std::make_shared<ob::RealVectorStateSpace>(2);
+        space->setBounds(0.0, 10.0);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker(
+            [](const ob::State *s)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                return std::hypot(v[0] - 5.0, v[1] - 5.0) > 1.5;
+            });
+        si->setup();
+        auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+        ob::ScopedState<> start(space), goal(space);
+        start[0] = start[1] = 1.0;
+        goal[0] = goal[1] = 9.0;
+        pdef->setStartAndGoalStates(start, goal);
+        if (c.length)
+            pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+        else
+            pdef->setOptimizationObjective(std::make_shared<ob::StateCostIntegralObjective>(si, true));
+        BoundProbe planner(si);
+        planner.setProblemDefinition(pdef);
+        planner.setup();
+        ASSERT_EQ(planner.solve(ob::timedPlannerTerminationCondition(0.3)),
+                  ob::PlannerStatus::EXACT_SOLUTION);
+        const double bound = planner.informedBound();
+        if (c.length && !c.halved)
+        {
+            const double cost = pdef->getSolutionPath()->cost(pdef->getOptimizationObjective()).value();
+            EXPECT_NEAR(bound, cost, 1e-9 * cost);
+            // The plane's bound: the shortest way round the disc is below it, the straight line too.
+            EXPECT_GT(bound, std::hypot(8.0, 8.0));
+        }
+        else
+            EXPECT_TRUE(std::isinf(bound))
+                << "halved " << c.halved << ", length " << c.length << ": " << bound;
+    }
 }

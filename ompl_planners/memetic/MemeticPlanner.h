@@ -163,6 +163,10 @@ namespace mhplan
         unsigned long restartCount() const { return restarts_; }
 
       protected:
+        /** \brief The incumbent's cost when the objective is path length and the space measures it as the
+            roadmap does (then the informed set bounds every shorter path), else infinity. */
+        double informedBound() const;
+
         struct Individual
         {
             MemeticPath path;
@@ -255,9 +259,6 @@ namespace mhplan
                                      const std::function<bool(unsigned int)> &route);
         /** \brief The first path is reported at once; then the coarse local search and the evaluation. */
         bool finishWalk(Individual &out);
-        /** \brief The incumbent's cost when the objective is path length (then the informed set bounds
-            every shorter path), else infinity. */
-        double informedBound() const;
         void polishElite();
         /** \brief \e path made to pass the validator margin (MemeticToolkit::makeStrict), retried once with
             every segment halved; false when it does not pass. */
