@@ -27,8 +27,9 @@ namespace mhplan
 
     /** \brief OMPL's DubinsStateSpace (forward only, asymmetric distance) with mhplan's own shortest-path
         word selection. OMPL 1.5.2's dubins() asserts (and Debian's build keeps assertions, so the process
-        aborts) when the goal lies almost on one of the start's turning circles: it takes p = 0 for a
-        slightly negative p^2 and then checks the end point to 2e-6. Here every one of the six words (LSL,
+        aborts) on some finite pairs: it rounds a first turn within 5e-7 of a whole turn to 0 and then checks
+        the word's end to 2e-6 (omplDubinsMayFail() below; docs/spaces.md, "OMPL's Dubins assertions"). Here
+        every one of the six words (LSL,
         RSR, LSR, RSL, RLR, LRL, and the single left or right arc) is computed by the closed forms of Shkel
        and Lumelsky, its end pose is followed from the start and compared with the goal, and the shortest word
        that arrives (within 1e-6 of the turning radius) is taken; OMPL's own interpolation then follows it.
