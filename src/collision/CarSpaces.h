@@ -29,11 +29,11 @@ namespace mhplan
         word selection. OMPL 1.5.2's dubins() asserts (and Debian's build keeps assertions, so the process
         aborts) on some finite pairs: it rounds a first turn within 5e-7 of a whole turn to 0 and then checks
         the word's end to 2e-6 (omplDubinsMayFail() below; docs/spaces.md, "OMPL's Dubins assertions"). Here
-        every one of the six words (LSL,
-        RSR, LSR, RSL, RLR, LRL, and the single left or right arc) is computed by the closed forms of Shkel
-       and Lumelsky, its end pose is followed from the start and compared with the goal, and the shortest word
-       that arrives (within 1e-6 of the turning radius) is taken; OMPL's own interpolation then follows it.
-       Distances equal OMPL's wherever OMPL's do not abort (tests/test_rigid_body.cpp checks it). */
+        every one of the six words (LSL, RSR, LSR, RSL, RLR, LRL, and the single left or right arc) is
+        computed by the closed forms of Shkel and Lumelsky, its end pose is followed from the start and
+        compared with the goal, and the shortest word that arrives (within 1e-6 of the turning radius) is
+        taken; OMPL's own interpolation then follows it. Distances equal OMPL's wherever OMPL's do not abort
+        (tests/test_rigid_body.cpp checks it). */
     class SafeDubinsStateSpace : public ompl::base::DubinsStateSpace
     {
       public:
