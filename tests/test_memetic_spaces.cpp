@@ -421,6 +421,46 @@ TEST(MemeticStateMode, SameSeedSamePathAndCountedChecksOnDubins)
     }
 }
 
+TEST(MemeticStateMode, OnOmplsOwnDubinsSpaceAsAUserBuildsIt)
+{
+    // The car problem above on OMPL's own DubinsStateSpace (not mhplan's SafeDubinsStateSpace), forward only
+    // and its symmetric variant, with OMPL's DubinsMotionValidator: as a user's program would build it. Every
+    // memetic planner returns an exact path that OMPL itself measures, checks and interpolates (all of which
+    // call OMPL's dubins() on its consecutive states, so a pair OMPL aborts on would end the test binary;
+    // docs/spaces.md, "OMPL's Dubins assertions"), and that passes the independent dense check. Before this
+    // test, LRSMA-MEM's and MGO-MEM's paths (forward only) failed PathGeometric::check(): a motion of 0.25
+    // the validator refuses, a piece of a reference motion it had accepted whole, reported unchecked.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    const auto circles = test::carCircles();
+    for (const bool symmetric : {false, true})
+        for (const std::string &name : test::ofFamily("memetic"))
+        {
+            auto space = std::make_shared<ob::DubinsStateSpace>(1.0, symmetric);
+            og::SimpleSetupPtr ss = test::se2Problem(
+                space,
+                [circles](const ob::State *st)
+                { return test::pointAmongCircles(st, circles, test::kCheckerMargin); },
+                {1.0, 1.0, 0.0}, {9.0, 9.0, 0.0}, 0.005);
+            const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+            si->setMotionValidator(std::make_shared<ob::DubinsMotionValidator>(si));
+            si->setup();
+            ob::PlannerPtr p = builtinPlanners().create(
+                name, si, {{"seed", "5"}, {"max_iterations", "2"}, {"population_size", "4"}});
+            ss->setPlanner(p);
+            ss->setup();
+            ASSERT_EQ(p->solve(never()), ob::PlannerStatus::EXACT_SOLUTION)
+                << name << " symmetric " << symmetric;
+            og::PathGeometric path = ss->getSolutionPath();
+            EXPECT_TRUE(path.check()) << name << " symmetric " << symmetric;
+            EXPECT_GT(path.length(), std::hypot(8.0, 8.0)) << name;
+            EXPECT_TRUE(test::denseValid(path, [&circles](const ob::State *st)
+                                         { return test::pointAmongCircles(st, circles, 0.0); }))
+                << name << " symmetric " << symmetric;
+            path.interpolate(200);
+            EXPECT_TRUE(std::isfinite(path.length())) << name;
+        }
+}
+
 namespace
 {
     /** \brief The slot's stick as a user's checker that computes clearance (OMPL.app's FCL checker does):

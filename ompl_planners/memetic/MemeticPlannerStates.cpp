@@ -98,6 +98,14 @@ namespace mhplan
         const double c = stateToolkit_->cost(path);
         if (!improvesOn(c))
             return c;
+        // Recorded only when the motion validator accepts every motion (cached verdicts: nearly free). An
+        // operator's path may keep a piece of a motion the validator accepted whole (the offset planners'
+        // way back along the reference from one of its resampled states, a coarse pass's report before the
+        // pass's last check), and a sampling validator may refuse the piece: such a path was reported, and
+        // OMPL's PathGeometric::check() refused it (tests/test_memetic_spaces.cpp,
+        // OnOmplsOwnDubinsSpaceAsAUserBuildsIt).
+        if (!stateToolkit_->pathValid(path))
+            return std::numeric_limits<double>::infinity();
         const StatePath *reported = &path;
         StatePath strict;
         if (stateToolkit_->strictNeeded())
