@@ -21,13 +21,16 @@
 #include <ompl/base/terminationconditions/IterationTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <vector>
 
 using namespace mhplan;
 namespace ob = ompl::base;
@@ -481,5 +484,94 @@ TEST(MemeticInformedSet, BoundsTheRoadmapOnlyWhereTheSpaceMeasuresThePlane)
         else
             EXPECT_TRUE(std::isinf(bound))
                 << "halved " << c.halved << ", length " << c.length << ": " << bound;
+    }
+}
+
+namespace
+{
+    /** A user's own sampling motion validator (not OMPL's DiscreteMotionValidator): the end state and 7
+       states at fixed fractions of every motion, however long. A piece of a motion it accepts is sampled
+       elsewhere and may be refused. */
+    class EighthsValidator : public ob::MotionValidator
+    {
+      public:
+        explicit EighthsValidator(const ob::SpaceInformationPtr &si) : ob::MotionValidator(si) {}
+        bool checkMotion(const ob::State *s1, const ob::State *s2) const override
+        {
+            if (!si_->isValid(s2))
+                return false;
+            ob::State *s = si_->allocState();
+            bool ok = true;
+            for (int k = 1; k < 8 && ok; ++k)
+            {
+                si_->getStateSpace()->interpolate(s1, s2, k / 8.0, s);
+                ok = si_->isValid(s);
+            }
+            si_->freeState(s);
+            ok ? ++valid_ : ++invalid_;
+            return ok;
+        }
+        bool checkMotion(const ob::State *s1, const ob::State *s2,
+                         std::pair<ob::State *, double> &lastValid) const override
+        {
+            const bool ok = checkMotion(s1, s2);
+            if (!ok)
+            {
+                lastValid.second = 0.0;
+                if (lastValid.first != nullptr)
+                    si_->copyState(lastValid.first, s1);
+            }
+            return ok;
+        }
+    };
+} // namespace
+
+TEST(MemeticPlanar, EveryReportedMotionPassesAUsersOwnSamplingValidator)
+{
+    // The plane with 40 small discs, a point checker and a user's own sampling validator: every memetic
+    // planner's exact path must pass OMPL's PathGeometric::check(), i.e. that validator on every motion as
+    // returned. The state mode reported pieces of accepted motions unchecked (tests/test_memetic_spaces.cpp,
+    // OnOmplsOwnDubinsSpaceAsAUserBuildsIt); the planar mode passed this before and after that fix (seeds 1-8
+    // at 15 generations as well), and this keeps it so.
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    ompl::RNG placement(17);
+    std::vector<std::array<double, 3>> discs;
+    while (discs.size() < 40)
+    {
+        const std::array<double, 3> d{placement.uniformReal(3, 17), placement.uniformReal(3, 17),
+                                      placement.uniformReal(0.2, 0.6)};
+        discs.push_back(d);
+    }
+    for (const std::string name : {"GA-MEM", "SMA-MEM", "LRSMA-MEM", "MGO-MEM"})
+    {
+        auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+        space->setBounds(0.0, 20.0);
+        auto si = std::make_shared<ob::SpaceInformation>(space);
+        si->setStateValidityChecker(
+            [&discs](const ob::State *s)
+            {
+                const double *v = s->as<ob::RealVectorStateSpace::StateType>()->values;
+                for (const auto &d : discs)
+                    if (std::hypot(v[0] - d[0], v[1] - d[1]) <= d[2])
+                        return false;
+                return true;
+            });
+        si->setMotionValidator(std::make_shared<EighthsValidator>(si));
+        si->setup();
+        auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+        ob::ScopedState<> start(space), goal(space);
+        start[0] = start[1] = 1.0;
+        goal[0] = goal[1] = 19.0;
+        pdef->setStartAndGoalStates(start, goal);
+        pdef->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+        ob::PlannerPtr p = builtinPlanners().create(name, si, {{"seed", "3"}, {"max_iterations", "4"}});
+        p->setProblemDefinition(pdef);
+        p->setup();
+        ASSERT_EQ(p->solve(ob::PlannerTerminationCondition([] { return false; })),
+                  ob::PlannerStatus::EXACT_SOLUTION)
+            << name;
+        const auto path = std::dynamic_pointer_cast<og::PathGeometric>(pdef->getSolutionPath());
+        ASSERT_TRUE(path) << name;
+        EXPECT_TRUE(path->check()) << name << ": a returned motion the validator refuses";
     }
 }
