@@ -315,7 +315,7 @@ int main(int argc, char **argv)
             {
                 const double v = parseParameter(range, argv[i + 1]);
                 checkParameterRange(range.name, v, range.lo, range.hi);
-                if (range.step == 1.0 && v != std::floor(v))
+                if (key == "--seeds" && v != std::floor(v))
                     throw std::invalid_argument("parameter '--seeds' must be a whole number; got '" +
                                                 std::string(argv[i + 1]) + "'");
                 if (key == "--time")

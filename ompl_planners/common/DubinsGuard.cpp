@@ -17,15 +17,16 @@ namespace mhplan
         safeSpace_ = std::make_shared<SafeDubinsStateSpace>(radius_, symmetric_);
     }
 
-    double DubinsGuard::distance(const ob::SpaceInformation &si, const ob::State *a, const ob::State *b) const
+    double DubinsGuard::distance(const ob::SpaceInformation &si, const ob::State *a, const ob::State *b,
+                                 bool isSafe) const
     {
-        return safe(a, b) ? si.distance(a, b) : safeSpace_->distance(a, b);
+        return isSafe ? si.distance(a, b) : safeSpace_->distance(a, b);
     }
 
     void DubinsGuard::interpolate(const ob::SpaceInformation &si, const ob::State *a, const ob::State *b,
-                                  double t, ob::State *out) const
+                                  double t, ob::State *out, bool isSafe) const
     {
-        if (safe(a, b))
+        if (isSafe)
             si.getStateSpace()->interpolate(a, b, t, out);
         else
             safeSpace_->interpolate(a, b, t, out);

@@ -36,13 +36,23 @@ namespace mhplan
         }
 
         /** \brief The space's distance from \e a to \e b: OMPL's where it is safe, else the same metric by
-            SafeDubinsStateSpace. */
+            SafeDubinsStateSpace. \e isSafe: safe(a, b) where the caller has it already. */
         double distance(const ompl::base::SpaceInformation &si, const ompl::base::State *a,
-                        const ompl::base::State *b) const;
+                        const ompl::base::State *b) const
+        {
+            return distance(si, a, b, safe(a, b));
+        }
+        double distance(const ompl::base::SpaceInformation &si, const ompl::base::State *a,
+                        const ompl::base::State *b, bool isSafe) const;
 
         /** \brief The space's interpolation, likewise. */
         void interpolate(const ompl::base::SpaceInformation &si, const ompl::base::State *a,
-                         const ompl::base::State *b, double t, ompl::base::State *out) const;
+                         const ompl::base::State *b, double t, ompl::base::State *out) const
+        {
+            interpolate(si, a, b, t, out, safe(a, b));
+        }
+        void interpolate(const ompl::base::SpaceInformation &si, const ompl::base::State *a,
+                         const ompl::base::State *b, double t, ompl::base::State *out, bool isSafe) const;
 
         /** \brief si.checkMotion(a, b), false for an unsafe pair. */
         bool checkMotion(const ompl::base::SpaceInformation &si, const ompl::base::State *a,

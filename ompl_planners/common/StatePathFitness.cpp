@@ -68,11 +68,11 @@ namespace mhplan
         decode(x);
         FitnessResult r;
         const std::size_t segments = path_.size() - 1;
-        safe_.assign(segments, 1);
+        safe_.resize(segments);
         for (std::size_t i = 0; i < segments; ++i)
         {
             safe_[i] = guard_.safe(path_[i], path_[i + 1]) ? 1 : 0;
-            r.length += guard_.distance(*si_, path_[i], path_[i + 1]);
+            r.length += guard_.distance(*si_, path_[i], path_[i + 1], safe_[i] != 0);
         }
 
         const ob::StateSpacePtr &space = si_->getStateSpace();
@@ -92,7 +92,7 @@ namespace mhplan
                 firstTime = true; // a new segment: its curve is computed at its first inner sample
             }
             if (safe_[i] == 0)
-                guard_.interpolate(*si_, path_[i], path_[i + 1], u, sample_);
+                guard_.interpolate(*si_, path_[i], path_[i + 1], u, sample_, false);
             else if (dubins_ != nullptr)
                 dubins_->interpolate(path_[i], path_[i + 1], u, firstTime, dubinsPath_, sample_);
             else if (reedsShepp_ != nullptr)

@@ -94,18 +94,18 @@ namespace mhplan
 
     double MemeticPlanner::evaluate(const StatePath &path)
     {
+        // A path counts (and is recorded) only when the motion validator accepts every motion as it stands
+        // (cached verdicts: nearly free). An operator's path may keep a piece of a motion the validator
+        // accepted whole (the offset planners' way back along the reference from one of its resampled
+        // states, a coarse pass's report before the pass's last check), and a sampling validator may refuse
+        // the piece: such a path was reported, and OMPL's PathGeometric::check() refused it
+        // (tests/test_memetic_spaces.cpp, OnOmplsOwnDubinsSpaceAsAUserBuildsIt).
+        if (!stateToolkit_->pathValid(path))
+            return std::numeric_limits<double>::infinity();
         ++evaluationCount_;
         const double c = stateToolkit_->cost(path);
         if (!improvesOn(c))
             return c;
-        // Recorded only when the motion validator accepts every motion (cached verdicts: nearly free). An
-        // operator's path may keep a piece of a motion the validator accepted whole (the offset planners'
-        // way back along the reference from one of its resampled states, a coarse pass's report before the
-        // pass's last check), and a sampling validator may refuse the piece: such a path was reported, and
-        // OMPL's PathGeometric::check() refused it (tests/test_memetic_spaces.cpp,
-        // OnOmplsOwnDubinsSpaceAsAUserBuildsIt).
-        if (!stateToolkit_->pathValid(path))
-            return std::numeric_limits<double>::infinity();
         const StatePath *reported = &path;
         StatePath strict;
         if (stateToolkit_->strictNeeded())
@@ -151,12 +151,8 @@ namespace mhplan
         if (stopRequested())
             return false;
         ind.states.swap(p);
-        // Every operator checks the motions it makes; this pass guards split motions under a sampling
-        // validator (which may refuse a piece of a motion it accepted). Cached: unchanged motions are free.
-        if (!tk.pathValid(ind.states))
-            ind.cost = std::numeric_limits<double>::infinity();
-        else
-            ind.cost = evaluate(ind.states);
+        // Infinite when the validator refuses a motion (evaluate(): a piece of a motion it accepted whole).
+        ind.cost = evaluate(ind.states);
         tk.resample(ind.states, 16, ind.stateSignature, nullptr);
         return true;
     }
@@ -177,15 +173,14 @@ namespace mhplan
 
     bool MemeticPlanner::walkStateIndividual(Individual &out)
     {
-        MemeticStateToolkit &tk = *stateToolkit_;
         if (!roadmapStateIndividual(out))
         {
             if (stopRequested() || !connectStateIndividual(out))
                 return false;
         }
-        if (!haveSolution_ && tk.pathValid(out.states))
+        if (!haveSolution_)
         {
-            // The first path is reported at once, before its local search.
+            // The first path is reported at once, before its local search (evaluate() checks its motions).
             if (stopRequested())
                 return false;
             evaluate(out.states);

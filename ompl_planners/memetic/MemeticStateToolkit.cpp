@@ -119,16 +119,13 @@ namespace mhplan
         toState(b, b_);
         // The guard asked once for the pair, not at every sample.
         const bool safe = dubins_.safe(a_, b_);
-        const double l = safe ? si_->distance(a_, b_) : dubins_.distance(*si_, a_, b_);
-        const auto n = static_cast<unsigned long>(std::ceil(l / strictSpacing_));
+        const auto n =
+            static_cast<unsigned long>(std::ceil(dubins_.distance(*si_, a_, b_, safe) / strictSpacing_));
         double failure = -1.0;
         for (unsigned long k = 1; k < n && failure < 0.0; ++k)
         {
             const double t = double(k) / double(n);
-            if (safe)
-                si_->getStateSpace()->interpolate(a_, b_, t, c_);
-            else
-                dubins_.interpolate(*si_, a_, b_, t, c_);
+            dubins_.interpolate(*si_, a_, b_, t, c_, safe);
             ++stateChecks_;
             if (!si_->isValid(c_))
                 failure = t;
