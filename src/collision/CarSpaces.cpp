@@ -238,72 +238,6 @@ namespace mhplan
         {
             return cx > 0.0 && sx < -1e-10 && sx > -1e-6;
         }
-
-        /** The quick test before omplDubinsMayFail()'s exact one: false when no word's first turn (before
-            OMPL's wrap) lies just below a whole turn, found from each word's direction vector by products and
-            square roots instead of OMPL's atan2 and acos; true also where a word is degenerate (its vector
-            near zero, or its middle arc near a whole or half turn), where only the exact test can tell. */
-        bool nearRounding(double d, double ca, double sa, double cb, double sb)
-        {
-            const double cab = ca * cb + sa * sb;
-            // The angle theta of (vx, vy) less the angle whose cosine and sine are (cp, sp), as (cos, sin).
-            double ct = 0.0, st = 0.0;
-            const auto direction = [&](double vx, double vy, double cp, double sp)
-            {
-                const double n = std::sqrt(vx * vx + vy * vy);
-                if (n < 1e-7)
-                    return false;
-                ct = (vx * cp + vy * sp) / n;
-                st = (vy * cp - vx * sp) / n;
-                return true;
-            };
-            // First turns a - theta (right first) and theta - a (left first), plus h for the three-arc words.
-            const auto right = [&](double ch, double sh)
-            {
-                const double sy = sa * ct - ca * st, cy = ca * ct + sa * st;
-                return justBelowTurn(sy * ch + cy * sh, cy * ch - sy * sh);
-            };
-            const auto left = [&](double ch, double sh)
-            {
-                const double sy = st * ca - ct * sa, cy = ct * ca + st * sa;
-                return justBelowTurn(sy * ch + cy * sh, cy * ch - sy * sh);
-            };
-            const double lslX = d + sa - sb, lslY = cb - ca, rsrX = d - sa + sb, rsrY = ca - cb;
-            if (!direction(lslX, lslY, 1.0, 0.0) || left(1.0, 0.0)) // LSL
-                return true;
-            if (!direction(rsrX, rsrY, 1.0, 0.0) || right(1.0, 0.0)) // RSR
-                return true;
-            double tmp = d * d - 2.0 + 2.0 * (cab - d * (sa + sb)); // RSL: theta less atan2(2, p)
-            if (tmp >= -1e-7)
-            {
-                const double p = std::sqrt(std::max(tmp, 0.0)), n = std::sqrt(p * p + 4.0);
-                if (!direction(d - sa - sb, ca + cb, p / n, 2.0 / n) || right(1.0, 0.0))
-                    return true;
-            }
-            tmp = d * d - 2.0 + 2.0 * (cab + d * (sa + sb)); // LSR: theta less atan2(-2, p)
-            if (tmp >= -1e-7)
-            {
-                const double p = std::sqrt(std::max(tmp, 0.0)), n = std::sqrt(p * p + 4.0);
-                if (!direction(d + sa + sb, -ca - cb, p / n, -2.0 / n) || left(1.0, 0.0))
-                    return true;
-            }
-            // The three-arc words: p = 2 pi - acos(k), their first turn adds h = p / 2 = pi - acos(k) / 2.
-            tmp = 0.125 * (6.0 - d * d + 2.0 * (cab + d * (sa - sb))); // RLR
-            if (std::fabs(tmp) <= 1.0)
-            {
-                if (std::fabs(tmp) > 1.0 - 1e-9 || !direction(rsrX, rsrY, 1.0, 0.0) ||
-                    right(-std::sqrt(0.5 * (1.0 + tmp)), std::sqrt(0.5 * (1.0 - tmp))))
-                    return true;
-            }
-            tmp = 0.125 * (6.0 - d * d + 2.0 * (cab - d * (sa - sb))); // LRL
-            if (std::fabs(tmp) <= 1.0)
-            {
-                if (std::fabs(tmp) > 1.0 - 1e-9 || !direction(lslX, lslY, 1.0, 0.0) ||
-                    left(-std::sqrt(0.5 * (1.0 + tmp)), std::sqrt(0.5 * (1.0 - tmp))))
-                    return true;
-            }
-            return false;
-        }
     } // namespace
 
     bool omplDubinsMayFail(const ob::State *state1, const ob::State *state2, double rho)
@@ -322,63 +256,67 @@ namespace mhplan
         if (d < 1e-6 && std::fabs(a - b) < 1e-6)
             return false; // OMPL returns the empty word without computing any
         const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
-        if (d < 1e3 && !nearRounding(d, ca, sa, cb, sb))
-            return false;
         const double cab = ca * cb + sa * sb;
-        // Each word OMPL computes: its first turn's angle t before the wrap and its last turn's q. Where OMPL
-        // rounds t up to a whole turn by g, the rest of the word turns about the first turning circle's
-        // centre by g; OMPL asserts that the centre of the last circle (a turning radius from the goal) still
-        // lies where it should to 2e-6 in each coordinate, and it has moved by g times its distance from the
-        // first centre, at most r + 1 for r the first centre's distance from the goal: flagged from 1.8e-6.
-        // Rounding t and q together also turns the end's heading by their sum (OMPL's tolerance about 1e-6).
-        bool fails = false;
-        const double rLeft = std::hypot(d + sa, -ca), rRight = std::hypot(d - sa, ca);
-        const auto word = [&fails](double t, double q, double r)
+        // The six words OMPL computes, by Shkel and Lumelsky's closed forms: whether each exists (tmp), the
+        // vector whose angle theta gives its tangent (less atan2(psi, p) for the two words that change sides,
+        // plus p / 2 for the three-arc words, whose middle arc is p = 2 pi - acos(tmp)), and the directions
+        // of its first and last turns.
+        struct Word
         {
-            const double gt = roundedAway(t), gq = roundedAway(q);
-            if (gt * (r + 1.0) > 1.8e-6 || gt + gq > 0.9e-6)
-                fails = true;
+            bool arcs, leftFirst, leftLast;
+            double tmp, vx, vy, psi;
         };
-        double tmp = 2.0 + d * d - 2.0 * (cab - d * (sa - sb)); // LSL
-        if (tmp >= -1e-7)
+        const double lslX = d + sa - sb, lslY = cb - ca, rsrX = d - sa + sb, rsrY = ca - cb;
+        const Word words[6] = {
+            {false, true, true, 2.0 + d * d - 2.0 * (cab - d * (sa - sb)), lslX, lslY, 0.0},            // LSL
+            {false, false, false, 2.0 + d * d - 2.0 * (cab - d * (sb - sa)), rsrX, rsrY, 0.0},          // RSR
+            {false, false, true, d * d - 2.0 + 2.0 * (cab - d * (sa + sb)), d - sa - sb, ca + cb, 2.0}, // RSL
+            {false, true, false, d * d - 2.0 + 2.0 * (cab + d * (sa + sb)), d + sa + sb, -ca - cb,
+             -2.0},                                                                                     // LSR
+            {true, false, false, 0.125 * (6.0 - d * d + 2.0 * (cab + d * (sa - sb))), rsrX, rsrY, 0.0}, // RLR
+            {true, true, true, 0.125 * (6.0 - d * d + 2.0 * (cab - d * (sa - sb))), lslX, lslY, 0.0}};  // LRL
+        // Where OMPL rounds a word's first turn t up to a whole turn by g, the rest of the word turns about
+        // the first turning circle's centre by g; OMPL asserts that the centre of the last circle (a turning
+        // radius from the goal) still lies where it should to 2e-6 in each coordinate, and it has moved by g
+        // times its distance from the first centre, at most r + 1 for r the first centre's distance from the
+        // goal: flagged from 1.8e-6. Rounding t and the last turn q together also turns the end's heading by
+        // their sum (OMPL's tolerance about 1e-6).
+        for (const Word &w : words)
         {
-            const double theta = std::atan2(cb - ca, d + sa - sb);
-            word(theta - a, b - theta, rLeft);
+            if (w.arcs ? !(std::fabs(w.tmp) <= 1.0) : !(w.tmp >= -1e-7))
+                continue; // OMPL does not compute this word
+            // The straight part's length where the quick test needs it (the words that change sides).
+            const double ps = w.arcs || w.psi == 0.0 ? 0.0 : std::sqrt(std::max(w.tmp, 0.0));
+            // The quick test first: the first turn's cosine and sine from the vector by products and square
+            // roots; only a turn between 1e-10 and 1e-6 below a whole turn, or a degenerate word (its vector
+            // near zero, its middle arc near a whole or half turn), needs the exact angle (atan2, acos). Far
+            // goals (d >= 1e3, where 1e-10 times the lever may matter) always take the exact test.
+            const double n = std::sqrt(w.vx * w.vx + w.vy * w.vy);
+            if (d < 1e3 && n >= 1e-7 && !(w.arcs && std::fabs(w.tmp) > 1.0 - 1e-9))
+            {
+                const double np = w.psi != 0.0 ? std::sqrt(ps * ps + 4.0) : 1.0;
+                const double cp = w.psi != 0.0 ? ps / np : 1.0, sp = w.psi / np;
+                const double ct = (w.vx * cp + w.vy * sp) / n, st = (w.vy * cp - w.vx * sp) / n;
+                // t = theta - a (left first) or a - theta, plus h = p / 2 = pi - acos(tmp) / 2 for three
+                // arcs.
+                const double sy = w.leftFirst ? st * ca - ct * sa : sa * ct - ca * st;
+                const double cy = ct * ca + st * sa;
+                const double ch = w.arcs ? -std::sqrt(0.5 * (1.0 + w.tmp)) : 1.0;
+                const double sh = w.arcs ? std::sqrt(0.5 * (1.0 - w.tmp)) : 0.0;
+                const double sx = sy * ch + cy * sh, cx = cy * ch - sy * sh;
+                if (!justBelowTurn(sx, cx))
+                    continue;
+            }
+            const double p = w.arcs ? kTwoPi - std::acos(w.tmp) : std::sqrt(std::max(w.tmp, 0.0));
+            const double theta = std::atan2(w.vy, w.vx) - (w.psi != 0.0 ? std::atan2(w.psi, p) : 0.0);
+            const double t = (w.leftFirst ? theta - a : a - theta) + (w.arcs ? 0.5 * p : 0.0);
+            const double q = w.arcs ? (w.leftFirst ? b - a : a - b) - omplWrap(t) + p
+                                    : (w.leftLast ? b - theta : theta - b);
+            const double gt = roundedAway(t), gq = roundedAway(q);
+            const double r = w.leftFirst ? std::hypot(d + sa, -ca) : std::hypot(d - sa, ca);
+            if (gt * (r + 1.0) > 1.8e-6 || gt + gq > 0.9e-6)
+                return true;
         }
-        tmp = 2.0 + d * d - 2.0 * (cab - d * (sb - sa)); // RSR
-        if (tmp >= -1e-7)
-        {
-            const double theta = std::atan2(ca - cb, d - sa + sb);
-            word(a - theta, theta - b, rRight);
-        }
-        tmp = d * d - 2.0 + 2.0 * (cab - d * (sa + sb)); // RSL
-        if (tmp >= -1e-7)
-        {
-            const double p = std::sqrt(std::max(tmp, 0.0));
-            const double theta = std::atan2(ca + cb, d - sa - sb) - std::atan2(2.0, p);
-            word(a - theta, b - theta, rRight);
-        }
-        tmp = d * d - 2.0 + 2.0 * (cab + d * (sa + sb)); // LSR
-        if (tmp >= -1e-7)
-        {
-            const double p = std::sqrt(std::max(tmp, 0.0));
-            const double theta = std::atan2(-ca - cb, d + sa + sb) - std::atan2(-2.0, p);
-            word(theta - a, theta - b, rLeft);
-        }
-        tmp = 0.125 * (6.0 - d * d + 2.0 * (cab + d * (sa - sb))); // RLR
-        if (std::fabs(tmp) <= 1.0)
-        {
-            const double p = kTwoPi - std::acos(tmp);
-            const double t = a - std::atan2(ca - cb, d - sa + sb) + 0.5 * p;
-            word(t, a - b - omplWrap(t) + p, rRight);
-        }
-        tmp = 0.125 * (6.0 - d * d + 2.0 * (cab - d * (sa - sb))); // LRL
-        if (std::fabs(tmp) <= 1.0)
-        {
-            const double p = kTwoPi - std::acos(tmp);
-            const double t = std::atan2(cb - ca, d + sa - sb) - a + 0.5 * p;
-            word(t, b - a - omplWrap(t) + p, rLeft);
-        }
-        return fails;
+        return false;
     }
 } // namespace mhplan
