@@ -299,3 +299,81 @@ TEST(MemeticMargin, TheSearchsVerdictSeesAWallNextToASegmentsEnd)
     // A motion clear of the wall's ends is still the validator's business alone beyond s from its ends.
     EXPECT_TRUE(tk.motionValid(Vec2{x0, 12.0}, Vec2{19.0, 12.0}));
 }
+
+TEST(MemeticMargin, APathThroughAPinchIsRefusedAndItsRefusedSegmentsAreCounted)
+{
+    // Two squares touching at one corner, (10, 10): a loose path along the other diagonal passes through the
+    // touching point, between the validator's samples. No push of the margin undoes that (the way round
+    // either square is a metre away), so makeStrict() refuses the path and counts the segments the margin
+    // still refuses: the planners skip the halved retry when there are many (a loose path through a maze's
+    // pinches; docs/variants.md, "Checks"). A path round both squares passes with none counted.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    og::SimpleSetupPtr ss = test::planarAppProblem(
+        [&](double x, double y)
+        {
+            const bool closed = (x >= 9.0 && x <= 10.0 && y >= 9.0 && y <= 10.0) ||
+                                (x >= 10.0 && x <= 11.0 && y >= 10.0 && y <= 11.0);
+            return !closed;
+        },
+        0.002, {5.0, 15.0}, {15.0, 5.0});
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    ompl::RNG rng(3);
+    MemeticToolkit tk(si, rng);
+    setPlannersMargin(tk, si);
+    tk.setFixedPoints({5.0, 15.0}, {15.0, 5.0});
+    MemeticPath through{{5.0, 15.0}, {7.5, 12.5}, {12.5, 7.5}, {15.0, 5.0}};
+    ASSERT_TRUE(tk.pathValid(through)) << "the validator sees the pinch: the test no longer probes anything";
+    std::size_t refused = 99;
+    EXPECT_FALSE(tk.makeStrict(
+        through, [] { return false; }, &refused));
+    EXPECT_GE(refused, 1u);
+    EXPECT_LT(refused, through.size());
+
+    MemeticPath round{{5.0, 15.0}, {12.0, 12.0}, {15.0, 5.0}};
+    refused = 99;
+    EXPECT_TRUE(tk.makeStrict(
+        round, [] { return false; }, &refused));
+    EXPECT_EQ(refused, 0u);
+}
+
+TEST(MemeticMargin, TheLocalSearchShowsEachPassesPath)
+{
+    // tighten()'s afterPass sees the path after every pass but the last (the raw path's strict retry reports
+    // them as they come; docs/variants.md, "Checks"): each a valid path from the start to the goal, none
+    // longer than the one before, the final path no longer than the last one seen.
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    const Outline wall{{9.0, 4.0}, {11.0, 4.0}, {11.0, 16.0}, {9.0, 16.0}};
+    og::SimpleSetupPtr ss = test::planarAppProblem([&](double x, double y) { return !inside(wall, x, y); },
+                                                   0.002, {1.0, 10.0}, {19.0, 10.0});
+    ss->setup();
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    ompl::RNG rng(3);
+    MemeticToolkit tk(si, rng);
+    setPlannersMargin(tk, si);
+    tk.setFixedPoints({1.0, 10.0}, {19.0, 10.0});
+    // A long way round the wall's upper end, zig-zagging.
+    MemeticPath path{{1.0, 10.0}};
+    for (int k = 1; k < 20; ++k)
+        path.push_back({1.0 + 0.9 * k, 17.0 + (k % 2 == 0 ? 1.5 : 0.0)});
+    path.push_back({19.0, 10.0});
+    ASSERT_TRUE(tk.pathValid(path));
+    std::vector<double> seen;
+    const MemeticToolkit::StrictScope strict(tk);
+    tk.tighten(
+        path, 0.3, 1e-6, 30, [] { return false; }, 4000, false,
+        [&](const MemeticPath &pass)
+        {
+            EXPECT_TRUE(tk.pathValid(pass));
+            EXPECT_EQ(pass.front(), Vec2(1.0, 10.0));
+            EXPECT_EQ(pass.back(), Vec2(19.0, 10.0));
+            seen.push_back(MemeticToolkit::length(pass));
+        });
+    ASSERT_GE(seen.size(), 2u);
+    for (std::size_t k = 1; k < seen.size(); ++k)
+        EXPECT_LE(seen[k], seen[k - 1] + 1e-9);
+    EXPECT_LE(MemeticToolkit::length(path), seen.back() + 1e-9);
+    // Round the wall's end (10, 16): at least the two straight lines from start and goal to that corner.
+    EXPECT_GE(MemeticToolkit::length(path), 2.0 * std::hypot(9.0, 6.0) - 1e-9);
+    EXPECT_LT(seen.front(), 2.0 * std::hypot(9.0, 8.5));
+}

@@ -263,8 +263,11 @@ namespace mhplan
         return si_->isValid(c_);
     }
 
-    bool MemeticToolkit::makeStrict(MemeticPath &path, const std::function<bool()> &stop)
+    bool MemeticToolkit::makeStrict(MemeticPath &path, const std::function<bool()> &stop,
+                                    std::size_t *refused)
     {
+        if (refused != nullptr)
+            *refused = 0;
         if (margin_ <= 0.0)
             return true;
         // A path tightened against the validator alone touches obstacles. The margin says on which side of a
@@ -329,10 +332,15 @@ namespace mhplan
             if (stop())
                 return false;
         }
-        for (std::size_t i = 1; i < path.size(); ++i)
+        bool all = true;
+        for (std::size_t i = 1; i < path.size() && (all || refused != nullptr); ++i)
             if (!reportableSegment(path[i - 1], path[i]))
-                return false;
-        return true;
+            {
+                all = false;
+                if (refused != nullptr && !motionValid(path[i - 1], path[i])) // cached: the margin's verdict
+                    ++*refused;
+            }
+        return all;
     }
 
     void MemeticToolkit::makeReportablePrefix(MemeticPath &path)

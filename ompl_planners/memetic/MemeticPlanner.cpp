@@ -201,14 +201,17 @@ namespace mhplan
     bool MemeticPlanner::strictCopy(MemeticPath &path)
     {
         const MemeticPath loose = path;
-        if (toolkit_->makeStrict(path, stop_))
+        std::size_t refused = 0;
+        if (toolkit_->makeStrict(path, stop_, &refused))
             return true;
-        if (stopRequested())
-            return false;
         // A tightened path threads gaps with segments that touch an obstacle on each side (an inner tangent
         // between two discs): the margin finds obstacles on both sides and cannot tell which way to push.
         // Halved, each segment touches one obstacle, and its ends are pushed away from it (docs/variants.md,
-        // "Checks"); without this retry the way through the gap counted as invalid.
+        // "Checks"); without this retry the way through the gap counted as invalid. The retry mends a few
+        // such segments; where many stay refused (a loose path through a maze's diagonal pinches, which no
+        // push undoes) it never succeeded, and it cost as much again (docs/variants.md).
+        if (stopRequested() || refused > kHalvingMostRefused)
+            return false;
         path.clear();
         path.push_back(loose.front());
         for (std::size_t i = 1; i < loose.size(); ++i)
@@ -242,7 +245,17 @@ namespace mhplan
             ~BisectionsRestore() { toolkit.setBisections(bisections); }
         } restore{*toolkit_, bisections_};
         toolkit_->setBisections(std::min(bisections_, kRetryBisections));
-        toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_);
+        // Each pass's path is reported as soon as it passes the fine check too (a millisecond against a
+        // pass's tens on a maze): the retry's first passes already bring it within a percent or so.
+        toolkit_->tighten(out, coarseTurn_, 1e-4, 30, stop_, 4000, false,
+                          [this](const MemeticPath &pass)
+                          {
+                              if (!improvesOn(pathCost(pass)))
+                                  return;
+                              MemeticPath q = pass;
+                              if (toolkit_->makeStrict(q, stop_))
+                                  record(q, pathCost(q));
+                          });
         // The margin and the fine check, as every reported path (docs/variants.md, "The fine check").
         return !stopRequested() && toolkit_->makeStrict(out, stop_);
     }

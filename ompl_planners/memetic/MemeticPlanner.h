@@ -238,6 +238,9 @@ namespace mhplan
         static constexpr unsigned long kFillBudget = 3000000;
         /** \brief Halvings of each pull move in the raw path's strict tightening (strictTighten). */
         static constexpr unsigned int kRetryBisections = 3;
+        /** \brief The most segments the margin may still refuse after makeStrict() for strictCopy() to try
+           the halved path (measured: the retry succeeded with at most 5, never with more than 5). */
+        static constexpr std::size_t kHalvingMostRefused = 16;
         /** \brief Samples of the first roadmap, and the most a roadmap draws per epoch. */
         static constexpr unsigned int kRoadmapSamples = 1500;
         static constexpr unsigned int kRoadmapFirst = 200;

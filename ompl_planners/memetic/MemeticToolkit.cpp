@@ -479,7 +479,8 @@ namespace mhplan
     }
 
     bool MemeticToolkit::tighten(MemeticPath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                                 const std::function<bool()> &stop, unsigned int maxPoints, bool precise)
+                                 const std::function<bool()> &stop, unsigned int maxPoints, bool precise,
+                                 const std::function<void(const MemeticPath &)> &afterPass)
     {
         precise_ = precise;
         shortcut(path, stop);
@@ -497,6 +498,8 @@ namespace mhplan
             if (len - now < relTol * len && pass > 0)
                 break;
             len = now;
+            if (afterPass && pass + 1 < maxPasses)
+                afterPass(path);
         }
         return true;
     }

@@ -128,8 +128,9 @@ namespace mhplan
             neighbours' chord, 2c, 4c, ... up to 8 rounds; a push whose point is invalid is halved down to 2 x
             the smallest clearance, for narrow passages); a segment the fine check refuses gets a waypoint
             beside its first failing sample (mendBeside). True when every segment passes both (always without
-            a margin). */
-        bool makeStrict(MemeticPath &path, const std::function<bool()> &stop);
+            a margin). \e refused, when given, receives the number of segments the margin still refuses at
+            the end. */
+        bool makeStrict(MemeticPath &path, const std::function<bool()> &stop, std::size_t *refused = nullptr);
         /** \brief An approximate path made reportable: makeStrict() (at most its 12 rounds), then cut before
             its first segment that still fails the strict mode or the fine check. */
         void makeReportablePrefix(MemeticPath &path);
@@ -194,9 +195,11 @@ namespace mhplan
             (doubling, then bisection on the index). */
         void shortcut(MemeticPath &path, const std::function<bool()> &stop);
         /** \brief Local search (class doc); returns false when \e stop() interrupted it (the path is valid
-            and no longer than before either way). */
+            and no longer than before either way). \e afterPass, when given, sees the path after each pass
+            (an anytime report of a long tightening). */
         bool tighten(MemeticPath &path, double maxTurn, double relTol, unsigned int maxPasses,
-                     const std::function<bool()> &stop, unsigned int maxPoints = 4000, bool precise = false);
+                     const std::function<bool()> &stop, unsigned int maxPoints = 4000, bool precise = false,
+                     const std::function<void(const MemeticPath &)> &afterPass = nullptr);
 
         /** \brief Crossover: child = a[..p] -> b[q..] (one point) or a[..p1] -> b[q1..q2] -> a[p2..] (two
             points), joined where the parents pass within \e radius of each other (resampled at 48 points
