@@ -55,7 +55,11 @@ namespace mhplan
     }
     inline double norm(const Vec2 &a)
     {
-        return std::hypot(a.x, a.y);
+        // The square root of the squares where they neither overflow nor underflow (within an ulp or so of
+        // std::hypot, which cost a fifth of a memetic planner's time among 1,000 rectangles); std::hypot
+        // beyond (and for NaN).
+        const double s = a.x * a.x + a.y * a.y;
+        return s < 1e300 && s > 1e-300 ? std::sqrt(s) : std::hypot(a.x, a.y);
     }
     inline double squaredNorm(const Vec2 &a)
     {
