@@ -332,6 +332,49 @@ TEST(MemeticToolkit, LazyRoadmapGivesValidRoutesThatDiffer)
     EXPECT_FALSE(tk.roadmapPath(inside, 4000, [] { return true; }));
 }
 
+TEST(MemeticToolkit, TubeRouteFindsTheShorterClassBesideAPath)
+{
+    // A 10 m square with a 1 x 1 m block at (5, 5): the path from (1, 5) to (9, 5) round the block's far side
+    // of a second, long wall above it ((4.5, 6.5) to (5.5, 9.5)) is the wrong class; a tube of radius 3 m
+    // round it holds the way between the block and the wall (the optimal class, 1 m wide), and the tube
+    // reroute routes it (docs/variants.md, "The tube reroute"): a valid route from start to goal, shorter
+    // than the path, not passing above the wall. A tube that holds no way round the wall gives none.
+    World w;
+    w.name = "tube";
+    w.bounds = {0, 10, 0, 10};
+    w.polygons.push_back(makePolygon(rectangleCorners({5, 5}, 1.0, 1.0, 0.0), "rectangle"));
+    w.polygons.push_back(makePolygon(rectangleCorners({5, 8}, 1.0, 3.0, 0.0), "rectangle"));
+    w.queries.push_back({"default", {1, 5}, {9, 5}});
+    const CollisionModelPtr model = makeCollisionModel(w);
+    og::SimpleSetupPtr ss = makeSimpleSetup(w, w.queries[0], model);
+    ss->setup();
+    ompl::RNG rng(4);
+    MemeticToolkit tk(ss->getSpaceInformation(), rng);
+    tk.setBounds(w.bounds);
+    const std::function<bool()> never = [] { return false; };
+    const MemeticPath above{{1, 5}, {4.4, 9.7}, {5.6, 9.7}, {9, 5}};
+    ASSERT_TRUE(tk.pathValid(above));
+    ASSERT_TRUE(denseValid(*model, w.bounds, above));
+    MemeticPath route;
+    ASSERT_TRUE(tk.tubeRoute(above, 3.0, 1000, 200, route, never));
+    EXPECT_TRUE(tk.pathValid(route));
+    EXPECT_TRUE(denseValid(*model, w.bounds, route));
+    EXPECT_EQ(route.front(), Vec2(1, 5));
+    EXPECT_EQ(route.back(), Vec2(9, 5));
+    EXPECT_LT(length(route), length(above) - 1.0);
+    for (const Vec2 &q : route)
+        EXPECT_LT(q.y, 9.5) << "the route passes above the wall";
+    // A tube of 0.2 m: only the way above the wall (no shorter class inside), and with no states no route.
+    MemeticPath narrow;
+    if (tk.tubeRoute(above, 0.2, 1000, 200, narrow, never))
+    {
+        EXPECT_TRUE(tk.pathValid(narrow));
+        EXPECT_GT(length(narrow), length(above) - 0.5);
+    }
+    EXPECT_FALSE(tk.tubeRoute(above, 3.0, 0, 200, narrow, never));
+    EXPECT_FALSE(tk.tubeRoute(above, 3.0, 1000, 200, narrow, [] { return true; }));
+}
+
 TEST(MemeticToolkit, WalkIsExhaustedBehindAWall)
 {
     World w;

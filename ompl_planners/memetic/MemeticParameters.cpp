@@ -33,6 +33,10 @@ namespace mhplan
                                            "local-search passes of the elite polish per generation"};
         constexpr ParamRange kEliteRewalks{"elite_rewalks", 0, 1, 1000,
                                            "re-walk trials on the best individual per generation"};
+        constexpr ParamRange kTubeReroutes{
+            "tube_reroutes", 0, 1, 1000,
+            "tube reroutes of the best individual per generation (in the plane): "
+            "the shortest route of a roadmap drawn near its path"};
         constexpr ParamRange kStagnation{
             "stagnation", 0, 1, 1000000,
             "generations without improvement before a restart (the elite kept); 0 = auto: 3 planar, 40 "
@@ -84,6 +88,8 @@ namespace mhplan
                                     &MemeticPlanner::getPolishPasses);
         declareRanged<unsigned int>(params(), this, kEliteRewalks, &MemeticPlanner::setEliteRewalks,
                                     &MemeticPlanner::getEliteRewalks);
+        declareRanged<unsigned int>(params(), this, kTubeReroutes, &MemeticPlanner::setTubeReroutes,
+                                    &MemeticPlanner::getTubeReroutes);
         declareRanged<unsigned int>(params(), this, kStagnation, &MemeticPlanner::setStagnation,
                                     &MemeticPlanner::getStagnation);
         declareRanged<unsigned int>(params(), this, kBisections, &MemeticPlanner::setBisections,
@@ -156,6 +162,11 @@ namespace mhplan
     void MemeticPlanner::setEliteRewalks(unsigned int n)
     {
         storeChecked(kEliteRewalks, eliteRewalks_, n);
+    }
+
+    void MemeticPlanner::setTubeReroutes(unsigned int n)
+    {
+        storeChecked(kTubeReroutes, tubeReroutes_, n);
     }
 
     void MemeticPlanner::setStagnation(unsigned int n)

@@ -122,6 +122,10 @@ namespace mhplan
         /** \brief Re-walk trials on the best individual per generation (0..1000). */
         void setEliteRewalks(unsigned int n);
         unsigned int getEliteRewalks() const { return eliteRewalks_; }
+        /** \brief Tube reroutes of the best individual per generation, in the plane (docs/variants.md, "The
+            tube reroute"); 0: none. */
+        void setTubeReroutes(unsigned int n);
+        unsigned int getTubeReroutes() const { return tubeReroutes_; }
         /** \brief Generations without improvement before a restart with elitism (1..1000000; 0 = auto: 3 in
             the planar mode, 40 in the state mode). */
         void setStagnation(unsigned int n);
@@ -305,6 +309,9 @@ namespace mhplan
         unsigned int polishPasses_{8};
         unsigned int stagnation_{0};
         unsigned int eliteRewalks_{0};
+        unsigned int tubeReroutes_{1};
+        /** \brief States drawn per tube reroute. */
+        static constexpr unsigned int kTubeSamples = 1000;
         unsigned int bisections_{10};
         double validatorMargin_{0.5};
         double validatorClearance_{0.03};

@@ -172,6 +172,15 @@ namespace mhplan
             cut off from the goal in the roadmap, after \e maxInvalid refused edges, or when stopped. */
         bool roadmapPath(MemeticPath &path, unsigned int maxInvalid, const std::function<bool()> &stop);
         std::size_t roadmapSize() const { return rmPoints_.size(); }
+        /** \brief The tube reroute (docs/variants.md, "The tube reroute"): a separate lazy roadmap of \e n
+            states drawn within \e radius of points drawn uniformly along \e path (a state costs one validity
+            check; invalid ones are dropped), its ends and k-nearest edges; into \e out its shortest route
+            from the path's start to its end (A*, the route's unknown edges checked, an invalid one removed
+            and the search repeated, at most \e maxInvalid times). The path's own waypoints are not nodes, so
+            the route is the tube's shortest in whatever homotopy class, not the path again. False when the
+            tube holds no route, or when stopped. */
+        bool tubeRoute(const MemeticPath &path, double radius, unsigned int n, unsigned int maxInvalid,
+                       MemeticPath &out, const std::function<bool()> &stop);
 
         enum class WalkResult
         {
@@ -333,6 +342,16 @@ namespace mhplan
             double length;
             char state;
         };
+        /** \brief Symmetric k-nearest edges (k = 4.1 ln n) of \e points (within \e box), none checked. */
+        static void nearestEdges(const MemeticPath &points, const Box &box, std::vector<RoadmapEdge> &edges,
+                                 std::vector<std::vector<std::uint32_t>> &adjacent);
+        /** \brief A* over a lazy roadmap from point 0 to point 1 under \e penalty; unknown edges of each
+           route are checked, invalid ones skipped by the next search. False when cut off, after \e maxInvalid
+            refused edges or when stopped; else the route's point indices in \e nodes. */
+        bool lazyRoute(const MemeticPath &points, std::vector<RoadmapEdge> &edges,
+                       const std::vector<std::vector<std::uint32_t>> &adjacent,
+                       const std::vector<double> &penalty, unsigned int maxInvalid,
+                       const std::function<bool()> &stop, std::vector<std::uint32_t> &nodes);
         MemeticPath rmPoints_;
         std::vector<RoadmapEdge> rmEdges_;
         std::vector<std::vector<std::uint32_t>> rmAdjacent_; ///< edge ids per point
