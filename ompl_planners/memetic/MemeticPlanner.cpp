@@ -56,6 +56,8 @@ namespace mhplan
         closest_.clear();
         polished_.clear();
         strictFallback_.clear();
+        firstRaw_.clear();
+        firstStrict_.clear();
         strictFallbackCost_ = std::numeric_limits<double>::quiet_NaN();
         bestStates_.clear();
         closestStates_.clear();
@@ -186,7 +188,10 @@ namespace mhplan
                 // Tight paths round many corners (a maze) resist the pushes; the path before its local search
                 // (raw) is tightened again under the margin instead, which keeps the clearance by
                 // construction.
-                if (stopRequested() || raw == nullptr || !strictTighten(*raw, q))
+                const bool known = raw != nullptr && !firstStrict_.empty() && *raw == firstRaw_;
+                if (known)
+                    q = firstStrict_; // finishWalk() tightened the first path so already
+                else if (stopRequested() || raw == nullptr || !strictTighten(*raw, q))
                     return stopRequested() ? c : std::numeric_limits<double>::infinity();
                 strictFallback_ = q;
                 strictFallbackCost_ = c;
@@ -442,6 +447,17 @@ namespace mhplan
             if (stopRequested())
                 return false;
             evaluate(out.path);
+            // Under the validator margin the first path is tightened under it at once, each pass reported
+            // (strictTighten): where the loose local search then cuts what no push undoes (a maze's pinches)
+            // this is the way to 1 % (docs/variants.md), and the loose search and the failed pushes came
+            // first.
+            MemeticPath q;
+            if (toolkit_->margin() > 0.0 && !stopRequested() && strictTighten(out.path, q))
+            {
+                firstRaw_ = out.path;
+                firstStrict_ = q;
+                record(q, pathCost(q));
+            }
         }
         return improveAndEvaluate(out) && std::isfinite(out.cost);
     }

@@ -357,6 +357,8 @@ namespace mhplan
         /** \brief The last path evaluate() tightened under the margin from a raw path, and the (loose) cost
             of the individual it stands for (polishElite starts from it). */
         MemeticPath strictFallback_;
+        /** \brief The first path and its strict tightening (finishWalk), for evaluate() to reuse. */
+        MemeticPath firstRaw_, firstStrict_;
         double strictFallbackCost_{std::numeric_limits<double>::quiet_NaN()};
         double polishedSource_{0.0};
         double closestDistance_{0.0};
