@@ -578,44 +578,38 @@ namespace mhplan
             eliteReconnects();
             return;
         }
-        for (unsigned int k = 0; k < tubeReroutes_ && !pop_.empty(); ++k)
-        {
-            // The tube reroute (docs/variants.md): a roadmap drawn within a random radius of the best path
-            // (1-6 % of its length) routes the tube's shortest way, in whatever class, then the coarse local
-            // search; it replaces the best individual when shorter. A class a few obstacles off the best one
-            // (beside it, not round a different side of the world) is found there.
-            if (stopRequested())
-                return;
-            const std::size_t b = bestIndex();
-            Individual child;
-            const double radius = MemeticToolkit::length(pop_[b].path) * rng_.uniformReal(0.01, 0.06);
-            if (!toolkit_->tubeRoute(pop_[b].path, radius, kTubeSamples, 200, child.path, stop_))
-                continue;
-            if (!improveAndEvaluate(child))
-                return;
-            if (child.cost < pop_[b].cost)
+        // First the tube reroutes (docs/variants.md): a roadmap drawn within a random radius of the best path
+        // (1-6 % of its length) routes the tube's shortest way, in whatever class (a class a few obstacles
+        // off the best one, beside it, not round a different side of the world); then the re-walks of a
+        // piece. Either child gets the coarse local search and replaces the best individual when shorter.
+        for (const bool tube : {true, false})
+            for (unsigned int k = 0; k < (tube ? tubeReroutes_ : eliteRewalks_) && !pop_.empty(); ++k)
             {
-                pop_[b] = std::move(child);
-                populationChanged();
+                if (stopRequested())
+                    return;
+                const std::size_t b = bestIndex();
+                Individual child;
+                bool made;
+                if (tube)
+                {
+                    const double radius = MemeticToolkit::length(pop_[b].path) * rng_.uniformReal(0.01, 0.06);
+                    made = toolkit_->tubeRoute(pop_[b].path, radius, kTubeSamples, 200, child.path, stop_);
+                }
+                else
+                {
+                    child.path = pop_[b].path;
+                    made = toolkit_->rewalk(child.path, 0.3, walkNoise_, 4000, stop_);
+                }
+                if (!made)
+                    continue;
+                if (!improveAndEvaluate(child))
+                    return;
+                if (child.cost < pop_[b].cost)
+                {
+                    pop_[b] = std::move(child);
+                    populationChanged();
+                }
             }
-        }
-        for (unsigned int k = 0; k < eliteRewalks_ && !pop_.empty(); ++k)
-        {
-            if (stopRequested())
-                return;
-            const std::size_t b = bestIndex();
-            Individual child;
-            child.path = pop_[b].path;
-            if (!toolkit_->rewalk(child.path, 0.3, walkNoise_, 4000, stop_))
-                continue;
-            if (!improveAndEvaluate(child))
-                return;
-            if (child.cost < pop_[b].cost)
-            {
-                pop_[b] = std::move(child);
-                populationChanged();
-            }
-        }
     }
 
     void MemeticPlanner::restart()
