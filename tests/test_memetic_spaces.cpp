@@ -518,7 +518,7 @@ TEST(MemeticStateMode, AUsersClearanceIsNotAskedAndPathsPassTheDenseCheck)
     // The slot with exact geometry, the user's checker computing clearance, OMPL's discrete validator at 1 %
     // of the extent (a sample every 0.17 in the SE(2) metric, which turns the stick's tips by up to 0.14 m).
     // The search asks the motion validator alone and reported paths pass the fine check (isValid every
-    // validator_clearance samples, docs/spaces.md): no clearance query, however expensive the user's is
+    // validator_state_step samples, docs/spaces.md): no clearance query, however expensive the user's is
     // (before, every motion verdict asked it at every sample), and no path cuts a wall between the samples.
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     for (const std::string &name : test::ofFamily("memetic"))
@@ -560,7 +560,9 @@ TEST(MemeticMargin, ParametersRoundTripAndAreRefusedOutOfRange)
           Case{"validator_min_clearance", "0.001", "0.002", "-0.01", "0.6",
                [&] { return mp->getValidatorMinClearance(); }},
           Case{"validator_fine_step", "0.25", "0.5", "-0.01", "1.5",
-               [&] { return mp->getValidatorFineStep(); }}})
+               [&] { return mp->getValidatorFineStep(); }},
+          Case{"validator_state_step", "0.01", "0.02", "-0.01", "0.6",
+               [&] { return mp->getValidatorStateStep(); }}})
     {
         EXPECT_EQ(p->params()[c.name].getValue(), c.byDefault) << c.name;
         ASSERT_TRUE(p->params().setParam(c.name, c.good)) << c.name;

@@ -57,6 +57,10 @@ namespace mhplan
             "validator_fine_step", 0, 0.01, 1,
             "step of the validity checker along every segment of a path before it is reported, in sample "
             "spacings (0 = no fine check)"};
+        constexpr ParamRange kValidatorStateStep{
+            "validator_state_step", 0, 0.001, 0.5,
+            "off the plane: step of the validity checker along every motion of a path before it is "
+            "reported, in sample spacings of the space's metric (0 = no fine check)"};
     } // namespace
 
     MemeticPlanner::MemeticPlanner(const ob::SpaceInformationPtr &si, const std::string &name,
@@ -103,6 +107,8 @@ namespace mhplan
                               &MemeticPlanner::getValidatorMinClearance);
         declareRanged<double>(params(), this, kValidatorFineStep, &MemeticPlanner::setValidatorFineStep,
                               &MemeticPlanner::getValidatorFineStep);
+        declareRanged<double>(params(), this, kValidatorStateStep, &MemeticPlanner::setValidatorStateStep,
+                              &MemeticPlanner::getValidatorStateStep);
 
         declareProgress(true);
         addPlannerProgressProperty("motion checks INTEGER",
@@ -198,6 +204,11 @@ namespace mhplan
     void MemeticPlanner::setValidatorFineStep(double f)
     {
         storeChecked(kValidatorFineStep, validatorFineStep_, f);
+    }
+
+    void MemeticPlanner::setValidatorStateStep(double f)
+    {
+        storeChecked(kValidatorStateStep, validatorStateStep_, f);
     }
 
     double MemeticPlanner::marginDistance() const

@@ -81,6 +81,7 @@ namespace mhplan
         roadmapPaths_ = 0;
         roadmapAlive_ = true;
         roadmapStale_ = true;
+        denseRoadmap_ = false;
         if (stateToolkit_)
             stateToolkit_->resetCounts();
         stateChecks_ = 0;
@@ -396,7 +397,7 @@ namespace mhplan
                 toolkit_->roadmapGrow(samples, start_, goal_, informedBound());
                 return true;
             },
-            [&](unsigned int maxInvalid) { return toolkit_->roadmapPath(out.path, maxInvalid, stop_); });
+            [&](unsigned int maxInvalid) { return toolkit_->roadmapPath(out.path, maxInvalid, stop_); }, 100);
         if (step == RoadmapStep::GaveUp)
             roadmapSamples_ = std::min(kRoadmapMaxSamples, 2 * roadmapSamples_);
         return step == RoadmapStep::Route;
@@ -405,7 +406,8 @@ namespace mhplan
     MemeticPlanner::RoadmapStep
     MemeticPlanner::nextRoadmapRoute(bool first, unsigned int firstSamples, unsigned int samples,
                                      const std::function<bool(unsigned int)> &grow,
-                                     const std::function<bool(unsigned int)> &route)
+                                     const std::function<bool(unsigned int)> &route,
+                                     unsigned int fullRefusals)
     {
         if (!roadmapAlive_ || roadmapPaths_ >= 2 * populationSize_)
             return RoadmapStep::None;
@@ -417,7 +419,7 @@ namespace mhplan
             smallRoadmap_ = first;
         }
         // Refused routes before the roadmap is given up (a roadmap cut in two refuses route after route).
-        if (route(smallRoadmap_ ? 20 : 100))
+        if (route(smallRoadmap_ ? 20 : fullRefusals))
         {
             ++roadmapPaths_;
             ++walks_;

@@ -149,6 +149,10 @@ namespace mhplan
             docs/variants.md, "The fine check"). */
         void setValidatorFineStep(double f);
         double getValidatorFineStep() const { return validatorFineStep_; }
+        /** \brief Off the plane, with OMPL's DiscreteMotionValidator: the fine check's step along every
+            motion of a reported path, in the validator's sample spacings (docs/spaces.md, "Margin"). */
+        void setValidatorStateStep(double f);
+        double getValidatorStateStep() const { return validatorStateStep_; }
         /** \brief The margin in the space's distance for the current motion validator: validator_margin x
             the validity-checking resolution x the maximum extent with a DiscreteMotionValidator, else 0. */
         double marginDistance() const;
@@ -260,10 +264,12 @@ namespace mhplan
         };
         /** \brief The lazy roadmap's schedule, one for both modes (docs/variants.md, "First paths: a lazy
             roadmap"): \e grow(samples) (re)builds the roadmap with that many new samples (false: stopped),
-            \e route(maxInvalid) takes its next route; \e first: no roadmap yet. */
+            \e route(maxInvalid) takes its next route (\e fullRefusals refused routes of the full roadmap
+            give it up, 20 of the small one's); \e first: no roadmap yet. */
         RoadmapStep nextRoadmapRoute(bool first, unsigned int firstSamples, unsigned int samples,
                                      const std::function<bool(unsigned int)> &grow,
-                                     const std::function<bool(unsigned int)> &route);
+                                     const std::function<bool(unsigned int)> &route,
+                                     unsigned int fullRefusals);
         /** \brief The first path is reported at once; then the coarse local search and the evaluation. */
         bool finishWalk(Individual &out);
         void polishElite();
@@ -317,6 +323,7 @@ namespace mhplan
         double validatorClearance_{0.03};
         double validatorMinClearance_{0.001};
         double validatorFineStep_{0.25};
+        double validatorStateStep_{0.01};
 
         const ompl::base::PlannerTerminationCondition *ptc_{nullptr};
         std::function<bool()> stop_;
@@ -347,6 +354,8 @@ namespace mhplan
         bool roadmapAlive_{true};
         bool roadmapStale_{true};
         bool smallRoadmap_{false};
+        /** \brief The state mode's full roadmaps are dense (one gave up; docs/spaces.md). */
+        bool denseRoadmap_{false};
 
         bool haveSolution_{false};
         ompl::base::Cost bestCostObj_;

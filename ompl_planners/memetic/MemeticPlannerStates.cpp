@@ -2,6 +2,7 @@
 /* mhplan: the state mode of the memetic planners (docs/spaces.md, "The memetic planners off the plane"):
    MemeticPlanner on any state space with a StateParametrisation. */
 #include "ompl_planners/memetic/MemeticPlanner.h"
+#include "ompl_planners/memetic/CarBounds.h"
 
 #include "ompl_planners/common/PlannerSupport.h"
 
@@ -22,10 +23,16 @@ namespace mhplan
         constexpr unsigned int kConnectNodes = 5000;
         /** \brief Tree states of one re-connect of a piece (mutation, elite re-connects). */
         constexpr unsigned int kReconnectNodes = 2000;
-        /** \brief Samples of the first, small roadmap on states, and the most one epoch's roadmap draws (its
-            k-nearest search is quadratic in the samples). */
+        /** \brief Samples of the first, small roadmap on states, the most one epoch's full roadmap draws,
+            and the dense roadmap's, drawn once a full one gave up (the k-nearest search is quadratic in the
+            samples: where a check is cheap and the distance dear, as on the car spaces, it would cost more
+            than the checks). */
         constexpr unsigned int kStateRoadmapFirst = 200;
         constexpr unsigned int kStateRoadmapMax = 2000;
+        constexpr unsigned int kStateRoadmapDense = 8000;
+        /** \brief Refused routes before the dense roadmap is given up (100 for a sparser one, as in the
+            plane). A refusal costs one motion check of a nearest neighbour's edge. */
+        constexpr unsigned int kStateRoadmapRefusals = 1000;
     } // namespace
 
     unsigned int lubyTerm(unsigned long i)
@@ -72,7 +79,7 @@ namespace mhplan
         stateToolkit_->setBisections(bisections_);
         const double margin = marginDistance(), spacing = margin > 0.0 ? margin / validatorMargin_ : 0.0;
         stateToolkit_->setMargin(margin);
-        stateToolkit_->setFineSpacing(validatorClearance_ * spacing);
+        stateToolkit_->setFineSpacing(validatorStateStep_ * spacing);
         stateToolkit_->resetCounts();
         stateToolkit_->fromState(start, startState_);
         stateToolkit_->fromState(goal, goalState_);
@@ -141,18 +148,27 @@ namespace mhplan
         StatePath p = ind.states;
         // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path). Anytime: a pass
         // that makes the path cheaper than the best is reported at once (docs/spaces.md: with a mesh checker
-        // on OMPL.app's problems one coarse search of a long first path takes many seconds).
+        // on OMPL.app's problems one coarse search of a long first path takes many seconds). The last pass
+        // whose path evaluated as valid is kept: a later one the fine check cannot mend would otherwise cost
+        // the individual and all its passes (OMPL.app's Barriers: 2.8 s of passes lost so).
+        StatePath lastValid;
         const MemeticStateToolkit::PassReport report = [&](const StatePath &q, double cost)
         {
-            if (improvesOn(cost))
-                evaluate(q);
+            if (improvesOn(cost) && std::isfinite(evaluate(q)))
+                lastValid = q;
         };
         tk.tighten(p, coarseTurn_, 1e-3, 10, stop_, 2000, false, report);
         if (stopRequested())
             return false;
         ind.states.swap(p);
-        // Infinite when the validator refuses a motion (evaluate(): a piece of a motion it accepted whole).
+        // Infinite when the validator refuses a motion (evaluate(): a piece of a motion it accepted whole) or
+        // when the path would improve on the best and the fine check cannot mend it.
         ind.cost = evaluate(ind.states);
+        if (!std::isfinite(ind.cost) && !lastValid.empty() && !stopRequested())
+        {
+            ind.states.swap(lastValid);
+            ind.cost = evaluate(ind.states);
+        }
         tk.resample(ind.states, 16, ind.stateSignature, nullptr);
         return true;
     }
@@ -161,14 +177,30 @@ namespace mhplan
     {
         // As the planar mode's roadmap (docs/spaces.md, "First paths: a lazy roadmap on states"): up to 2 N
         // routes per (re)start; the first from a small roadmap, the next from the full one, drawn inside the
-        // incumbent's informed set; the connections take over when it has no route.
+        // incumbent's informed set; the connections take over when it has no route. A full roadmap that gives
+        // up is followed at once by a dense one (kStateRoadmapDense new states, given up after
+        // kStateRoadmapRefusals refused routes): OMPL.app's Barriers (a big robot that must turn between the
+        // barriers) has no route among 1,500 states, and its connections' paths took the long way.
         MemeticStateToolkit &tk = *stateToolkit_;
-        return nextRoadmapRoute(
-                   tk.roadmapSize() == 0, kStateRoadmapFirst, std::min(roadmapSamples_, kStateRoadmapMax),
-                   [&](unsigned int samples)
-                   { return tk.roadmapGrow(samples, startState_, goalState_, informedBound(), stop_); },
-                   [&](unsigned int maxInvalid)
-                   { return tk.roadmapPath(out.states, maxInvalid, stop_); }) == RoadmapStep::Route;
+        while (true)
+        {
+            const unsigned int samples =
+                denseRoadmap_ ? kStateRoadmapDense : std::min(roadmapSamples_, kStateRoadmapMax);
+            const RoadmapStep step = nextRoadmapRoute(
+                tk.roadmapSize() == 0, kStateRoadmapFirst, samples,
+                [&](unsigned int n)
+                { return tk.roadmapGrow(n, startState_, goalState_, informedBound(), stop_); },
+                [&](unsigned int maxInvalid) { return tk.roadmapPath(out.states, maxInvalid, stop_); },
+                denseRoadmap_ ? kStateRoadmapRefusals : 100);
+            // Not on the car spaces: their distance (a Dubins or Reeds-Shepp word per pair) makes a dense
+            // roadmap's k-nearest search cost more than its checks save (docs/spaces.md).
+            if (step != RoadmapStep::GaveUp || denseRoadmap_ || stopRequested() ||
+                CarBounds(si_->getStateSpace().get()).active())
+                return step == RoadmapStep::Route;
+            denseRoadmap_ = true;
+            roadmapAlive_ = true;
+            roadmapStale_ = true;
+        }
     }
 
     bool MemeticPlanner::walkStateIndividual(Individual &out)
