@@ -33,6 +33,8 @@ namespace mhplan
         /** \brief Refused routes before the dense roadmap is given up (100 for a sparser one, as in the
             plane). A refusal costs one motion check of a nearest neighbour's edge. */
         constexpr unsigned int kStateRoadmapRefusals = 1000;
+        /** \brief Coarse passes of the local search of the first individual (10 for the others). */
+        constexpr unsigned int kFirstCoarsePasses = 3;
     } // namespace
 
     unsigned int lubyTerm(unsigned long i)
@@ -146,18 +148,20 @@ namespace mhplan
     {
         MemeticStateToolkit &tk = *stateToolkit_;
         StatePath p = ind.states;
-        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path). Anytime: a pass
-        // that makes the path cheaper than the best is reported at once (docs/spaces.md: with a mesh checker
-        // on OMPL.app's problems one coarse search of a long first path takes many seconds). The last pass
-        // whose path evaluated as valid is kept: a later one the fine check cannot mend would otherwise cost
-        // the individual and all its passes (OMPL.app's Barriers: 2.8 s of passes lost so).
+        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path), 3 for the first
+        // individual (the population empty): where checks are dear its passes held back the walks of other
+        // classes (OMPL.app's Barriers: 10 passes of the first path took 2-3 s of 5, docs/spaces.md).
+        // Anytime: a pass that makes the path cheaper than the best is reported at once (docs/spaces.md: with
+        // a mesh checker on OMPL.app's problems one coarse search of a long first path takes many seconds).
+        // The last pass whose path evaluated as valid is kept: a later one the fine check cannot mend would
+        // otherwise cost the individual and all its passes (OMPL.app's Barriers: 2.8 s of passes lost so).
         StatePath lastValid;
         const MemeticStateToolkit::PassReport report = [&](const StatePath &q, double cost)
         {
             if (improvesOn(cost) && std::isfinite(evaluate(q)))
                 lastValid = q;
         };
-        tk.tighten(p, coarseTurn_, 1e-3, 10, stop_, 2000, false, report);
+        tk.tighten(p, coarseTurn_, 1e-3, pop_.empty() ? kFirstCoarsePasses : 10, stop_, 2000, false, report);
         if (stopRequested())
             return false;
         ind.states.swap(p);
