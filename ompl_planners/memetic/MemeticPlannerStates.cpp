@@ -156,10 +156,14 @@ namespace mhplan
         // The last pass whose path evaluated as valid is kept: a later one the fine check cannot mend would
         // otherwise cost the individual and all its passes (OMPL.app's Barriers: 2.8 s of passes lost so).
         StatePath lastValid;
+        double lastValidCost = std::numeric_limits<double>::infinity();
         const MemeticStateToolkit::PassReport report = [&](const StatePath &q, double cost)
         {
             if (improvesOn(cost) && std::isfinite(evaluate(q)))
+            {
                 lastValid = q;
+                lastValidCost = cost;
+            }
         };
         tk.tighten(p, coarseTurn_, 1e-3, pop_.empty() ? kFirstCoarsePasses : 10, stop_, 2000, false, report);
         if (stopRequested())
@@ -168,10 +172,10 @@ namespace mhplan
         // Infinite when the validator refuses a motion (evaluate(): a piece of a motion it accepted whole) or
         // when the path would improve on the best and the fine check cannot mend it.
         ind.cost = evaluate(ind.states);
-        if (!std::isfinite(ind.cost) && !lastValid.empty() && !stopRequested())
+        if (!std::isfinite(ind.cost) && !lastValid.empty())
         {
-            ind.states.swap(lastValid);
-            ind.cost = evaluate(ind.states);
+            ind.states.swap(lastValid); // evaluated (and counted) when its pass reported it
+            ind.cost = lastValidCost;
         }
         tk.resample(ind.states, 16, ind.stateSignature, nullptr);
         return true;
