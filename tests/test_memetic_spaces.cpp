@@ -15,6 +15,7 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SO2StateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/util/Console.h>
@@ -178,6 +179,60 @@ TEST(MemeticStateToolkit, ConnectThenTightenStaysValidAndNeverCostlier)
                                  { return test::stickValid(q, test::slotWalls(), test::kStickHalf, 0.0); }));
     std::cout << "[state toolkit] slot: connected " << connected << ", tightened " << tightened << ", "
               << tk.motionChecks() << " motion checks, " << tk.cacheHits() << " from the cache\n";
+}
+
+TEST(MemeticStateToolkit, AMendsDrawsTurnInProportionToTheirMoves)
+{
+    // makeStrict's draws near a failing state (docs/spaces.md, "Margin"): positions within d, rotations
+    // within pi d / L (L the largest position range) on every other draw. On SE(2) in a 100 x 40 box that is
+    // pi d / 100 rad; the metric would allow d rad, which at OMPL.app's margins (4 units) is any heading.
+    auto space = std::make_shared<ob::SE2StateSpace>();
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0.0);
+    bounds.high[0] = 100.0;
+    bounds.high[1] = 40.0;
+    space->setBounds(bounds);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ob::State *) { return true; });
+    si->setup();
+    std::string why;
+    auto param = StateParametrisation::create(space, why);
+    ASSERT_TRUE(param) << why;
+    ob::ScopedState<ob::SE2StateSpace> ref(space);
+    ref->setXY(50.0, 20.0);
+    ref->setYaw(0.0);
+    param->setReference(ref.get());
+    ASSERT_FALSE(param->isRotation(0));
+    ASSERT_FALSE(param->isRotation(1));
+    ASSERT_TRUE(param->isRotation(2));
+    ompl::RNG rng(7);
+    MemeticStateToolkit tk(si, *param, rng);
+    EXPECT_NEAR(tk.mendTurn(4.0), M_PI * 4.0 / 100.0, 1e-12);
+    EXPECT_NEAR(tk.mendTurn(200.0), 2.0 * M_PI, 1e-12); // at most d
+    const StatePoint near{50.0, 20.0, 0.3};
+    StatePoint q;
+    double largestTurn = 0.0, largestMove = 0.0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        tk.sampleAround(near, 4.0, tk.mendTurn(4.0), q);
+        ASSERT_EQ(q.size(), near.size());
+        largestMove = std::max({largestMove, std::abs(q[0] - near[0]), std::abs(q[1] - near[1])});
+        largestTurn = std::max(largestTurn, std::abs(std::remainder(q[2] - near[2], 2.0 * M_PI)));
+    }
+    EXPECT_LE(largestMove, 4.0);
+    EXPECT_GT(largestMove, 3.5); // the draws do use the range
+    EXPECT_LE(largestTurn, M_PI * 4.0 / 100.0 + 1e-12);
+    EXPECT_GT(largestTurn, 0.1);
+    // On a space of rotations only there is no position range: the turn is d.
+    auto so2 = std::make_shared<ob::SO2StateSpace>();
+    auto si2 = std::make_shared<ob::SpaceInformation>(so2);
+    si2->setStateValidityChecker([](const ob::State *) { return true; });
+    si2->setup();
+    auto param2 = StateParametrisation::create(so2, why);
+    ASSERT_TRUE(param2) << why;
+    param2->setReference(nullptr);
+    MemeticStateToolkit tk2(si2, *param2, rng);
+    EXPECT_EQ(tk2.mendTurn(0.25), 0.25);
 }
 
 TEST(MemeticStateToolkit, APullStepsBackOnlyToACheckedPosition)

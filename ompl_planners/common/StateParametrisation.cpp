@@ -148,6 +148,8 @@ namespace mhplan
             return false;
         }
         dim_ += leaf.count;
+        rotationCoordinate_.insert(rotationCoordinate_.end(), leaf.count,
+                                   leaf.kind == Kind::RealVector ? 0 : 1);
         leaves_.push_back(std::move(leaf));
         return true;
     }

@@ -53,6 +53,8 @@ namespace mhplan
         bool isRealVector() const { return realVector_; }
         /** \brief True when the space has an SO(2) or SO(3) component. */
         bool hasRotations() const { return rotations_; }
+        /** \brief True when coordinate j (0 <= j < dimension()) belongs to an SO(2) or SO(3) component. */
+        bool isRotation(unsigned int j) const { return rotationCoordinate_[j] != 0; }
 
         /** \brief Take the SO(2) reference angles and SO(3) reference rotations from \e reference (the
             query's start) and set the bounds. */
@@ -100,6 +102,7 @@ namespace mhplan
         unsigned int dim_{0};
         bool realVector_{false};
         bool rotations_{false};
+        std::vector<char> rotationCoordinate_;
         std::vector<double> lower_, upper_;
     };
 } // namespace mhplan

@@ -34,7 +34,7 @@ namespace mhplan
             plane). A refusal costs one motion check of a nearest neighbour's edge. */
         constexpr unsigned int kStateRoadmapRefusals = 1000;
         /** \brief Coarse passes of the local search of the first individual (10 for the others). */
-        constexpr unsigned int kFirstCoarsePasses = 3;
+        constexpr unsigned int kFirstCoarsePasses = 1;
     } // namespace
 
     unsigned int lubyTerm(unsigned long i)
@@ -148,9 +148,10 @@ namespace mhplan
     {
         MemeticStateToolkit &tk = *stateToolkit_;
         StatePath p = ind.states;
-        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path), 3 for the first
+        // Coarse: at most 10 passes of 6 bisection steps (the polish refines the best path), 1 for the first
         // individual (the population empty): where checks are dear its passes held back the walks of other
-        // classes (OMPL.app's Barriers: 10 passes of the first path took 2-3 s of 5, docs/spaces.md).
+        // classes (OMPL.app's Barriers: 10 passes of the first path took 2-3 s of 5, 3 passes 1-2 s,
+        // docs/spaces.md).
         // Anytime: a pass that makes the path cheaper than the best is reported at once (docs/spaces.md: with
         // a mesh checker on OMPL.app's problems one coarse search of a long first path takes many seconds).
         // The last pass whose path evaluated as valid is kept: a later one the fine check cannot mend would
@@ -218,9 +219,12 @@ namespace mhplan
             if (stopRequested() || !connectStateIndividual(out))
                 return false;
         }
-        if (!haveSolution_)
+        if (!haveSolution_ || improvesOn(stateToolkit_->cost(out.states)))
         {
-            // The first path is reported at once, before its local search (evaluate() checks its motions).
+            // The first path, and a walk's path that improves on the best, is reported at once, before its
+            // local search (evaluate() checks its motions): where checks are dear the search's first pass
+            // may not end within the budget (OMPL.app's Barriers: the dense roadmap's first route, 2.0 times
+            // shorter than the best, was lost so at 5 s).
             if (stopRequested())
                 return false;
             evaluate(out.states);

@@ -4,6 +4,8 @@
 #include <ompl/base/spaces/DubinsStateSpace.h>
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -16,6 +18,8 @@ namespace mhplan
     namespace
     {
         constexpr std::size_t kCacheLimit = 1u << 20;
+        /** \brief Draws of a mend of one motion (makeStrict): four at each of 1, 2, 4, ... 32 margins. */
+        constexpr int kMendDraws = 24;
     } // namespace
 
     std::size_t MemeticStateToolkit::KeyHash::operator()(const std::vector<double> &k) const
@@ -162,9 +166,14 @@ namespace mhplan
             {
                 interpolate(a, path[i], t, p);
                 bool mended = false;
-                for (int k = 0; k < 16 && !mended; ++k)
+                for (int k = 0; k < kMendDraws && !mended; ++k)
                 {
-                    sampleNear(p, margin_ * double(1 << (k / 4)), q);
+                    // Every other draw keeps the turn small: the metric weighs a heading against positions
+                    // without knowing the robot's reach, and a draw anywhere within d of the heading spins a
+                    // big robot round (OMPL.app's Barriers: a 46-unit robot, margins of 4 units, every
+                    // heading within 4 rad: no route of its dense roadmap could be mended).
+                    const double d = margin_ * double(1 << (k / 4));
+                    sampleAround(p, d, k % 2 == 0 ? mendTurn(d) : d, q);
                     mended = pointValid(q) && motionValid(a, q) && motionValid(q, path[i]) &&
                              strictFailure(a, q) < 0.0 && strictFailure(q, path[i]) < 0.0;
                 }
@@ -241,6 +250,26 @@ namespace mhplan
             v += rng_.uniformReal(-d, d);
         param_.enforce(out.data());
         return true;
+    }
+
+    void MemeticStateToolkit::sampleAround(const StatePoint &near, double d, double turn, StatePoint &out)
+    {
+        out = near;
+        for (unsigned int j = 0; j < out.size(); ++j)
+        {
+            const double r = param_.isRotation(j) ? turn : d;
+            out[j] += rng_.uniformReal(-r, r);
+        }
+        param_.enforce(out.data());
+    }
+
+    double MemeticStateToolkit::mendTurn(double d) const
+    {
+        double span = 0.0;
+        for (unsigned int j = 0; j < param_.dimension(); ++j)
+            if (!param_.isRotation(j))
+                span = std::max(span, param_.upper(j) - param_.lower(j));
+        return span > 0.0 ? std::min(d, boost::math::constants::pi<double>() * d / span) : d;
     }
 
     double MemeticStateToolkit::extent() const

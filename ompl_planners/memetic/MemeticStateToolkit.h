@@ -78,10 +78,11 @@ namespace mhplan
         /** \brief Whether reported paths must pass the fine check (a sampling validator). */
         bool strictNeeded() const { return strictSpacing_ > 0.0; }
         /** \brief Make \e path pass the fine check (docs/spaces.md): each motion is followed at the fine
-            spacing (validator_clearance x the validator's sample spacing) with the
-            validity checker; a motion that fails there gets a valid state drawn near its first failing state
-            (every coordinate within 1, 2, 4, 8 margins), kept when both new motions pass the validator and
-            the fine check. False when a motion could not be mended (or when stopped). Verdicts cached. */
+            spacing (validator_state_step x the validator's sample spacing) with the validity checker; a
+            motion that fails there gets a valid state drawn near its first failing state (positions within
+            1, 2, 4, ... 32 margins; rotations, every other draw, within the same turn as the metric allows,
+            else within the turn mendTurn() gives), kept when both new motions pass the validator and the
+            fine check. False when a motion could not be mended (or when stopped). Verdicts cached. */
         bool makeStrict(StatePath &path, const std::function<bool()> &stop);
         /** \brief The number of leading states of \e path whose motions pass the fine check (all of them
             when none is needed). */
@@ -131,6 +132,12 @@ namespace mhplan
         /** \brief A state whose every coordinate is within \e d of \e near's (then StateParametrisation::
             enforce()). */
         bool sampleNear(const StatePoint &near, double d, StatePoint &out);
+        /** \brief A state whose position coordinates are within \e d of \e near's and whose rotation
+            coordinates are within \e turn (then StateParametrisation::enforce()). */
+        void sampleAround(const StatePoint &near, double d, double turn, StatePoint &out);
+        /** \brief The turn (radians) of a mend's draw whose positions move by up to \e d: pi d / L, L the
+            largest range of the position coordinates (d where there are none). */
+        double mendTurn(double d) const;
         /** \brief The space's maximum extent (si->getMaximumExtent()). */
         double extent() const;
 
