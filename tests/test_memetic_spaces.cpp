@@ -13,6 +13,7 @@
 #include "src/registry/Registry.h"
 
 #include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/goals/GoalState.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SO2StateSpace.h>
@@ -595,6 +596,72 @@ TEST(MemeticStateMode, AUsersClearanceIsNotAskedAndPathsPassTheDenseCheck)
             << name;
         std::cout << "[state mode] " << name << " slot, user's clearance checker: cost "
                   << ss->getSolutionPath().length() << "\n";
+    }
+}
+
+TEST(MemeticStateToolkit, AHollowBoxTheValidatorSeesThroughIsGoneRoundByStrictRoutes)
+{
+    // A checker whose free space holds the obstacle's inside, as a mesh checker's does (a robot inside a
+    // closed mesh touches no triangle: OMPL.app's RandomPolygons): a hollow box of walls 0.02 thick
+    // ([3, 7] x [0.6, 9.4]) between start and goal, gaps of 0.6 above and below it, OMPL's discrete validator
+    // sampling every 0.77 in the SE(2) metric. The lazy roadmap's routes through the box pass the validator
+    // and fail the fine check; with setStrictRoutes (docs/spaces.md) every route passes the fine check, so
+    // it goes round the box.
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+    const auto valid = [](const ob::State *s)
+    {
+        const auto *se2 = s->as<ob::SE2StateSpace::StateType>();
+        const double x = se2->getX(), y = se2->getY();
+        const bool inBand = x >= 2.99 && x <= 7.01 && y >= 0.59 && y <= 9.41;
+        const bool inside = x > 3.01 && x < 6.99 && y > 0.61 && y < 9.39;
+        return !inBand || inside;
+    };
+    og::SimpleSetupPtr ss = test::se2Problem(std::make_shared<ob::SE2StateSpace>(), valid, {1.0, 5.0, 0.0},
+                                             {9.0, 5.0, 0.0}, 0.05);
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    si->setMotionValidator(std::make_shared<ob::DiscreteMotionValidator>(si));
+    ss->setup();
+    std::string why;
+    auto param = StateParametrisation::create(si->getStateSpace(), why);
+    ASSERT_TRUE(param) << why;
+    param->setReference(ss->getProblemDefinition()->getStartState(0));
+    const std::function<bool()> stop = [] { return false; };
+    const auto routeOf = [&](bool strict, std::uint32_t seed, StatePath &route)
+    {
+        ompl::RNG rng(seed);
+        MemeticStateToolkit tk(si, *param, rng);
+        tk.setObjective(ss->getOptimizationObjective());
+        tk.setFineSpacing(0.01 * si->getStateValidityCheckingResolution() * si->getMaximumExtent());
+        tk.setStrictRoutes(strict);
+        StatePoint start, goal;
+        tk.fromState(ss->getProblemDefinition()->getStartState(0), start);
+        tk.fromState(ss->getGoal()->as<ob::GoalState>()->getState(), goal);
+        tk.roadmapGrow(400, start, goal, std::numeric_limits<double>::infinity(), stop);
+        const bool found = tk.roadmapPath(route, 1000, stop);
+        og::PathGeometric out(si);
+        ob::State *st = si->allocState();
+        for (const StatePoint &q : route)
+        {
+            tk.toState(q, st);
+            out.append(st);
+        }
+        si->freeState(st);
+        return found && test::denseValid(out, valid);
+    };
+    // A roadmap of 400 states: each refused route removes only the edges that fail, and a denser roadmap
+    // has more edges into the box than the 1,000 refusals (the planner draws such roadmaps after a
+    // give-up; docs/spaces.md).
+    for (std::uint32_t seed : {1u, 2u, 3u})
+    {
+        StatePath loose, strict;
+        // Without: the cheapest route passes the validator and crosses the walls.
+        EXPECT_FALSE(routeOf(false, seed, loose)) << seed;
+        ASSERT_TRUE(routeOf(true, seed, strict)) << seed;
+        double length = 0.0;
+        for (std::size_t i = 1; i < strict.size(); ++i)
+            length += std::hypot(strict[i][0] - strict[i - 1][0], strict[i][1] - strict[i - 1][1]);
+        // Round the box: the shortest way round is 4 + 2 sqrt(4 + 4.4^2) = 13.7 long (through it 8).
+        EXPECT_GT(length, 13.6) << seed;
     }
 }
 

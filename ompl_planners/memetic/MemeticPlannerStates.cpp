@@ -123,7 +123,17 @@ namespace mhplan
             // does not); one that cannot be mended counts as invalid (docs/spaces.md).
             strict = path;
             if (!stateToolkit_->makeStrict(strict, stop_))
-                return stopRequested() ? c : std::numeric_limits<double>::infinity();
+            {
+                if (stopRequested())
+                    return c;
+                // No path yet and one the fine check refuses: from now on the roadmap's routes pass it too
+                // (docs/spaces.md; OMPL.app's RandomPolygons: a robot inside a polygon touches no triangle,
+                // so the validator's samples pass through the polygons and every route failed the fine
+                // check).
+                if (!haveSolution_)
+                    stateToolkit_->setStrictRoutes(true);
+                return std::numeric_limits<double>::infinity();
+            }
             reported = &strict;
         }
         if (improves(reported == &path ? c : stateToolkit_->cost(*reported)))
@@ -195,12 +205,18 @@ namespace mhplan
         {
             const unsigned int samples =
                 denseRoadmap_ ? kStateRoadmapDense : std::min(roadmapSamples_, kStateRoadmapMax);
+            // Ten times the refused routes while there is no path and routes must pass the fine check
+            // (setStrictRoutes): where the validator sees through the obstacles most routes cross one, and
+            // each refusal removes only the edges that do (OMPL.app's RandomPolygons: 100 were used up before
+            // a route went round them). Not once a path is known: on Barriers, whose checks are dear, the
+            // refusals' fine checks then held back the dense roadmap (seed 1: 712 -> 1,067 at 5 s).
             const RoadmapStep step = nextRoadmapRoute(
                 tk.roadmapSize() == 0, kStateRoadmapFirst, samples,
                 [&](unsigned int n)
                 { return tk.roadmapGrow(n, startState_, goalState_, informedBound(), stop_); },
                 [&](unsigned int maxInvalid) { return tk.roadmapPath(out.states, maxInvalid, stop_); },
-                denseRoadmap_ ? kStateRoadmapRefusals : 100);
+                (denseRoadmap_ ? kStateRoadmapRefusals : 100) *
+                    (tk.strictRoutes() && !haveSolution_ ? 10 : 1));
             // Not on the car spaces: their distance (a Dubins or Reeds-Shepp word per pair) makes a dense
             // roadmap's k-nearest search cost more than its checks save (docs/spaces.md).
             if (step != RoadmapStep::GaveUp || denseRoadmap_ || stopRequested() ||

@@ -318,6 +318,19 @@ namespace mhplan
                     edge.state = motionValid(rmPoints_[edge.from], rmPoints_[edge.to]) ? 1 : 2;
                 valid = valid && edge.state == 1;
             }
+            if (valid && strictRoutes_ && strictNeeded())
+            {
+                for (const std::uint32_t id : edges)
+                {
+                    // Verdicts cached (strictFailure): a later route through the same edge costs nothing.
+                    RoadmapEdge &edge = rmEdges_[id];
+                    if (strictFailure(rmPoints_[edge.from], rmPoints_[edge.to]) >= 0.0)
+                    {
+                        edge.state = 2;
+                        valid = false;
+                    }
+                }
+            }
             if (valid)
                 break;
             if (++refused >= maxInvalid)

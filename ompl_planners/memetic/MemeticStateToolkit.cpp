@@ -62,6 +62,7 @@ namespace mhplan
         motionChecks_ = stateChecks_ = cacheHits_ = roadmapDistances_ = 0;
         cache_.clear();
         strictCache_.clear();
+        strictRoutes_ = false;
         roadmapClear();
     }
 

@@ -77,6 +77,12 @@ namespace mhplan
         void setFineSpacing(double spacing);
         /** \brief Whether reported paths must pass the fine check (a sampling validator). */
         bool strictNeeded() const { return strictSpacing_ > 0.0; }
+        /** \brief With the fine check on: roadmapPath() also follows each edge of a route the validator
+            accepted with the fine check, and refuses the edges that fail it (docs/spaces.md: where the
+            checker's free space holds what the validator's samples cannot see, e.g. a mesh's inside, every
+            route otherwise fails the fine check). Off after resetCounts(). */
+        void setStrictRoutes(bool on) { strictRoutes_ = on; }
+        bool strictRoutes() const { return strictRoutes_; }
         /** \brief Make \e path pass the fine check (docs/spaces.md): each motion is followed at the fine
             spacing (validator_state_step x the validator's sample spacing) with the validity checker; a
             motion that fails there gets a valid state drawn near its first failing state (positions within
@@ -177,7 +183,8 @@ namespace mhplan
                          const std::function<bool()> &stop);
         /** \brief The next route of the roadmap: the cheapest under the penalties (A*, the space's distance
            to the goal as heuristic when the objective is path length), its unknown edges checked by the
-           motion validator in their direction, refused ones removed, repeated; the route's states and their
+           motion validator in their direction (and by the fine check with setStrictRoutes()), refused ones
+           removed, repeated; the route's states and their
             neighbours are penalised (an edge costs c (1 + (p_a + p_b) / 2)) so the next route goes another
             way. False when the goal is cut off, after \e maxInvalid refused routes, or when stopped. */
         bool roadmapPath(StatePath &path, unsigned int maxInvalid, const std::function<bool()> &stop);
@@ -271,6 +278,7 @@ namespace mhplan
         unsigned int bisections_{10};
         double margin_{0.0};
         double strictSpacing_{0.0};
+        bool strictRoutes_{false};
         /** \brief The fine check of a -> b: -1 when every state passes, else the first failing fraction. */
         double strictFailure(const StatePoint &a, const StatePoint &b);
         std::unordered_map<std::vector<double>, double, KeyHash> strictCache_;
