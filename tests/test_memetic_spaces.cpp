@@ -112,6 +112,21 @@ namespace
         return deepest;
     }
 
+    /** \brief The toolkit's path \e path as OMPL's geometric path. */
+    og::PathGeometric geometricOf(const ob::SpaceInformationPtr &si, const MemeticStateToolkit &tk,
+                                  const StatePath &path)
+    {
+        og::PathGeometric out(si);
+        ob::State *s = si->allocState();
+        for (const StatePoint &p : path)
+        {
+            tk.toState(p, s);
+            out.append(s);
+        }
+        si->freeState(s);
+        return out;
+    }
+
     std::vector<std::vector<double>> statesOf(const og::PathGeometric &path,
                                               const StateParametrisation &param)
     {
@@ -168,14 +183,7 @@ TEST(MemeticStateToolkit, ConnectThenTightenStaysValidAndNeverCostlier)
     EXPECT_EQ(path.front(), start);
     EXPECT_EQ(path.back(), goal);
     // Independent check with the exact geometry (the checker's walls are grown by 0.02).
-    og::PathGeometric out(si);
-    ob::State *s = si->allocState();
-    for (const StatePoint &p : path)
-    {
-        tk.toState(p, s);
-        out.append(s);
-    }
-    si->freeState(s);
+    const og::PathGeometric out = geometricOf(si, tk, path);
     EXPECT_TRUE(test::denseValid(out, [](const ob::State *q)
                                  { return test::stickValid(q, test::slotWalls(), test::kStickHalf, 0.0); }));
     std::cout << "[state toolkit] slot: connected " << connected << ", tightened " << tightened << ", "
@@ -638,15 +646,7 @@ TEST(MemeticStateToolkit, AHollowBoxTheValidatorSeesThroughIsGoneRoundByStrictRo
         tk.fromState(ss->getGoal()->as<ob::GoalState>()->getState(), goal);
         tk.roadmapGrow(400, start, goal, std::numeric_limits<double>::infinity(), stop);
         const bool found = tk.roadmapPath(route, 1000, stop);
-        og::PathGeometric out(si);
-        ob::State *st = si->allocState();
-        for (const StatePoint &q : route)
-        {
-            tk.toState(q, st);
-            out.append(st);
-        }
-        si->freeState(st);
-        return found && test::denseValid(out, valid);
+        return found && test::denseValid(geometricOf(si, tk, route), valid);
     };
     // A roadmap of 400 states: each refused route removes only the edges that fail, and a denser roadmap
     // has more edges into the box than the 1,000 refusals (the planner draws such roadmaps after a
