@@ -245,11 +245,7 @@ namespace mhplan
 
     bool MemeticStateToolkit::sampleNear(const StatePoint &near, double d, StatePoint &out)
     {
-        // Every coordinate within d of \e near's (rotations folded, positions clamped into the bounds).
-        out = near;
-        for (double &v : out)
-            v += rng_.uniformReal(-d, d);
-        param_.enforce(out.data());
+        sampleAround(near, d, d, out); // every coordinate within d of near's
         return true;
     }
 
